@@ -1,0 +1,49 @@
+// glTF 2.0 import (.gltf with external or data-URI buffers, .glb): spheres,
+// materials, camera, lights and node animation. Every rule is in docs/gltf.md.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "orb/scene/scene.h"
+
+namespace orb {
+
+enum class NonSpherePolicy {
+    Skip,   // leave meshes that are not spheres out, with one warning naming them
+    Bound,  // replace each by its bounding sphere
+    Error,  // refuse the file
+};
+
+struct GltfImportOptions {
+    bool strict = false;  // warnings that lose information become errors
+
+    std::string scene;   // glTF scene index or name; empty: the default scene (or scene 0)
+    std::string camera;  // glTF camera index, camera name or node name; empty: the first camera found
+
+    // A mesh is a sphere when every vertex lies within this fraction of the
+    // fitted radius from the fitted sphere.
+    double sphere_tolerance = 1e-3;
+    // Radius of POINTS without a _RADIUS attribute, in world units; <= 0:
+    // 1% of the diagonal of the primitive's bounding box in world space.
+    double point_radius = 0.0;
+    NonSpherePolicy non_spheres = NonSpherePolicy::Skip;
+    // Radius of the emissive sphere that stands for a punctual light, in world
+    // units; <= 0: 1% of the diagonal of the scene's bounds.
+    double light_radius = 0.0;
+    // Directional lights become a distant large emitter (else: a warning).
+    bool directional_lights = false;
+};
+
+struct GltfImportResult {
+    Scene scene;
+    std::vector<std::string> warnings;
+};
+
+// `source` names the input in messages; external buffers are read only from
+// inside `base_dir` (empty: they are refused). Throws InputError.
+GltfImportResult import_gltf(std::string_view bytes, const std::string& source, const std::string& base_dir,
+                             const GltfImportOptions& options);
+
+}  // namespace orb

@@ -1,0 +1,33 @@
+// Recognising a scene file by content and importing it into the canonical model.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "orb/scene/gltf.h"
+#include "orb/scene/scene.h"
+
+namespace orb {
+
+enum class SceneFormat { Unknown, OrbJson, Scn, GltfJson, Glb };
+
+SceneFormat detect_scene_format(std::string_view bytes);
+SceneFormat scene_format_from_name(const std::string& name);  // "orb","json","scn","gltf","glb"
+const char* scene_format_name(SceneFormat format);
+
+struct ImportOptions {
+    SceneFormat format = SceneFormat::Unknown;  // Unknown: detect by content
+    GltfImportOptions gltf;
+};
+
+struct ImportResult {
+    Scene scene;
+    std::vector<std::string> warnings;
+};
+
+// `source` names the input in messages; `base_dir` resolves external files (glTF buffers).
+ImportResult import_scene(std::string_view bytes, const std::string& source, const std::string& base_dir,
+                          const ImportOptions& options = {});
+
+}  // namespace orb

@@ -1,0 +1,405 @@
+// The canonical scene's JSON form: a strict reader that names the JSON path of
+// every problem, and a writer whose output is stable and diff-friendly.
+#include "orb/scene/scene_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+
+#include "animation_json.h"
+#include "json_text.h"
+#include "orb/scene/error.h"
+
+namespace orb {
+namespace {
+
+using json = nlohmann::json;
+using ordered_json = nlohmann::ordered_json;
+
+// Collects the source name so every reader below can throw with context.
+class Reader {
+public:
+    explicit Reader(std::string source) : source_(std::move(source)) {}
+
+    [[noreturn]] void fail(const std::string& path, const std::string& message) const {
+        throw InputError(source_ + ": " + path + ": " + message);
+    }
+
+    const json& member(const json& object, const std::string& path, const char* key) const {
+        auto it = object.find(key);
+        if (it == object.end()) fail(path, std::string("missing required key \"") + key + "\"");
+        return *it;
+    }
+
+    void only_keys(const json& object, const std::string& path, std::initializer_list<const char*> allowed) const {
+        for (auto it = object.begin(); it != object.end(); ++it) {
+            bool known = false;
+            for (const char* key : allowed) known = known || it.key() == key;
+            if (!known) {
+                std::string list;
+                for (const char* key : allowed) list += std::string(list.empty() ? "" : ", ") + key;
+                fail(join(path, it.key()), "unknown key (expected one of: " + list + ")");
+            }
+        }
+    }
+
+    const json& object(const json& value, const std::string& path) const {
+        if (!value.is_object()) fail(path, "expected an object, got " + describe(value));
+        return value;
+    }
+
+    const json& array(const json& value, const std::string& path) const {
+        if (!value.is_array()) fail(path, "expected an array, got " + describe(value));
+        return value;
+    }
+
+    double number(const json& value, const std::string& path) const {
+        if (!value.is_number()) fail(path, "expected a number, got " + describe(value));
+        double d = value.get<double>();
+        if (!std::isfinite(d)) fail(path, "expected a finite number");
+        return d;
+    }
+
+    long long integer(const json& value, const std::string& path, long long lo, long long hi) const {
+        if (!value.is_number_integer() && !(value.is_number_float() && is_whole(value.get<double>())))
+            fail(path, "expected an integer, got " + describe(value));
+        double d = value.get<double>();
+        if (d < static_cast<double>(lo) || d > static_cast<double>(hi))
+            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + value.dump());
+        return static_cast<long long>(d);
+    }
+
+    std::string string(const json& value, const std::string& path) const {
+        if (!value.is_string()) fail(path, "expected a string, got " + describe(value));
+        return value.get<std::string>();
+    }
+
+    Vec3 vec3(const json& value, const std::string& path) const {
+        if (!value.is_array() || value.size() != 3) fail(path, "expected an array of 3 numbers, got " + describe(value));
+        Vec3 v;
+        for (std::size_t i = 0; i < 3; ++i) v[i] = number(value[i], path + "[" + std::to_string(i) + "]");
+        return v;
+    }
+
+    static std::string join(const std::string& path, const std::string& key) {
+        return path.empty() ? key : path + "." + key;
+    }
+    static std::string index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+    const std::string& source() const { return source_; }
+
+private:
+    static bool is_whole(double d) { return std::isfinite(d) && std::floor(d) == d; }
+
+    static std::string describe(const json& value) {
+        std::string text = value.dump();
+        if (text.size() > 40) text = text.substr(0, 37) + "...";
+        return std::string(value.type_name()) + " " + text;
+    }
+
+    std::string source_;
+};
+
+Camera read_camera(const Reader& r, const json& value) {
+    const std::string path = "camera";
+    r.object(value, path);
+    r.only_keys(value, path, {"position", "target", "up", "vfov_deg", "aperture", "focus_distance"});
+    Camera camera;
+    camera.position = r.vec3(r.member(value, path, "position"), path + ".position");
+    camera.target = r.vec3(r.member(value, path, "target"), path + ".target");
+    if (value.contains("up")) camera.up = r.vec3(value["up"], path + ".up");
+    if (value.contains("vfov_deg")) camera.vfov_deg = r.number(value["vfov_deg"], path + ".vfov_deg");
+    if (value.contains("aperture")) camera.aperture = r.number(value["aperture"], path + ".aperture");
+    if (value.contains("focus_distance"))
+        camera.focus_distance = r.number(value["focus_distance"], path + ".focus_distance");
+    return camera;
+}
+
+RenderSettings read_render(const Reader& r, const json& value) {
+    const std::string path = "render";
+    r.object(value, path);
+    r.only_keys(value, path, {"width", "height", "spp", "max_depth"});
+    RenderSettings render;
+    if (value.contains("width")) render.width = static_cast<int>(r.integer(value["width"], "render.width", 1, kMaxImageSide));
+    if (value.contains("height"))
+        render.height = static_cast<int>(r.integer(value["height"], "render.height", 1, kMaxImageSide));
+    if (value.contains("spp")) render.spp = static_cast<int>(r.integer(value["spp"], "render.spp", 1, kMaxSpp));
+    if (value.contains("max_depth"))
+        render.max_depth = static_cast<int>(r.integer(value["max_depth"], "render.max_depth", 1, kMaxDepth));
+    return render;
+}
+
+MaterialType read_material_type(const Reader& r, const json& value, const std::string& path) {
+    const std::string name = r.string(value, path);
+    if (name == "diffuse") return MaterialType::Diffuse;
+    if (name == "mirror") return MaterialType::Mirror;
+    if (name == "dielectric") return MaterialType::Dielectric;
+    r.fail(path, "expected \"diffuse\", \"mirror\" or \"dielectric\", got \"" + name + "\"");
+}
+
+std::vector<Material> read_materials(const Reader& r, const json& value) {
+    r.array(value, "materials");
+    std::vector<Material> materials;
+    materials.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string path = Reader::index("materials", i);
+        const json& m = r.object(value[i], path);
+        r.only_keys(m, path, {"name", "type", "color", "emission", "ior"});
+        Material material;
+        if (m.contains("name")) material.name = r.string(m["name"], path + ".name");
+        material.type = read_material_type(r, r.member(m, path, "type"), path + ".type");
+        material.color = m.contains("color") ? r.vec3(m["color"], path + ".color") : Vec3{0.8, 0.8, 0.8};
+        if (m.contains("emission")) material.emission = r.vec3(m["emission"], path + ".emission");
+        if (m.contains("ior")) material.ior = r.number(m["ior"], path + ".ior");
+        materials.push_back(std::move(material));
+    }
+    return materials;
+}
+
+std::uint32_t resolve_material(const Reader& r, const json& value, const std::string& path,
+                               const std::vector<Material>& materials) {
+    if (value.is_string()) {
+        const std::string name = value.get<std::string>();
+        std::optional<std::uint32_t> found;
+        for (std::size_t i = 0; i < materials.size(); ++i) {
+            if (materials[i].name != name) continue;
+            if (found) r.fail(path, "material name \"" + name + "\" is ambiguous (several materials have it)");
+            found = static_cast<std::uint32_t>(i);
+        }
+        if (!found) r.fail(path, "no material is named \"" + name + "\"");
+        return *found;
+    }
+    if (!value.is_number()) r.fail(path, "expected a material index or name");
+    const long long count = static_cast<long long>(materials.size());
+    if (count == 0) r.fail(path, "refers to a material but \"materials\" is empty");
+    return static_cast<std::uint32_t>(r.integer(value, path, 0, count - 1));
+}
+
+std::vector<Sphere> read_spheres(const Reader& r, const json& value, const std::vector<Material>& materials) {
+    r.array(value, "spheres");
+    std::vector<Sphere> spheres;
+    spheres.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string path = Reader::index("spheres", i);
+        const json& s = r.object(value[i], path);
+        r.only_keys(s, path, {"name", "center", "radius", "material"});
+        Sphere sphere;
+        if (s.contains("name")) sphere.name = r.string(s["name"], path + ".name");
+        sphere.center = r.vec3(r.member(s, path, "center"), path + ".center");
+        sphere.radius = r.number(r.member(s, path, "radius"), path + ".radius");
+        sphere.material = resolve_material(r, r.member(s, path, "material"), path + ".material", materials);
+        spheres.push_back(std::move(sphere));
+    }
+    return spheres;
+}
+
+// "line:column" of a byte offset, for JSON syntax errors.
+std::string line_and_column(std::string_view text, std::size_t offset) {
+    int line = 1, column = 1;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// "line:column" of the first number literal that does not fit a double.
+std::string locate_overflowing_number(std::string_view text) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '"') {  // skip strings
+            for (++i; i < text.size() && text[i] != '"'; ++i)
+                if (text[i] == '\\') ++i;
+            continue;
+        }
+        if (c != '-' && (c < '0' || c > '9')) continue;
+        std::size_t end = i;
+        while (end < text.size() && std::string_view("+-0123456789.eE").find(text[end]) != std::string_view::npos) ++end;
+        const std::string literal(text.substr(i, end - i));
+        if (!std::isfinite(std::strtod(literal.c_str(), nullptr))) return line_and_column(text, i);
+        i = end;
+    }
+    return "1:1";
+}
+
+std::string fmt(double d) { return detail::format_number(d); }
+std::string fmt(const Vec3& v) { return "[" + fmt(v[0]) + ", " + fmt(v[1]) + ", " + fmt(v[2]) + "]"; }
+
+void check(bool ok, const std::string& source, const std::string& path, const std::string& message) {
+    if (!ok) throw InputError(source + ": " + path + ": " + message);
+}
+
+bool all_finite(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+
+ordered_json vec3_json(const Vec3& v) { return ordered_json::array({v[0], v[1], v[2]}); }
+
+const char* material_type_name(MaterialType type) {
+    switch (type) {
+        case MaterialType::Diffuse: return "diffuse";
+        case MaterialType::Mirror: return "mirror";
+        case MaterialType::Dielectric: return "dielectric";
+    }
+    return "diffuse";
+}
+
+}  // namespace
+
+void validate_scene(const Scene& scene, const std::string& source) {
+    const Camera& c = scene.camera;
+    check(all_finite(c.position), source, "camera.position", "expected finite numbers");
+    check(all_finite(c.target), source, "camera.target", "expected finite numbers");
+    check(all_finite(c.up), source, "camera.up", "expected finite numbers");
+    const Vec3 forward{c.target[0] - c.position[0], c.target[1] - c.position[1], c.target[2] - c.position[2]};
+    const double forward_length = std::sqrt(forward[0] * forward[0] + forward[1] * forward[1] + forward[2] * forward[2]);
+    check(forward_length > 0, source, "camera.target", "must differ from camera.position, both are " + fmt(c.position));
+    const double up_length = std::sqrt(c.up[0] * c.up[0] + c.up[1] * c.up[1] + c.up[2] * c.up[2]);
+    check(up_length > 0, source, "camera.up", "must not be the zero vector");
+    const Vec3 cross{forward[1] * c.up[2] - forward[2] * c.up[1], forward[2] * c.up[0] - forward[0] * c.up[2],
+                     forward[0] * c.up[1] - forward[1] * c.up[0]};
+    const double sine = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]) /
+                        (forward_length * up_length);
+    check(sine > 1e-9, source, "camera.up",
+          "the view direction (target - position) is parallel to up " + fmt(c.up) + ": the camera's roll is undefined");
+    check(std::isfinite(c.vfov_deg) && c.vfov_deg > 0 && c.vfov_deg < 180, source, "camera.vfov_deg",
+          "must be in (0, 180), got " + fmt(c.vfov_deg));
+    check(std::isfinite(c.aperture) && c.aperture >= 0, source, "camera.aperture", "must be >= 0, got " + fmt(c.aperture));
+    check(std::isfinite(c.focus_distance) && c.focus_distance > 0, source, "camera.focus_distance",
+          "must be > 0, got " + fmt(c.focus_distance));
+
+    const RenderSettings& r = scene.render;
+    check(r.width >= 1 && r.width <= kMaxImageSide, source, "render.width", "must be in [1, " + std::to_string(kMaxImageSide) + "]");
+    check(r.height >= 1 && r.height <= kMaxImageSide, source, "render.height", "must be in [1, " + std::to_string(kMaxImageSide) + "]");
+    check(r.spp >= 1 && r.spp <= kMaxSpp, source, "render.spp", "must be in [1, " + std::to_string(kMaxSpp) + "]");
+    check(r.max_depth >= 1 && r.max_depth <= kMaxDepth, source, "render.max_depth",
+          "must be in [1, " + std::to_string(kMaxDepth) + "]");
+
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        const std::string path = "materials[" + std::to_string(i) + "]";
+        for (int k = 0; k < 3; ++k) {
+            check(std::isfinite(m.color[k]) && m.color[k] >= 0 && m.color[k] <= 1, source, path + ".color",
+                  "each component must be in [0, 1], got " + fmt(m.color));
+            check(std::isfinite(m.emission[k]) && m.emission[k] >= 0, source, path + ".emission",
+                  "each component must be finite and >= 0, got " + fmt(m.emission));
+        }
+        check(std::isfinite(m.ior) && m.ior > 0, source, path + ".ior", "must be > 0, got " + fmt(m.ior));
+    }
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        const std::string path = "spheres[" + std::to_string(i) + "]";
+        check(all_finite(s.center), source, path + ".center", "expected finite numbers");
+        check(std::isfinite(s.radius) && s.radius > 0, source, path + ".radius", "must be > 0, got " + fmt(s.radius));
+        check(s.material < scene.materials.size(), source, path + ".material",
+              "index " + std::to_string(s.material) + " is out of range (there are " +
+                  std::to_string(scene.materials.size()) + " materials)");
+    }
+    detail::validate_animation(scene.animation, scene.spheres.size(), source);
+}
+
+Scene load_scene_json(std::string_view text, const std::string& source) {
+    json document;
+    try {
+        document = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        // nlohmann's message starts with its own prefix; keep the part after the position.
+        std::string what = e.what();
+        const auto colon = what.find(": ", what.find("parse error"));
+        std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+        throw InputError(source + ":" + line_and_column(text, e.byte == 0 ? 0 : e.byte - 1) + ": invalid JSON: " + detail);
+    } catch (const json::out_of_range&) {
+        // A number literal too large for a double; nlohmann names it but not where it is.
+        throw InputError(source + ":" + locate_overflowing_number(text) + ": a number overflows a double (expected a finite number)");
+    }
+    const Reader r(source);
+    if (!document.is_object()) r.fail("(root)", "expected an object with \"format\": \"orb-scene\"");
+    r.only_keys(document, "", {"format", "version", "camera", "render", "materials", "spheres", "animation"});
+    const json& format = r.member(document, "(root)", "format");
+    if (!format.is_string() || format.get<std::string>() != "orb-scene")
+        r.fail("format", "expected \"orb-scene\", got " + format.dump());
+    const long long version = r.integer(r.member(document, "(root)", "version"), "version", 1, 1'000'000);
+    if (version > kSceneFormatVersion)
+        r.fail("version", "this is a version " + std::to_string(version) + " scene; this Orb reads up to version " +
+                              std::to_string(kSceneFormatVersion));
+
+    Scene scene;
+    scene.camera = read_camera(r, r.member(document, "(root)", "camera"));
+    if (document.contains("render")) scene.render = read_render(r, document["render"]);
+    scene.materials = read_materials(r, r.member(document, "(root)", "materials"));
+    scene.spheres = read_spheres(r, r.member(document, "(root)", "spheres"), scene.materials);
+    if (document.contains("animation"))
+        scene.animation = detail::animation_from_json(document["animation"], "animation", source);
+    validate_scene(scene, source);
+    return scene;
+}
+
+std::string write_scene_json(const Scene& scene) {
+    ordered_json document;
+    document["format"] = "orb-scene";
+    document["version"] = kSceneFormatVersion;
+
+    const Camera& c = scene.camera;
+    ordered_json camera;
+    camera["position"] = vec3_json(c.position);
+    camera["target"] = vec3_json(c.target);
+    camera["up"] = vec3_json(c.up);
+    camera["vfov_deg"] = c.vfov_deg;
+    camera["aperture"] = c.aperture;
+    camera["focus_distance"] = c.focus_distance;
+    document["camera"] = std::move(camera);
+
+    ordered_json render;
+    render["width"] = scene.render.width;
+    render["height"] = scene.render.height;
+    render["spp"] = scene.render.spp;
+    render["max_depth"] = scene.render.max_depth;
+    document["render"] = std::move(render);
+
+    ordered_json materials = ordered_json::array();
+    for (const Material& m : scene.materials) {
+        ordered_json material;
+        material["name"] = m.name;
+        material["type"] = material_type_name(m.type);
+        material["color"] = vec3_json(m.color);
+        material["emission"] = vec3_json(m.emission);
+        material["ior"] = m.ior;
+        materials.push_back(std::move(material));
+    }
+    document["materials"] = std::move(materials);
+
+    ordered_json spheres = ordered_json::array();
+    for (const Sphere& s : scene.spheres) {
+        ordered_json sphere;
+        sphere["name"] = s.name;
+        sphere["center"] = vec3_json(s.center);
+        sphere["radius"] = s.radius;
+        sphere["material"] = s.material;
+        spheres.push_back(std::move(sphere));
+    }
+    document["spheres"] = std::move(spheres);
+
+    ordered_json animation = detail::animation_to_json(scene.animation);
+    if (!animation.is_null()) document["animation"] = std::move(animation);
+
+    return detail::format_json(document) + "\n";
+}
+
+std::string scene_content_hash(const Scene& scene) {
+    const std::string text = write_scene_json(scene);
+    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a 64-bit offset basis
+    for (unsigned char byte : text) {
+        hash ^= byte;
+        hash *= 1099511628211ull;  // FNV-1a 64-bit prime
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
+}
+
+}  // namespace orb

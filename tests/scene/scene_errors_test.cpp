@@ -1,0 +1,90 @@
+// Every problem the loader finds is reported with the source name and the
+// JSON path of the offending value.
+#include <gtest/gtest.h>
+
+#include "orb/scene/error.h"
+#include "orb/scene/scene_json.h"
+
+namespace {
+
+std::string load_error(const std::string& text) {
+    try {
+        orb::load_scene_json(text, "s.json");
+    } catch (const orb::InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+const std::string kHead = R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,5], "target": [0,0,0] }, )";
+
+std::string with_bodies(const std::string& materials, const std::string& spheres) {
+    return kHead + "\"materials\": [" + materials + "], \"spheres\": [" + spheres + "] }";
+}
+
+struct Case {
+    const char* name;
+    std::string text;
+    std::string expected;  // substring of the message
+};
+
+class LoaderErrors : public ::testing::TestWithParam<Case> {};
+
+TEST_P(LoaderErrors, NamesPathAndProblem) {
+    const std::string message = load_error(GetParam().text);
+    EXPECT_NE(message.find(GetParam().expected), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("s.json:", 0), 0u) << message;
+}
+
+const std::string kDiffuse = R"({ "type": "diffuse" })";
+
+INSTANTIATE_TEST_SUITE_P(
+    Scene, LoaderErrors,
+    ::testing::Values(
+        Case{"syntax", "{ \"format\": \"orb-scene\",\n  \"version\": 1,, }", "s.json:2:16: invalid JSON"},
+        Case{"empty", "", "s.json:1:1: invalid JSON"},
+        Case{"not_object", "[1]", "(root): expected an object"},
+        Case{"wrong_format", R"({ "format": "x", "version": 1 })", "format: expected \"orb-scene\""},
+        Case{"missing_version", R"({ "format": "orb-scene" })", "missing required key \"version\""},
+        Case{"newer_version", R"({ "format": "orb-scene", "version": 7 })", "version: this is a version 7 scene"},
+        Case{"unknown_top_key", kHead + R"("materials": [], "spheres": [], "extra": 1 })", "extra: unknown key"},
+        Case{"missing_camera", R"({ "format": "orb-scene", "version": 1, "materials": [], "spheres": [] })",
+             "missing required key \"camera\""},
+        Case{"camera_not_vec3", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0], "target": [0,0,0] }, "materials": [], "spheres": [] })",
+             "camera.position: expected an array of 3 numbers"},
+        Case{"camera_degenerate", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [1,1,1], "target": [1,1,1] }, "materials": [], "spheres": [] })",
+             "camera.target: must differ from camera.position"},
+        Case{"camera_parallel_up", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,9,0], "target": [0,1,0] }, "materials": [], "spheres": [] })",
+             "camera.up: the view direction"},
+        Case{"fov", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,1], "target": [0,0,0], "vfov_deg": 0 }, "materials": [], "spheres": [] })",
+             "camera.vfov_deg: must be in (0, 180)"},
+        Case{"render_width", kHead + R"("render": { "width": 0 }, "materials": [], "spheres": [] })",
+             "render.width: must be in [1, 65536], got 0"},
+        Case{"render_spp_fraction", kHead + R"("render": { "spp": 2.5 }, "materials": [], "spheres": [] })",
+             "render.spp: expected an integer"},
+        Case{"material_type", with_bodies(R"({ "type": "plastic" })", ""),
+             "materials[0].type: expected \"diffuse\", \"mirror\" or \"dielectric\", got \"plastic\""},
+        Case{"material_color_range", with_bodies(kDiffuse + R"(, { "type": "diffuse", "color": [0.5, 1.5, 0] })", ""),
+             "materials[1].color: each component must be in [0, 1]"},
+        Case{"material_emission_negative", with_bodies(R"({ "type": "diffuse", "emission": [0, 0, -1] })", ""),
+             "materials[0].emission: each component must be finite and >= 0"},
+        Case{"material_ior", with_bodies(R"({ "type": "dielectric", "ior": -1 })", ""), "materials[0].ior: must be > 0, got -1"},
+        Case{"radius_negative", with_bodies(kDiffuse, R"({ "center": [0,0,0], "radius": 1, "material": 0 }, { "center": [0,0,0], "radius": 1, "material": 0 }, { "center": [0,0,0], "radius": 1, "material": 0 }, { "center": [0,0,0], "radius": -2, "material": 0 })"),
+             "spheres[3].radius: must be > 0, got -2"},
+        Case{"radius_missing", with_bodies(kDiffuse, R"({ "center": [0,0,0], "material": 0 })"),
+             "spheres[0]: missing required key \"radius\""},
+        Case{"material_out_of_range", with_bodies(kDiffuse, R"({ "center": [0,0,0], "radius": 1, "material": 4 })"),
+             "spheres[0].material: must be in [0, 0], got 4"},
+        Case{"material_unknown_name", with_bodies(kDiffuse, R"({ "center": [0,0,0], "radius": 1, "material": "gold" })"),
+             "spheres[0].material: no material is named \"gold\""},
+        Case{"no_materials", with_bodies("", R"({ "center": [0,0,0], "radius": 1, "material": 0 })"),
+             "spheres[0].material: refers to a material but \"materials\" is empty"},
+        Case{"infinite_number", with_bodies(kDiffuse, R"({ "center": [1e999,0,0], "radius": 1, "material": 0 })"),
+             "s.json:1:157: a number overflows a double"},
+        Case{"string_number", with_bodies(kDiffuse, R"({ "center": [0,"1",0], "radius": 1, "material": 0 })"),
+             "spheres[0].center[1]: expected a number, got string \"1\""},
+        Case{"sphere_unknown_key", with_bodies(kDiffuse, R"({ "center": [0,0,0], "radius": 1, "material": 0, "colour": 1 })"),
+             "spheres[0].colour: unknown key"}),
+    [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
+}  // namespace
