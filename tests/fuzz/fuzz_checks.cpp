@@ -1,0 +1,39 @@
+#include "fuzz_checks.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "orb/scene/error.h"
+#include "orb/scene/scene_json.h"
+#include "orb/scene/scn.h"
+
+namespace orb::fuzz {
+
+void check_scn_input(std::string_view bytes) {
+    Scene scene;
+    try {
+        scene = parse_scn(bytes, "fuzz.scn");
+    } catch (const InputError&) {
+        return;  // a clean rejection
+    }
+    const ScnWriteResult written = write_scn(scene);
+    if (!written.lossy.empty()) throw std::logic_error("a scene read from .scn is lossy in .scn: " + written.lossy.front());
+    if (parse_scn(written.text, "rewritten.scn") != scene)
+        throw std::logic_error("parse_scn(write_scn(scene)) != scene for:\n" + written.text);
+    if (load_scene_json(write_scene_json(scene), "rewritten.json") != scene)
+        throw std::logic_error("a scene read from .scn does not survive Orb JSON");
+}
+
+void check_scene_json_input(std::string_view bytes) {
+    Scene scene;
+    try {
+        scene = load_scene_json(bytes, "fuzz.json");
+    } catch (const InputError&) {
+        return;
+    }
+    const std::string text = write_scene_json(scene);
+    if (load_scene_json(text, "rewritten.json") != scene)
+        throw std::logic_error("load_scene_json(write_scene_json(scene)) != scene for:\n" + text);
+}
+
+}  // namespace orb::fuzz

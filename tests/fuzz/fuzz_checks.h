@@ -1,0 +1,22 @@
+// What every fuzz input must satisfy, shared by the libFuzzer targets and by
+// the unit test that replays tests/fuzz/corpus/ in ordinary builds (so a crash
+// once found stays fixed without needing clang or libFuzzer).
+//
+// Each check returns normally when the input is accepted or cleanly rejected
+// (orb::InputError); it throws std::logic_error when a property is broken,
+// and anything else (a crash, another exception type) is a bug by itself.
+#pragma once
+
+#include <string_view>
+
+namespace orb::fuzz {
+
+// parse_scn either rejects the text or returns a scene that writes back to
+// .scn and re-reads to the very same scene.
+void check_scn_input(std::string_view bytes);
+
+// load_scene_json either rejects the text or returns a scene with
+// load(write(scene)) == scene.
+void check_scene_json_input(std::string_view bytes);
+
+}  // namespace orb::fuzz

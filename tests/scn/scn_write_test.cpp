@@ -1,0 +1,91 @@
+// Writing .scn: the text, and the list of what .scn cannot express.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "orb/scene/scn.h"
+
+namespace orb {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+Scene simple_scene() {
+    Scene scene;
+    scene.camera.position = {0, 1, 10};
+    scene.camera.target = {0, 1, 0};
+    scene.camera.vfov_deg = smallptgpu_vfov_deg();
+    scene.materials.push_back({"white", MaterialType::Diffuse, {0.75, 0.75, 0.75}, {0, 0, 0}, 1.5});
+    scene.materials.push_back({"lamp", MaterialType::Diffuse, {0, 0, 0}, {12, 12, 12}, 1.5});
+    scene.materials.push_back({"glass", MaterialType::Dielectric, {1, 1, 1}, {0, 0, 0}, 1.5});
+    scene.spheres.push_back({"floor", {0, -1000, 0}, 1000, 0});
+    scene.spheres.push_back({"lamp", {0, 5, 0}, 0.5, 1});
+    scene.spheres.push_back({"ball", {1, 1, 1}, 1, 2});
+    return scene;
+}
+
+TEST(ScnWrite, WritesTheBucciarelliLayout) {
+    const ScnWriteResult result = write_scn(simple_scene());
+    EXPECT_EQ(result.text,
+              "camera 0 1 10  0 1 0\n"
+              "size 3\n"
+              "sphere 1000  0 -1000 0  0 0 0  0.75 0.75 0.75  0\n"
+              "sphere 0.5  0 5 0  12 12 12  0 0 0  0\n"
+              "sphere 1  1 1 1  0 0 0  1 1 1  2\n");
+    EXPECT_TRUE(result.lossy.empty());
+}
+
+TEST(ScnWrite, FovWithinAHundredthOfADegreeIsSmallptGpus) {
+    Scene scene = simple_scene();
+    scene.camera.vfov_deg = 42.8711;  // Camera's default, within 0.01 degrees
+    EXPECT_TRUE(write_scn(scene).lossy.empty());
+    scene.camera.vfov_deg = 40;
+    EXPECT_THAT(write_scn(scene).lossy, ElementsAre(HasSubstr("camera vfov_deg 40 is not SmallptGPU's fixed 42.879")));
+}
+
+TEST(ScnWrite, ListsEverythingScnCannotExpress) {
+    Scene scene = simple_scene();
+    scene.camera.up = {0, 0, 1};
+    scene.camera.aperture = 0.25;
+    scene.render.width = 1920;
+    scene.render.spp = 256;
+    scene.materials[2].ior = 1.33;
+    const ScnWriteResult result = write_scn(scene);
+    EXPECT_THAT(result.lossy,
+                ElementsAre(HasSubstr("camera up vector [0, 0, 1] is not +y"),
+                            HasSubstr("camera aperture 0.25 (depth of field) is dropped"),
+                            HasSubstr("render settings (width 1920, spp 256) are not stored in .scn"),
+                            HasSubstr("material 2 ('glass') is a dielectric with ior 1.33; .scn glass always has ior 1.5")));
+    // The text is still written: the caller decides whether losses are fatal.
+    EXPECT_THAT(result.text, HasSubstr("size 3\n"));
+}
+
+TEST(ScnWrite, AnUpVectorAlongPlusYOfAnyLengthIsFine) {
+    Scene scene = simple_scene();
+    scene.camera.up = {0, 2.5, 0};
+    EXPECT_TRUE(write_scn(scene).lossy.empty());
+    scene.camera.up = {0, -1, 0};
+    EXPECT_EQ(write_scn(scene).lossy.size(), 1u);
+}
+
+TEST(ScnWrite, IorOnlyMattersForDielectrics) {
+    Scene scene = simple_scene();
+    scene.materials[0].ior = 2.0;  // diffuse: ior unused
+    EXPECT_TRUE(write_scn(scene).lossy.empty());
+}
+
+TEST(ScnWrite, RefusesDanglingMaterialReferences) {
+    Scene scene = simple_scene();
+    scene.spheres[1].material = 7;
+    EXPECT_THROW(write_scn(scene), std::invalid_argument);
+}
+
+TEST(ScnWrite, EmptySceneIsSizeZero) {
+    Scene scene = simple_scene();
+    scene.spheres.clear();
+    scene.materials.clear();
+    EXPECT_EQ(write_scn(scene).text, "camera 0 1 10  0 1 0\nsize 0\n");
+}
+
+}  // namespace
+}  // namespace orb

@@ -1,0 +1,108 @@
+// orb-import: any scene Orb can read (Orb JSON, SmallptGPU .scn, glTF, GLB)
+// -> the canonical Orb JSON scene, or back to .scn (docs/orb-import.md).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "gltf_options.h"
+#include "orb/cli/io.h"
+#include "orb/cli/messages.h"
+#include "orb/cli/tool_main.h"
+#include "orb/scene/error.h"
+#include "orb/scene/import.h"
+#include "orb/scene/scene_json.h"
+#include "orb/scene/scn.h"
+#include "output_format.h"
+
+namespace {
+
+constexpr const char* kDescription =
+    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb) to the canonical Orb JSON scene,\n"
+    "or write it back as SmallptGPU .scn. The input format is recognised by content.";
+
+constexpr const char* kExamples = R"(Examples:
+  orb-import scenes/cornell.scn -o cornell.json      .scn -> Orb JSON
+  orb-import model.glb > model.json                  glTF binary -> Orb JSON on stdout
+  orb-import cornell.json --to scn -o cornell.scn    Orb JSON -> .scn (warns about losses)
+  orb-import model.gltf --to scn --strict -o m.scn   fail instead of losing anything
+  cat scene.txt | orb-import - --from scn            read stdin, say what it is
+  orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
+
+Exit status: 0 success, 1 bad input or failed job (no output file is left behind),
+2 usage error. Details: docs/orb-import.md)";
+
+struct Arguments {
+    std::string input;
+    std::string output = "-";
+    std::string from;
+    std::string to;
+    bool strict = false;
+    orb::ImportOptions import_options;
+};
+
+// Where relative references (glTF buffers and images) are resolved from.
+std::string base_directory(const std::string& input) {
+    if (orb::cli::is_stdio(input)) return std::filesystem::current_path().string();
+    const std::filesystem::path parent = std::filesystem::path(input).parent_path();
+    return parent.empty() ? std::string(".") : parent.string();
+}
+
+// Warnings, or with --strict one error naming them all (and no output).
+void report_losses(const std::vector<std::string>& losses, bool strict, const std::string& what) {
+    if (losses.empty()) return;
+    if (strict) {
+        std::string message = what + " would lose information (--strict):";
+        for (const auto& loss : losses) message += "\n  " + loss;
+        throw orb::InputError(message);
+    }
+    for (const auto& loss : losses) orb::cli::warning(loss);
+}
+
+int run(Arguments& args) {
+    using orb::import_tool::OutputFormat;
+    const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
+    if (!args.from.empty()) args.import_options.format = orb::scene_format_from_name(args.from);
+    args.import_options.gltf.strict = args.strict;
+
+    const std::string source = orb::cli::is_stdio(args.input) ? "<stdin>" : args.input;
+    const std::string bytes = orb::cli::read_input(args.input);
+    orb::ImportResult imported =
+        orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
+    report_losses(imported.warnings, args.strict, source);
+
+    std::string text;
+    if (to == OutputFormat::Scn) {
+        orb::ScnWriteResult written = orb::write_scn(imported.scene);
+        report_losses(written.lossy, args.strict, "writing .scn");
+        text = std::move(written.text);
+    } else {
+        text = orb::write_scene_json(imported.scene);
+    }
+    orb::cli::write_output(args.output, text);
+    return orb::cli::kSuccess;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Arguments args;
+    return orb::cli::run_tool(
+        argc, argv, "orb-import", kDescription,
+        [&](CLI::App& app) {
+            app.add_option("INPUT", args.input, "Scene to read; - reads stdin")->required();
+            app.add_option("-o,--output", args.output, "Where to write; - (the default) writes stdout")
+                ->option_text("FILE");
+            app.add_option("--from", args.from, "Input format, instead of recognising it by content")
+                ->check(CLI::IsMember({"orb", "json", "scn", "gltf", "glb"}))
+                ->option_text("orb|scn|gltf|glb");
+            app.add_option("--to", args.to,
+                           "Output format: orb (Orb JSON) or scn; default from the -o extension (.scn), else orb")
+                ->check(CLI::IsMember({"orb", "json", "scn"}))
+                ->option_text("orb|scn");
+            app.add_flag("--strict", args.strict,
+                         "Fail (exit 1, no output) instead of warning when information would be lost");
+            orb::import_tool::add_gltf_options(app, args.import_options.gltf);
+            app.footer(kExamples);
+        },
+        [&] { return run(args); });
+}

@@ -1,0 +1,14 @@
+// Which format orb-import writes: --to, else the output file's extension.
+#pragma once
+
+#include <string>
+
+namespace orb::import_tool {
+
+enum class OutputFormat { OrbJson, Scn };
+
+// `to` is the --to value ("" when not given), `output` the -o path.
+// Throws orb::cli::UsageError for an output named like a format Orb cannot write.
+OutputFormat choose_output_format(const std::string& to, const std::string& output);
+
+}  // namespace orb::import_tool
