@@ -1,0 +1,209 @@
+// The path tracer: one work-item per pixel, looping over this pass's samples
+// (docs/rendering.md gives the estimators and the exact meaning of depth).
+//
+// Depth counts scattering events (diffuse, mirror or dielectric) along a path
+// from the camera: max_depth d admits paths whose light scattered at most d
+// times before reaching the camera. The ray leaving scattering event d is
+// still traced, for the emission it may hit (the BSDF half of the MIS pair at
+// that vertex), but it scatters no further.
+
+#define MODE_GLOBAL 0
+#define MODE_DIRECT 1
+
+// Russian roulette applies from this scattering event on.
+#define RR_START_EVENT 3
+
+typedef struct {
+    float3 emission;  // paths with no diffuse vertex (emitters seen directly or through specular chains)
+    float3 direct;    // paths with exactly one diffuse vertex
+    float3 indirect;  // paths with two or more diffuse vertices
+    float3 albedo;    // specular tints times the reflectance of the first diffuse vertex
+    float3 normal;    // normal at the first hit, facing the camera ray
+    float alpha;      // 1 when the camera ray hit something
+} PathSample;
+
+inline void add_by_diffuse_count(PathSample* s, int diffuse_vertices, float3 contribution)
+{
+    if (diffuse_vertices == 0)
+        s->emission += contribution;
+    else if (diffuse_vertices == 1)
+        s->direct += contribution;
+    else
+        s->indirect += contribution;
+}
+
+inline PathSample trace_path(const SceneView* scene, float3 o, float3 d, uint pixel, ulong sample, uint2 seed,
+                             int max_depth, int mode)
+{
+    PathSample out;
+    out.emission = out.direct = out.indirect = out.albedo = out.normal = (float3)(0.0f);
+    out.alpha = 0.0f;
+
+    const int light_count = scene->light_count;
+    // Global mode picks one light uniformly per vertex; direct mode samples every light.
+    const float pick_pdf = mode == MODE_DIRECT ? 1.0f : 1.0f / (float)max(light_count, 1);
+
+    float3 beta = (float3)(1.0f);  // path throughput
+    int self = -1;                 // sphere the current ray leaves, -1 for the camera
+    int diffuse_vertices = 0;
+    bool albedo_set = false;
+    // Where the current ray was BSDF-sampled from, for MIS at an emitter it hits.
+    bool from_diffuse = false;
+    float from_pdf = 0.0f;
+    float3 from_point = o;
+    int from_self = -1;
+
+    for (int depth = 0;; ++depth) {
+        const Hit hit = intersect_scene(scene, o, d, self);
+        if (hit.id < 0) break;
+        const SphereRecord m = load_sphere(scene, hit.id);
+        const float3 p = o + hit.t * d;
+        const float3 outward = (p - m.centre) * (1.0f / m.radius);
+        const bool entering = dot(d, outward) < 0.0f;
+        const float3 n = entering ? outward : -outward;
+        if (depth == 0) {
+            out.alpha = 1.0f;
+            out.normal = n;
+        }
+
+        if (m.emission.x + m.emission.y + m.emission.z > 0.0f) {
+            float weight = 1.0f;  // after the camera or a specular event only this strategy exists
+            if (from_diffuse) {
+                const float light_pdf =
+                    pick_pdf * light_direction_pdf(from_point, from_self, hit.id, m.centre, m.radius);
+                weight = power_heuristic(from_pdf, light_pdf);
+            }
+            add_by_diffuse_count(&out, diffuse_vertices, beta * m.emission * weight);
+        }
+
+        if (depth == max_depth) break;
+        // Direct mode: the ray after the first diffuse vertex was traced only for its emission.
+        if (mode == MODE_DIRECT && diffuse_vertices == 1) break;
+
+        const Rand5 r = rng_block(pixel, sample, (uint)(depth + 1), seed);
+        if (m.type == MATERIAL_DIFFUSE) {
+            ++diffuse_vertices;
+            if (!albedo_set) {
+                out.albedo = beta * m.color;
+                albedo_set = true;
+            }
+            if (mode == MODE_DIRECT) {
+                for (int i = 0; i < light_count; ++i)
+                    add_by_diffuse_count(&out, diffuse_vertices,
+                                         beta * estimate_direct_light(scene, scene->lights[i], 1.0f, p, n, hit.id,
+                                                                      m.color, r.u0, r.u1));
+            } else if (light_count > 0) {
+                // One uniform number picks the light and, rescaled, samples it.
+                const float scaled = r.u0 * (float)light_count;
+                const int pick = min((int)scaled, light_count - 1);
+                const float u = fmin(scaled - (float)pick, 0x1.fffffep-1f);
+                add_by_diffuse_count(&out, diffuse_vertices,
+                                     beta * estimate_direct_light(scene, scene->lights[pick], pick_pdf, p, n, hit.id,
+                                                                  m.color, u, r.u1));
+            }
+        }
+
+        const BsdfSample bs = sample_bsdf(&m, d, n, entering, r.u2, r.u3, r.u0);
+        beta *= bs.weight;
+        from_diffuse = bs.pdf > 0.0f;
+        from_pdf = bs.pdf;
+        from_point = p;
+        from_self = hit.id;
+
+        const float beta_max = fmax(beta.x, fmax(beta.y, beta.z));
+        if (beta_max <= 0.0f) break;
+        if (depth + 1 >= RR_START_EVENT) {
+            // Survive with probability q and divide by q: unbiased.
+            const float q = fmin(1.0f, beta_max);
+            if (r.u4 >= q) break;
+            beta *= 1.0f / q;
+        }
+        o = p;
+        d = bs.dir;
+        self = hit.id;
+    }
+    return out;
+}
+
+__kernel void render_pass(__global float* film_radiance, __global float* film_radiance_sq,
+                          __global float* film_direct, __global float* film_indirect, __global float* film_emission,
+                          __global float* film_albedo, __global float* film_normal, __global float* film_alpha,
+                          __global float* film_depth, __global float* film_object_id,
+                          SCENE_MEM const float4* packets, int packet_count, SCENE_MEM const float4* records,
+                          SCENE_MEM const int* lights, int light_count,
+                          float4 cam_origin, float4 cam_right, float4 cam_up, float4 cam_forward,
+                          float4 cam_lens,  // half_width, half_height, lens_radius, focus_distance
+                          int width, int height, uint sample_start_lo, uint sample_start_hi, int sample_count,
+                          uint seed_lo, uint seed_hi, int max_depth, int mode, int write_centre_ray)
+{
+    const int x = get_global_id(0);
+    const int y = get_global_id(1);
+    if (x >= width || y >= height) return;
+    const uint pixel = (uint)y * (uint)width + (uint)x;
+
+    SceneView scene;
+    scene.packets = packets;
+    scene.packet_count = packet_count;
+    scene.records = records;
+    scene.lights = lights;
+    scene.light_count = light_count;
+
+    CameraView cam;
+    cam.origin = cam_origin.xyz;
+    cam.right = cam_right.xyz;
+    cam.up = cam_up.xyz;
+    cam.forward = cam_forward.xyz;
+    cam.half_width = cam_lens.x;
+    cam.half_height = cam_lens.y;
+    cam.lens_radius = cam_lens.z;
+    cam.focus_distance = cam_lens.w;
+
+    const uint2 seed = (uint2)(seed_lo, seed_hi);
+    const ulong first_sample = ((ulong)sample_start_hi << 32) | (ulong)sample_start_lo;
+
+    float3 sum_radiance = (float3)(0.0f), sum_radiance_sq = (float3)(0.0f);
+    float3 sum_direct = (float3)(0.0f), sum_indirect = (float3)(0.0f), sum_emission = (float3)(0.0f);
+    float3 sum_albedo = (float3)(0.0f), sum_normal = (float3)(0.0f);
+    float sum_alpha = 0.0f;
+
+    for (int i = 0; i < sample_count; ++i) {
+        const ulong sample = first_sample + (ulong)i;
+        const Rand5 c = rng_block(pixel, sample, 0u, seed);
+        float3 o, d;
+        camera_ray(&cam, (float)x + c.u0, (float)y + c.u1, width, height, c.u2, c.u3, &o, &d);
+        PathSample s = trace_path(&scene, o, d, pixel, sample, seed, max_depth, mode);
+        float3 radiance = (s.emission + s.direct) + s.indirect;
+        if (!all(isfinite(radiance))) {
+            // Never expected; a non-finite sample would poison the pixel's sum forever.
+            s.emission = s.direct = s.indirect = radiance = (float3)(0.0f);
+        }
+        sum_radiance += radiance;
+        sum_radiance_sq += radiance * radiance;
+        sum_direct += s.direct;
+        sum_indirect += s.indirect;
+        sum_emission += s.emission;
+        sum_albedo += s.albedo;
+        sum_normal += s.normal;
+        sum_alpha += s.alpha;
+    }
+
+    film_add3(film_radiance, pixel, sum_radiance);
+    film_add3(film_radiance_sq, pixel, sum_radiance_sq);
+    film_add3(film_direct, pixel, sum_direct);
+    film_add3(film_indirect, pixel, sum_indirect);
+    film_add3(film_emission, pixel, sum_emission);
+    film_add3(film_albedo, pixel, sum_albedo);
+    film_add3(film_normal, pixel, sum_normal);
+    film_add1(film_alpha, pixel, sum_alpha);
+
+    if (write_centre_ray) {
+        // Depth and object id are not averages: they come from the pixel-centre ray.
+        CameraView pinhole = cam;  // through the lens centre
+        pinhole.lens_radius = 0.0f;
+        float3 o, d;
+        camera_ray(&pinhole, (float)x + 0.5f, (float)y + 0.5f, width, height, 0.0f, 0.0f, &o, &d);
+        const Hit hit = intersect_scene(&scene, o, d, -1);
+        film_depth[pixel] = hit.id < 0 ? INFINITY : hit.t;
+        film_object_id[pixel] = (float)hit.id;
+    }
+}

@@ -1,0 +1,66 @@
+// Sphere lights: every sphere with non-zero emission. Emission is radiance,
+// emitted from both sides of the surface.
+//
+// A light is sampled by direction from the shading point p:
+//  * p outside the sphere: uniformly inside the cone the sphere subtends,
+//    pdf = 1 / (2 pi (1 - cos theta_max)), sin theta_max = r / |c - p|;
+//  * p inside the sphere or on its surface (self == light), e.g. under a sky
+//    dome or inside an emitting enclosure: uniformly over all directions,
+//    pdf = 1 / (4 pi).
+// light_direction_pdf() gives the same density for a direction reached by BSDF
+// sampling, for multiple importance sampling; both use the same test.
+
+inline bool light_surrounds(float3 p, int self, int light_id, float3 centre, float radius)
+{
+    const float3 pc = centre - p;
+    return self == light_id || dot(pc, pc) <= radius * radius;
+}
+
+// 1 - cos(theta_max) of the cone subtended by a sphere seen from outside,
+// computed as sin^2 / (1 + cos) to keep precision for distant lights.
+inline float cone_one_minus_cos(float distance2, float radius)
+{
+    const float sin2 = fmin(1.0f, radius * radius / distance2);
+    return sin2 / (1.0f + sqrt(1.0f - sin2));
+}
+
+inline float light_direction_pdf(float3 p, int self, int light_id, float3 centre, float radius)
+{
+    if (light_surrounds(p, self, light_id, centre, radius)) return ORB_INV_4PI;
+    const float3 pc = centre - p;
+    return 1.0f / (2.0f * ORB_PI * cone_one_minus_cos(dot(pc, pc), radius));
+}
+
+inline float3 sample_light_direction(float3 p, int self, int light_id, float3 centre, float radius, float u,
+                                     float v, float* pdf)
+{
+    if (light_surrounds(p, self, light_id, centre, radius)) {
+        *pdf = ORB_INV_4PI;
+        return sample_uniform_sphere(u, v);
+    }
+    const float3 pc = centre - p;
+    const float distance2 = dot(pc, pc);
+    const float one_minus_cos_max = cone_one_minus_cos(distance2, radius);
+    *pdf = 1.0f / (2.0f * ORB_PI * one_minus_cos_max);
+    return sample_uniform_cone(pc * rsqrt(distance2), one_minus_cos_max, u, v);
+}
+
+// Next-event estimate at a diffuse point p (normal n facing the viewer) from
+// one light chosen with probability `pick_pdf`, weighted against BSDF sampling
+// by the power heuristic. Visibility: the first thing the shadow ray hits
+// must be the light itself, so no distance epsilon is needed.
+inline float3 estimate_direct_light(const SceneView* scene, int light_id, float pick_pdf, float3 p, float3 n,
+                                    int self, float3 albedo, float u, float v)
+{
+    const SphereRecord light = load_sphere(scene, light_id);
+    float direction_pdf;
+    const float3 wi = sample_light_direction(p, self, light_id, light.centre, light.radius, u, v, &direction_pdf);
+    const float cos_theta = dot(n, wi);
+    if (cos_theta <= 0.0f) return (float3)(0.0f);
+    const Hit hit = intersect_scene(scene, p, wi, self);
+    if (hit.id != light_id) return (float3)(0.0f);
+    const float light_pdf = pick_pdf * direction_pdf;
+    const float bsdf_pdf = cos_theta * ORB_INV_PI;
+    const float weight = power_heuristic(light_pdf, bsdf_pdf);
+    return light.emission * albedo * (ORB_INV_PI * cos_theta * weight / light_pdf);
+}

@@ -1,0 +1,27 @@
+// Building the OpenCL program, through a per-device binary cache.
+#pragma once
+
+#include <string>
+
+#include "opencl.h"
+
+namespace orb::render {
+
+// Directory of the binary cache: $XDG_CACHE_HOME/orb, else $HOME/.cache/orb;
+// empty if neither variable is set.
+std::string binary_cache_dir();
+
+struct ProgramBuild {
+    cl::Program program;
+    bool loaded_from_cache = false;
+};
+
+// Builds `source` for `device`. With `use_cache`, first tries a cached binary
+// keyed by a hash of source, options, device and driver; a missing, corrupt or
+// rejected binary falls back to a build from source, and the cache is
+// refreshed (atomically, failures ignored). A failed source build throws
+// std::runtime_error carrying the compiler's build log.
+ProgramBuild build_program(const cl::Context& context, const cl::Device& device, const std::string& source,
+                           const std::string& options, bool use_cache);
+
+}  // namespace orb::render

@@ -1,0 +1,41 @@
+#include "program_source.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "orb/kernels/embedded.h"
+
+namespace orb::render {
+namespace {
+
+std::string read_text_file(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read kernel file " + path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+std::string program_source(const std::string& kernel_dir)
+{
+    std::string dir = kernel_dir;
+    if (dir.empty())
+        if (const char* env = std::getenv("ORB_KERNEL_DIR")) dir = env;
+
+    std::string source;
+    for (const kernels::EmbeddedKernel& kernel : kernels::embedded_kernels()) {
+        const std::string name(kernel.file_name);
+        // #line keeps build-log positions pointing into the right file.
+        source += "#line 1 \"" + name + "\"\n";
+        source += dir.empty() ? std::string(kernel.source) : read_text_file(dir + "/" + name);
+        source += "\n";
+    }
+    return source;
+}
+
+}  // namespace orb::render
