@@ -1,0 +1,107 @@
+#include "render_test_support.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "orb/scene/scn.h"
+
+namespace orb::render::test {
+
+std::uint32_t add_material(Scene& scene, MaterialType type, Vec3 color, Vec3 emission, double ior)
+{
+    Material m;
+    m.name = "m" + std::to_string(scene.materials.size());
+    m.type = type;
+    m.color = color;
+    m.emission = emission;
+    m.ior = ior;
+    scene.materials.push_back(m);
+    return static_cast<std::uint32_t>(scene.materials.size() - 1);
+}
+
+int add_sphere(Scene& scene, Vec3 centre, double radius, std::uint32_t material)
+{
+    Sphere s;
+    s.name = "s" + std::to_string(scene.spheres.size());
+    s.center = centre;
+    s.radius = radius;
+    s.material = material;
+    scene.spheres.push_back(s);
+    return static_cast<int>(scene.spheres.size() - 1);
+}
+
+RenderConfig small_config(int width, int height, std::uint64_t seed, int max_depth, IntegratorMode mode)
+{
+    RenderConfig config;
+    config.width = width;
+    config.height = height;
+    config.seed = seed;
+    config.max_depth = max_depth;
+    config.mode = mode;
+    return config;
+}
+
+Film render(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes)
+{
+    Renderer renderer(scene, config);
+    for (int samples : passes) renderer.render_pass(samples);
+    return renderer.read_film();
+}
+
+Scene load_scene_file(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_scn(text.str(), path);
+}
+
+PixelStatistics radiance_statistics(const Film& film, const std::vector<std::size_t>& pixels, int channel)
+{
+    PixelStatistics stats;
+    const double n = static_cast<double>(film.samples_per_pixel);
+    if (pixels.empty() || n < 2) throw std::invalid_argument("need pixels and at least two samples");
+    double sum_of_means = 0, sum_of_variances = 0;
+    for (std::size_t p : pixels) {
+        const double sum = film.radiance[p * 3 + channel];
+        const double sum_sq = film.radiance_sq[p * 3 + channel];
+        const double mean = sum / n;
+        const double sample_variance = std::max(0.0, (sum_sq - n * mean * mean) / (n - 1));
+        sum_of_means += mean;
+        sum_of_variances += sample_variance / n;  // variance of this pixel's mean
+    }
+    const double count = static_cast<double>(pixels.size());
+    stats.mean = sum_of_means / count;
+    stats.standard_error = std::sqrt(sum_of_variances) / count;
+    stats.pixels = pixels.size();
+    return stats;
+}
+
+std::vector<std::size_t> interior_pixels_of(const Film& film, int id)
+{
+    std::vector<std::size_t> out;
+    const auto is = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < film.width && y < film.height &&
+               film.object_id[static_cast<std::size_t>(y) * film.width + x] == static_cast<float>(id);
+    };
+    for (int y = 0; y < film.height; ++y)
+        for (int x = 0; x < film.width; ++x) {
+            bool interior = true;
+            for (int dy = -1; dy <= 1 && interior; ++dy)
+                for (int dx = -1; dx <= 1 && interior; ++dx) interior = is(x + dx, y + dy);
+            if (interior) out.push_back(static_cast<std::size_t>(y) * film.width + x);
+        }
+    return out;
+}
+
+std::vector<std::size_t> all_pixels(const Film& film)
+{
+    std::vector<std::size_t> out(film.pixel_count());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = i;
+    return out;
+}
+
+}  // namespace orb::render::test

@@ -1,0 +1,43 @@
+// Helpers shared by the renderer tests: small hand-built scenes, rendering
+// in given pass splits, and statistics from the film's own sums.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "orb/render/renderer.h"
+#include "orb/scene/scene.h"
+
+namespace orb::render::test {
+
+// Adds a material and returns its index.
+std::uint32_t add_material(Scene& scene, MaterialType type, Vec3 color, Vec3 emission = {0, 0, 0}, double ior = 1.5);
+// Adds a sphere and returns its index.
+int add_sphere(Scene& scene, Vec3 centre, double radius, std::uint32_t material);
+
+RenderConfig small_config(int width, int height, std::uint64_t seed = 7, int max_depth = 6,
+                          IntegratorMode mode = IntegratorMode::Global);
+
+// Renders `passes` (samples per pass, in order) with a fresh renderer.
+Film render(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes);
+
+Scene load_scene_file(const std::string& path);  // .scn
+
+// Mean over the chosen pixels of each pixel's mean radiance in channel c,
+// and the standard error of that mean from the per-pixel variances that
+// radiance_sq gives (pixels are independent; each pixel's variance of the
+// mean is the unbiased sample variance over n).
+struct PixelStatistics {
+    double mean = 0;
+    double standard_error = 0;
+    std::size_t pixels = 0;
+};
+PixelStatistics radiance_statistics(const Film& film, const std::vector<std::size_t>& pixels, int channel);
+
+// Pixels whose centre ray hit sphere `id`, together with all 8 neighbours
+// (so no sample of the pixel can have seen anything else).
+std::vector<std::size_t> interior_pixels_of(const Film& film, int id);
+
+std::vector<std::size_t> all_pixels(const Film& film);
+
+}  // namespace orb::render::test
