@@ -1,0 +1,150 @@
+// The film's bookkeeping on the Cornell box: the light split adds up to the
+// beauty, and the image depends only on the seed and the sample indices.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "render_test_support.h"
+
+namespace orb::render::test {
+namespace {
+
+Scene cornell() { return load_scene_file(std::string(ORB_SCENES_DIR) + "/cornell.scn"); }
+
+RenderConfig cornell_config(std::uint64_t seed = 42) { return small_config(24, 18, seed); }
+
+// Sums of the same samples added in a different grouping differ only by
+// float rounding: at most about n * 2^-24 of the sum of the magnitudes. For
+// non-negative sets that is the sum itself; for normals (components in
+// [-1, 1], which cancel) pass magnitude_bound = n.
+void expect_same_up_to_rounding(const std::vector<float>& a, const std::vector<float>& b, std::uint64_t samples,
+                                const char* what, double magnitude_bound = 0)
+{
+    ASSERT_EQ(a.size(), b.size()) << what;
+    const double relative = static_cast<double>(samples) * std::ldexp(1.0, -24);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const double magnitude = std::max({magnitude_bound, std::abs(double(a[i])), std::abs(double(b[i]))});
+        ASSERT_NEAR(a[i], b[i], relative * magnitude + 1e-30) << what << " [" << i << "]";
+    }
+}
+
+void expect_same_films_up_to_rounding(const Film& a, const Film& b)
+{
+    ASSERT_EQ(a.samples_per_pixel, b.samples_per_pixel);
+    const std::uint64_t n = a.samples_per_pixel;
+    expect_same_up_to_rounding(a.radiance, b.radiance, n, "radiance");
+    expect_same_up_to_rounding(a.radiance_sq, b.radiance_sq, n, "radiance_sq");
+    expect_same_up_to_rounding(a.direct, b.direct, n, "direct");
+    expect_same_up_to_rounding(a.indirect, b.indirect, n, "indirect");
+    expect_same_up_to_rounding(a.emission, b.emission, n, "emission");
+    expect_same_up_to_rounding(a.albedo, b.albedo, n, "albedo");
+    expect_same_up_to_rounding(a.normal, b.normal, n, "normal", static_cast<double>(n));
+    expect_same_up_to_rounding(a.alpha, b.alpha, n, "alpha");
+    EXPECT_EQ(a.depth, b.depth);
+    EXPECT_EQ(a.object_id, b.object_id);
+}
+
+TEST(FilmConsistency, DirectPlusIndirectPlusEmissionIsBeauty)
+{
+    const Film film = render(cornell(), cornell_config(), {16});
+    double total_direct = 0, total_indirect = 0, total_emission = 0;
+    for (std::size_t i = 0; i < film.radiance.size(); ++i) {
+        const double parts = static_cast<double>(film.direct[i]) + film.indirect[i] + film.emission[i];
+        ASSERT_NEAR(parts, film.radiance[i], 16 * std::ldexp(1.0, -23) * (std::abs(parts) + 1e-30)) << i;
+        total_direct += film.direct[i];
+        total_indirect += film.indirect[i];
+        total_emission += film.emission[i];
+    }
+    // The Cornell box has all three kinds of light.
+    EXPECT_GT(total_direct, 0.0);
+    EXPECT_GT(total_indirect, 0.0);
+    EXPECT_GT(total_emission, 0.0);
+}
+
+TEST(FilmConsistency, SameSeedGivesIdenticalPixels)
+{
+    const Film a = render(cornell(), cornell_config(), {4, 4});
+    const Film b = render(cornell(), cornell_config(), {4, 4});
+    EXPECT_EQ(a.radiance, b.radiance);
+    EXPECT_EQ(a.radiance_sq, b.radiance_sq);
+    EXPECT_EQ(a.albedo, b.albedo);
+}
+
+TEST(FilmConsistency, DifferentSeedsGiveDifferentPixels)
+{
+    const Film a = render(cornell(), cornell_config(1), {8});
+    const Film b = render(cornell(), cornell_config(2), {8});
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.radiance.size(); ++i) differing += a.radiance[i] != b.radiance[i];
+    EXPECT_GT(differing, a.radiance.size() / 2);
+}
+
+TEST(FilmConsistency, PassSplitsDoNotChangeTheImage)
+{
+    const Film one_pass = render(cornell(), cornell_config(), {8});
+    const Film eight_passes = render(cornell(), cornell_config(), {1, 1, 1, 1, 1, 1, 1, 1});
+    const Film uneven = render(cornell(), cornell_config(), {3, 5});
+    expect_same_films_up_to_rounding(one_pass, eight_passes);
+    expect_same_films_up_to_rounding(one_pass, uneven);
+}
+
+TEST(FilmConsistency, ResumingFromAFilmContinuesTheSameRender)
+{
+    const Film uninterrupted = render(cornell(), cornell_config(), {3, 5});
+    Film checkpoint = render(cornell(), cornell_config(), {3});
+    ASSERT_EQ(checkpoint.samples_per_pixel, 3u);
+
+    Renderer resumed(cornell(), cornell_config());
+    resumed.load_film(checkpoint);
+    EXPECT_EQ(resumed.samples_per_pixel(), 3u);
+    resumed.render_pass(5);
+    const Film finished = resumed.read_film();
+    EXPECT_EQ(finished.samples_per_pixel, 8u);
+    // Same passes, same sums: bit-identical, not merely close.
+    EXPECT_EQ(finished.radiance, uninterrupted.radiance);
+    expect_same_films_up_to_rounding(finished, uninterrupted);
+}
+
+TEST(FilmConsistency, LoadFilmRejectsAnotherSize)
+{
+    Renderer renderer(cornell(), cornell_config());
+    Film wrong;
+    wrong.resize(10, 10);
+    EXPECT_THROW(renderer.load_film(wrong), std::invalid_argument);
+}
+
+TEST(FilmConsistency, ChannelsHoldSensibleValues)
+{
+    const Film film = render(cornell(), cornell_config(), {4});
+    for (std::size_t p = 0; p < film.pixel_count(); ++p) {
+        EXPECT_EQ(film.alpha[p], 4.0f);  // the box is closed: every camera ray hits
+        EXPECT_TRUE(std::isfinite(film.depth[p]));
+        EXPECT_GE(film.object_id[p], 0.0f);
+        EXPECT_LT(film.object_id[p], 9.0f);
+        // Normals face the camera ray, are unit length per sample.
+        const double nx = film.normal[p * 3] / 4, ny = film.normal[p * 3 + 1] / 4, nz = film.normal[p * 3 + 2] / 4;
+        EXPECT_LE(std::sqrt(nx * nx + ny * ny + nz * nz), 1.0 + 1e-5);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_GE(film.albedo[p * 3 + c], 0.0f);
+            EXPECT_LE(film.albedo[p * 3 + c], 4.0f);
+            EXPECT_GE(film.radiance_sq[p * 3 + c] * 4, film.radiance[p * 3 + c] * film.radiance[p * 3 + c] * 0.999f);
+        }
+    }
+}
+
+TEST(FilmConsistency, HostFilmAccumulateAddsSumsAndCounts)
+{
+    const Film a = render(cornell(), cornell_config(), {2});
+    Film sum;
+    sum.resize(a.width, a.height);
+    sum.accumulate(a);
+    sum.accumulate(a);
+    EXPECT_EQ(sum.samples_per_pixel, 4u);
+    EXPECT_EQ(sum.radiance[5], a.radiance[5] * 2);
+    EXPECT_EQ(sum.depth, a.depth);
+    EXPECT_EQ(sum.object_id, a.object_id);
+}
+
+}  // namespace
+}  // namespace orb::render::test
