@@ -1,0 +1,30 @@
+// Pixel error statistics between a reference image and a test image of the
+// same size and channel count. All statistics run over every channel given
+// (callers pass colour channels without alpha).
+#pragma once
+
+#include <string>
+
+#include "orb/image/image.h"
+
+namespace orb::image {
+
+struct ErrorStats {
+    double mean_abs_error = 0;  // mean over pixels and channels of |t - r|
+    double max_abs_error = 0;   // largest |t - r|
+    int max_x = 0, max_y = 0;   // where it is
+    std::string max_channel;    // and in which channel
+    double rmse = 0;            // sqrt(mean (t - r)^2)
+    double psnr = 0;            // 20 log10(1 / rmse), peak value 1 as idiff reports it; +inf if identical
+    double relmse = 0;          // mean (t - r)^2 / (r^2 + 0.01), Rousselle et al. 2011
+    size_t nonfinite = 0;       // values that are NaN/inf in one image and differ in the other
+};
+
+constexpr double kRelMseEpsilon = 0.01;
+
+ErrorStats compute_error_stats(const Image& reference, const Image& test);
+
+// Percentage of pixels where any channel differs by more than `threshold`.
+double percent_pixels_over(const Image& reference, const Image& test, double threshold);
+
+}  // namespace orb::image

@@ -1,0 +1,28 @@
+// Writing display images through OpenImageIO, format chosen by name.
+#pragma once
+
+#include <string>
+
+#include "orb/image/image.h"
+
+namespace orb::image {
+
+struct WriteOptions {
+    std::string format;  // "png", "jpg", "tif", "exr", ... (OIIO format or extension)
+    int bits = 0;        // 0: the format's default (8; EXR: 16-bit half)
+    bool dither = true;  // dither when quantising to 8 bits
+    bool premultiply_alpha = false;  // for formats that store associated alpha (EXR, TIFF)
+};
+
+// Lower-case extension of a path without the dot ("" if none).
+std::string extension_of(const std::string& path);
+
+// Normalises a format name or extension ("jpeg" -> "jpg", "tiff" -> "tif");
+// throws orb::InputError for formats OIIO cannot write or bit depths they cannot hold.
+WriteOptions checked_write_options(WriteOptions options);
+
+// Writes `image` to `filename` (usually a temporary that the caller renames).
+// Throws orb::InputError on failure.
+void write_image_file(const std::string& filename, const Image& image, const WriteOptions& options);
+
+}  // namespace orb::image

@@ -1,0 +1,157 @@
+// orb-tonemap: scene-linear renders -> display images through OpenColorIO.
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "frame_pattern.h"
+#include "orb/cli/io.h"
+#include "orb/cli/messages.h"
+#include "orb/cli/tool_main.h"
+#include "orb/image/color_options.h"
+#include "orb/image/contact_sheet.h"
+#include "orb/image/load.h"
+#include "orb/image/passes.h"
+#include "orb/image/tonemap.h"
+#include "orb/image/write.h"
+#include "orb/scene/error.h"
+
+namespace fs = std::filesystem;
+using namespace orb::image;
+using orb::cli::UsageError;
+
+namespace {
+
+struct Settings {
+    std::vector<std::string> inputs;
+    std::string output;
+    std::string pass = "beauty";
+    double exposure = 0.0;
+    std::string format;
+    int bits = 0;
+    bool no_dither = false;
+    std::string frames;
+    bool contact_sheet = false;
+    ColorOptions color;
+};
+
+struct Job {
+    std::string input, output;
+};
+
+std::vector<Job> plan_jobs(const Settings& s) {
+    std::vector<Job> jobs;
+    if (!s.frames.empty()) {
+        if (s.inputs.size() != 1 || !orb::tonemap::is_frame_pattern(s.inputs[0]))
+            throw UsageError("--frames needs one input pattern with a frame number, e.g. beauty.%04d.exr");
+        if (!orb::tonemap::is_frame_pattern(s.output))
+            throw UsageError("--frames needs an output pattern with a frame number, e.g. -o beauty.%04d.png");
+        const auto range = orb::tonemap::parse_frame_range(s.frames);
+        for (long f = range.first; f <= range.last; ++f)
+            jobs.push_back({orb::tonemap::expand_frame_pattern(s.inputs[0], f),
+                            orb::tonemap::expand_frame_pattern(s.output, f)});
+        return jobs;
+    }
+    if (s.inputs.size() == 1) return {{s.inputs[0], s.output}};
+    std::error_code ec;
+    if (!fs::is_directory(s.output, ec))
+        throw UsageError("with several inputs, -o must be an existing directory (got '" + s.output + "')");
+    const std::string ext = s.format.empty() ? "png" : s.format;
+    for (const std::string& in : s.inputs) {
+        if (in == "-") throw UsageError("'-' (stdin) cannot be one of several inputs");
+        jobs.push_back({in, (fs::path(s.output) / (fs::path(in).stem().string() + "." + ext)).string()});
+    }
+    return jobs;
+}
+
+void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
+    const LoadedImage loaded = load_image(job.input);
+    DisplayView request{input_space_for(config, s.color, loaded), s.color.display, s.color.view, s.color.look,
+                        s.exposure};
+    const DisplayView view = resolve_display_view(config, request);
+
+    Image picture;
+    if (s.contact_sheet) {
+        picture = make_contact_sheet(loaded.image, config, view);
+    } else {
+        const Pass pass = extract_pass(loaded.image, s.pass, display_name(job.input));
+        picture = tonemap_pass(pass, config, view);
+    }
+
+    WriteOptions options;
+    options.format = s.format.empty() ? extension_of(job.output) : s.format;
+    options.bits = s.bits;
+    options.dither = !s.no_dither;
+    options = checked_write_options(options);
+    options.premultiply_alpha = options.format == "exr" || options.format == "tif";
+    orb::cli::write_output_via_file(
+        job.output, [&](const std::string& tmp) { write_image_file(tmp, picture, options); }, "." + options.format);
+    orb::cli::info("wrote " + (job.output == "-" ? std::string("<stdout>") : job.output));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Settings s;
+    return orb::cli::run_tool(
+        argc, argv, "orb-tonemap", "Turn scene-linear renders (EXR or any OIIO format) into display images through OpenColorIO",
+        [&](CLI::App& app) {
+            app.add_option("inputs", s.inputs, "Input image(s), '-' for stdin, or a %04d pattern with --frames");
+            app.add_option("-o,--output", s.output, "Output file ('-' = stdout, needs --format), or a directory for several inputs")
+                ->option_text("OUT");
+            app.add_option("--pass", s.pass,
+                           "Pass to show: beauty, direct, indirect, emission, albedo, normal, depth, variance, id, or any layer name")
+                ->option_text("NAME");
+            app.add_option("--exposure", s.exposure, "Exposure adjustment in stops, applied in scene-linear")->option_text("STOPS");
+            add_color_options(app, s.color);
+            app.add_option("--format", s.format, "Output format: png, jpg, tif, exr, ... (default: from the output's extension)")
+                ->option_text("FMT");
+            app.add_option("--bits", s.bits, "Bits per channel: 8 or 16 (PNG, TIFF), 16 or 32 (EXR)")->option_text("N");
+            app.add_flag("--no-dither", s.no_dither, "Round instead of dithering when quantising to 8 bits");
+            app.add_option("--frames", s.frames, "Frame range for pattern inputs/outputs, e.g. 1-240")->option_text("A-B");
+            app.add_flag("--contact-sheet", s.contact_sheet, "Lay out all passes of the input in one labelled image");
+            app.footer(
+                "Examples:\n"
+                "  orb-tonemap render.exr -o render.png\n"
+                "  orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png\n"
+                "  orb-tonemap render.exr --view Filmic --exposure 1 -o render.jpg\n"
+                "  orb-tonemap render.exr --display 'Display P3' --view 'ACES 1.0 - SDR Video' -o p3.png --bits 16\n"
+                "  orb-tonemap render.exr --pass normal -o normals.png\n"
+                "  orb-tonemap render.exr --contact-sheet -o passes.png\n"
+                "  orb-tonemap beauty.%04d.exr --frames 1-240 -o png/beauty.%04d.png\n"
+                "  orb-tonemap a.exr b.exr c.exr -o previews/ --format jpg\n"
+                "  orb-tonemap render.exr -o - --format png > render.png\n"
+                "  orb-tonemap --list\n"
+                "Colour config: --config FILE, else $OCIO, else Orb's share/orb/ocio/config.ocio.\n"
+                "Exit status: 0 success, 1 an input could not be read or an output written, 2 usage error.");
+        },
+        [&]() -> int {
+            if (s.color.list) {
+                std::cout << load_color_config(s.color).listing();
+                return 0;
+            }
+            if (s.inputs.empty()) throw UsageError("no input image (see --help)");
+            if (s.output.empty()) throw UsageError("no output: give -o OUT");
+            if (s.output == "-" && s.format.empty()) throw UsageError("-o - (stdout) needs --format, e.g. --format png");
+            if (s.contact_sheet && s.pass != "beauty") throw UsageError("--contact-sheet shows every pass; drop --pass");
+            const std::vector<Job> jobs = plan_jobs(s);
+            const ColorConfig config = load_color_config(s.color);
+            if (jobs.size() == 1) {
+                tonemap_one(jobs[0], s, config);
+                return 0;
+            }
+            // Sequences: a bad frame is reported and the rest still get done.
+            int failures = 0;
+            for (const Job& job : jobs) {
+                try {
+                    tonemap_one(job, s, config);
+                } catch (const std::exception& e) {
+                    orb::cli::error(e.what());
+                    ++failures;
+                }
+            }
+            if (failures) orb::cli::error(std::to_string(failures) + " of " + std::to_string(jobs.size()) + " images failed");
+            return failures ? orb::cli::kFailure : orb::cli::kSuccess;
+        });
+}
