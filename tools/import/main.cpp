@@ -62,6 +62,11 @@ int run(Arguments& args) {
     using orb::import_tool::OutputFormat;
     const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
     if (!args.from.empty()) args.import_options.format = orb::scene_format_from_name(args.from);
+    // A .gltf/.glb name means glTF even when the content is too broken to recognise,
+    // so that the glTF reader (not the .scn one) explains what is wrong.
+    const std::string extension = std::filesystem::path(args.input).extension().string();
+    if (args.from.empty() && (extension == ".gltf" || extension == ".glb"))
+        args.import_options.format = orb::SceneFormat::GltfJson;
     args.import_options.gltf.strict = args.strict;
 
     const std::string source = orb::cli::is_stdio(args.input) ? "<stdin>" : args.input;

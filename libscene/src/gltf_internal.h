@@ -1,0 +1,138 @@
+// Pieces of the glTF importer, shared between its source files (gltf_*.cpp).
+// Nothing here is public API.
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "animation_math.h"
+#include "orb/scene/gltf.h"
+#include "orb/scene/scene.h"
+
+namespace orb::gltf {
+
+// ---- loading (gltf_load.cpp) ----
+
+// Parses .gltf or .glb bytes. External files are read only from inside
+// `base_dir`; images are never decoded. Throws InputError.
+tinygltf::Model load_model(std::string_view bytes, const std::string& source, const std::string& base_dir);
+
+// ---- messages (gltf_import.cpp) ----
+
+class Diagnostics {
+public:
+    Diagnostics(std::string source, bool strict) : source_(std::move(source)), strict_(strict) {}
+    [[noreturn]] void fail(const std::string& message) const;
+    void warn(const std::string& message);
+    // A warning that loses information: an error under --strict.
+    void lossy(const std::string& message);
+    const std::string& source() const { return source_; }
+    std::vector<std::string> take_warnings() { return std::move(warnings_); }
+
+private:
+    std::string source_;
+    bool strict_;
+    std::vector<std::string> warnings_;
+};
+
+// ---- accessors (gltf_accessor.cpp) ----
+
+// An accessor's elements as doubles, `components` per element, normalised
+// integers converted as the glTF spec says. Every offset is bounds-checked.
+struct AccessorValues {
+    std::size_t count = 0;
+    int components = 0;
+    std::vector<double> values;  // count * components
+    const double* element(std::size_t i) const { return values.data() + i * std::size_t(components); }
+};
+
+// `what` names the accessor in messages ("mesh 'Ball' POSITION").
+// `allowed_types` lists TINYGLTF_TYPE_* values that are acceptable.
+AccessorValues read_accessor(const tinygltf::Model& model, int index, std::initializer_list<int> allowed_types,
+                             const std::string& what, const Diagnostics& diagnostics);
+
+// Vertex indices of a primitive (all vertices when it has none), checked
+// against `vertex_count`.
+std::vector<std::uint32_t> read_indices(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                        std::size_t vertex_count, const std::string& what,
+                                        const Diagnostics& diagnostics);
+
+// ---- geometry (gltf_geometry.cpp) ----
+
+struct FittedSphere {
+    AnimVec3 center{};
+    double radius = 0.0;
+};
+
+// The sphere that all `points` lie on within `tolerance` (relative to the
+// radius), if the triangles also cover it like a tessellated sphere does.
+std::optional<FittedSphere> fit_sphere(const std::vector<AnimVec3>& points,
+                                       const std::vector<std::array<std::uint32_t, 3>>& triangles, double tolerance);
+
+// Centre of the bounding box and the largest distance from it to a point.
+FittedSphere bounding_sphere(const std::vector<AnimVec3>& points);
+
+// Triangles of a TRIANGLES / TRIANGLE_STRIP / TRIANGLE_FAN index list.
+std::vector<std::array<std::uint32_t, 3>> triangles_of(int mode, const std::vector<std::uint32_t>& indices);
+
+// ---- materials (gltf_materials.cpp) ----
+
+class MaterialTable {
+public:
+    MaterialTable(const tinygltf::Model& model, Scene& scene, Diagnostics& diagnostics)
+        : model_(model), scene_(scene), diagnostics_(diagnostics) {}
+    // Index in scene.materials of glTF material `index` (-1: the default
+    // material) with its base colour multiplied by `color_scale`.
+    // `vertex_colors`: the primitive has COLOR_0, which then colours a
+    // primitive without a material on its own (white base, as glTF says).
+    std::uint32_t get(int index, const AnimVec3& color_scale = {1.0, 1.0, 1.0}, bool vertex_colors = false);
+    // A black emitter of radiance `emission` (lights).
+    std::uint32_t emitter(const std::string& name, const Vec3& emission);
+    // One warning for all textured materials; call once at the end.
+    void report_textures();
+
+private:
+    std::uint32_t add(Material material);
+    const tinygltf::Model& model_;
+    Scene& scene_;
+    Diagnostics& diagnostics_;
+    std::map<std::string, std::uint32_t> by_key_;
+    std::vector<std::string> textured_;
+};
+
+// ---- extension values (gltf_import.cpp) ----
+
+// Number at `key` of a tinygltf::Value object, if present and a number.
+std::optional<double> number_at(const tinygltf::Value& object, const std::string& key);
+// Non-negative integer index at `key`, if present and an integer in range.
+std::optional<int> index_at(const tinygltf::Value& object, const std::string& key);
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const std::string& name);
+
+// ---- cameras and lights (gltf_camera.cpp, gltf_lights.cpp) ----
+
+// Orb camera from a glTF perspective camera and its node's world matrix;
+// `scene_center` sets how far away the target point is.
+void convert_camera(const tinygltf::Camera& camera, const std::string& name, const Matrix4& world,
+                    const AnimVec3& scene_center, Scene& scene, const Diagnostics& diagnostics);
+// Frames the bounds of the spheres from +z looking down -z.
+void automatic_camera(Scene& scene);
+
+// Radiance of a sphere of radius `radius` whose radiant intensity in every
+// direction is `intensity` (per colour channel): L = I / (pi r^2).
+Vec3 point_light_radiance(const Vec3& intensity, double radius);
+// Radiance of a sphere of radius `radius` at `distance` that gives
+// irradiance `illuminance` on a surface facing it: L = E / (pi (r/d)^2).
+Vec3 distant_light_radiance(const Vec3& illuminance, double radius, double distance);
+
+// Animated node channels from every glTF animation (gltf_animation.cpp),
+// keyed by glTF node index.
+std::map<int, std::vector<AnimationChannel>> read_animation_channels(const tinygltf::Model& model,
+                                                                    Diagnostics& diagnostics);
+
+}  // namespace orb::gltf

@@ -1,0 +1,120 @@
+// glTF metallic-roughness materials -> Orb's diffuse / mirror / dielectric
+// (docs/gltf.md, "Materials").
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "gltf_internal.h"
+
+namespace orb::gltf {
+namespace {
+
+constexpr double kTransmissiveThreshold = 0.5;
+constexpr double kMetallicThreshold = 0.5;
+// A primitive without a material gets Blender's default grey, not glTF's
+// default material (which is fully metallic and would import as a mirror).
+constexpr double kDefaultGrey = 0.8;
+
+double clamp01(double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0; }
+
+bool has_texture(const tinygltf::Material& m) {
+    if (m.pbrMetallicRoughness.baseColorTexture.index >= 0 || m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ||
+        m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 || m.emissiveTexture.index >= 0)
+        return true;
+    // Extensions reference textures as objects with an "index" (transmissionTexture, ...).
+    for (const auto& [name, value] : m.extensions) {
+        if (!value.IsObject()) continue;
+        for (const std::string& key : value.Keys())
+            if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::uint32_t MaterialTable::add(Material material) {
+    char key[256];
+    std::snprintf(key, sizeof key, "%d|%.17g,%.17g,%.17g|%.17g,%.17g,%.17g|%.17g|", int(material.type),
+                  material.color[0], material.color[1], material.color[2], material.emission[0], material.emission[1],
+                  material.emission[2], material.ior);
+    const std::string full_key = key + material.name;
+    auto it = by_key_.find(full_key);
+    if (it != by_key_.end()) return it->second;
+    const auto index = std::uint32_t(scene_.materials.size());
+    scene_.materials.push_back(std::move(material));
+    by_key_.emplace(full_key, index);
+    return index;
+}
+
+std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool vertex_colors) {
+    Material out;
+    if (index < 0) {
+        out.name = "default";
+        const double base = vertex_colors ? 1.0 : kDefaultGrey;
+        for (int c = 0; c < 3; ++c) out.color[c] = clamp01(base * color_scale[c]);
+        return add(std::move(out));
+    }
+    if (std::size_t(index) >= model_.materials.size())
+        diagnostics_.fail("material " + std::to_string(index) + " does not exist (there are " +
+                          std::to_string(model_.materials.size()) + ")");
+    const tinygltf::Material& m = model_.materials[std::size_t(index)];
+    out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
+    const std::string label = "material '" + out.name + "'";
+
+    const std::vector<double>& base = m.pbrMetallicRoughness.baseColorFactor;
+    for (int c = 0; c < 3; ++c) {
+        const double factor = base.size() == 4 ? base[std::size_t(c)] : 1.0;
+        out.color[c] = clamp01(factor * color_scale[c]);
+    }
+
+    double transmission = 0.0;
+    if (const tinygltf::Value* ext = extension(m.extensions, "KHR_materials_transmission"))
+        transmission = number_at(*ext, "transmissionFactor").value_or(0.0);
+    const double metallic = m.pbrMetallicRoughness.metallicFactor;
+    if (transmission >= kTransmissiveThreshold) {
+        out.type = MaterialType::Dielectric;
+        out.ior = 1.5;  // the KHR_materials_ior default
+        if (const tinygltf::Value* ext = extension(m.extensions, "KHR_materials_ior")) {
+            const double ior = number_at(*ext, "ior").value_or(1.5);
+            if (std::isfinite(ior) && ior >= 1.0) out.ior = ior;
+            else diagnostics_.lossy(label + ": KHR_materials_ior.ior " + std::to_string(ior) + " is not >= 1; using 1.5");
+        }
+    } else if (metallic >= kMetallicThreshold) {
+        out.type = MaterialType::Mirror;
+    }
+
+    double strength = 1.0;
+    if (const tinygltf::Value* ext = extension(m.extensions, "KHR_materials_emissive_strength"))
+        strength = number_at(*ext, "emissiveStrength").value_or(1.0);
+    for (int c = 0; c < 3; ++c) {
+        const double factor = m.emissiveFactor.size() == 3 ? m.emissiveFactor[std::size_t(c)] : 0.0;
+        const double e = factor * strength;
+        if (!std::isfinite(e) || e < 0) {
+            diagnostics_.lossy(label + ": emission must be finite and >= 0; using 0");
+            out.emission[c] = 0.0;
+        } else {
+            out.emission[c] = e;
+        }
+    }
+
+    if (has_texture(m) && std::find(textured_.begin(), textured_.end(), out.name) == textured_.end())
+        textured_.push_back(out.name);
+    return add(std::move(out));
+}
+
+std::uint32_t MaterialTable::emitter(const std::string& name, const Vec3& emission) {
+    Material out;
+    out.name = name;
+    out.emission = emission;
+    return add(std::move(out));
+}
+
+void MaterialTable::report_textures() {
+    if (textured_.empty()) return;
+    std::string names;
+    for (std::size_t i = 0; i < textured_.size() && i < 8; ++i) names += (i ? ", '" : "'") + textured_[i] + "'";
+    if (textured_.size() > 8) names += ", ... (" + std::to_string(textured_.size()) + " in all)";
+    diagnostics_.lossy("textures are not supported; their factors are used instead (materials " + names + ")");
+}
+
+}  // namespace orb::gltf

@@ -1,0 +1,138 @@
+// orb-import's glTF flags and its behaviour on the whole validator corpus:
+// exit 0 with a scene, or exit 1 with one "orb-import: error:" message and
+// no output file; usage mistakes exit 2.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "gltf_test_util.h"
+#include "orb/scene/scene_json.h"
+
+namespace orb::gltf_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ToolRun {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+ToolRun run_import(const std::string& args, const fs::path& output) {
+    const fs::path dir = fs::temp_directory_path() / ("orb_gltf_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path err = dir / "stderr.txt";
+    const std::string command = quote(ORB_IMPORT_EXE) + " " + args + " -o " + quote(output.string()) + " 2> " +
+                                quote(err.string()) + " < /dev/null";
+    const int raw = std::system(command.c_str());
+    ToolRun run;
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+    run.err = read_file(err.string());
+    if (fs::exists(output)) run.out = read_file(output.string());
+    return run;
+}
+
+fs::path scratch(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("orb_gltf_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::remove(dir / name);
+    return dir / name;
+}
+
+TEST(GltfCli, FlagsReachTheImporter) {
+    const fs::path out = scratch("out.json");
+    ToolRun run = run_import(quote(generated("scenes.gltf")) + " --scene two", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(load_scene_json(run.out, "out").spheres.at(0).name, "Second");
+
+    run = run_import(quote(generated("cameras.glb")) + " --camera Side", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(load_scene_json(run.out, "out").camera.position, (Vec3{10, 0, 0}));
+
+    run = run_import(quote(generated("non_sphere.gltf")) + " --non-spheres bound", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(load_scene_json(run.out, "out").spheres.size(), 2u);
+
+    run = run_import(quote(generated("non_sphere.gltf")), out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.err.find("warning"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("'Cube'"), std::string::npos) << run.err;
+
+    run = run_import(quote(generated("point_light.gltf")) + " --light-radius 0.25", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(sphere_named(load_scene_json(run.out, "out"), "Bulb").radius, 0.25);
+
+    run = run_import(quote(generated("points.gltf")) + " --point-radius 0.3", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(sphere_named(load_scene_json(run.out, "out"), "Plain.point0").radius, 0.3);
+
+    run = run_import(quote(generated("all_lights.gltf")) + " --directional-lights", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NO_THROW(sphere_named(load_scene_json(run.out, "out"), "Sun"));
+
+    run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance 0.01", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(load_scene_json(run.out, "out").spheres.size(), 3u);
+
+    run = run_import(quote(generated("animation.glb")), out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_FALSE(load_scene_json(run.out, "out").animation.empty());
+}
+
+TEST(GltfCli, ErrorsAndUsage) {
+    const fs::path out = scratch("bad.json");
+    ToolRun run = run_import(quote(generated("ortho.gltf")), out);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.err.find("orb-import: error:"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("orthographic"), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+
+    run = run_import(quote(generated("non_sphere.gltf")) + " --non-spheres error", out);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+
+    run = run_import(quote(generated("non_uniform.gltf")) + " --strict", out);
+    EXPECT_EQ(run.status, 1) << run.err;
+
+    run = run_import(quote(generated("nested.gltf")) + " --non-spheres maybe", out);
+    EXPECT_EQ(run.status, 2) << run.err;
+    run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance -1", out);
+    EXPECT_EQ(run.status, 2) << run.err;
+}
+
+TEST(GltfCli, WholeValidatorCorpus) {
+    ASSERT_TRUE(fs::is_directory(ORB_GLTF_CORPUS_DIR)) << "missing corpus " << ORB_GLTF_CORPUS_DIR;
+    std::size_t files = 0, ok = 0, refused = 0;
+    const fs::path out = scratch("corpus.json");
+    for (const auto& entry : fs::recursive_directory_iterator(ORB_GLTF_CORPUS_DIR)) {
+        const std::string ext = entry.path().extension().string();
+        if (!entry.is_regular_file() || (ext != ".gltf" && ext != ".glb")) continue;
+        ++files;
+        fs::remove(out);
+        const ToolRun run = run_import(quote(entry.path().string()), out);
+        if (run.status == 0) {
+            ++ok;
+            EXPECT_NO_THROW(load_scene_json(run.out, entry.path().string()));
+        } else {
+            ++refused;
+            EXPECT_EQ(run.status, 1) << entry.path() << "\n" << run.err;
+            EXPECT_NE(run.err.find("orb-import: error: " + entry.path().string() + ": "), std::string::npos)
+                << run.err;
+            EXPECT_FALSE(fs::exists(out)) << entry.path() << ": partial output left behind";
+        }
+    }
+    EXPECT_EQ(files, 372u);
+    EXPECT_EQ(ok + refused, files);
+}
+
+}  // namespace
+}  // namespace orb::gltf_test

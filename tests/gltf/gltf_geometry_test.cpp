@@ -1,0 +1,163 @@
+// Where spheres come from: tessellated meshes under nested transforms,
+// instancing, point clouds, implicit shapes, non-spheres, scene selection,
+// and external files kept inside the asset's folder.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gltf_test_util.h"
+#include "orb/scene/error.h"
+
+namespace orb::gltf_test {
+namespace {
+
+// Positions are stored as float32: relative error ~1e-7 per vertex.
+constexpr double kTol = 1e-5;
+
+void expect_sphere(const Scene& scene, const std::string& name, const Vec3& center, double radius) {
+    const Sphere& s = sphere_named(scene, name);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.center[c], center[c], kTol * (1 + radius)) << name << " axis " << c;
+    EXPECT_NEAR(s.radius, radius, kTol * radius) << name;
+}
+
+class Containers : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Containers, UvAndIcoSpheresUnderNestedAndMatrixTransforms) {
+    const GltfImportResult result = import_generated("nested" + GetParam());
+    ASSERT_EQ(result.scene.spheres.size(), 3u);
+    // Root T(1,2,3) Rz(90) S(2) * Child T(0,1,0) * mesh centre (0.5,0,0) -> (-1,3,3), radius 2.
+    expect_sphere(result.scene, "Child", {-1, 3, 3}, 2);
+    // The same mesh under a matrix node: scale 0.5, translation (10,0,0).
+    expect_sphere(result.scene, "Matrix", {10.25, 0, 0}, 0.5);
+    expect_sphere(result.scene, "Ico", {0, -5, 0}, 1.5);
+    EXPECT_TRUE(result.warnings.empty()) << result.warnings.front();
+}
+
+TEST_P(Containers, GpuInstancingGivesOneSpherePerInstance) {
+    const GltfImportResult result = import_generated("instanced" + GetParam());
+    ASSERT_EQ(result.scene.spheres.size(), 3u);
+    expect_sphere(result.scene, "Balls#0", {0, 0, -1}, 1);
+    expect_sphere(result.scene, "Balls#1", {3, 0, -1}, 2);
+    expect_sphere(result.scene, "Balls#2", {0, 3, -1}, 0.5);
+}
+
+TEST_P(Containers, PointCloudsUseRadiusAndColourAttributes) {
+    const GltfImportResult result = import_generated("points" + GetParam());
+    const Scene& scene = result.scene;
+    ASSERT_EQ(scene.spheres.size(), 7u);
+    // Node T(0,0,1) S(2): _RADIUS is scaled with the node.
+    expect_sphere(scene, "Cloud.point0", {0, 0, 1}, 0.2);
+    expect_sphere(scene, "Cloud.point1", {2, 0, 1}, 0.4);
+    expect_sphere(scene, "Cloud.point2", {0, 2, 1}, 0.6);
+    expect_sphere(scene, "Cloud.point3", {0, 0, 3}, 0.8);
+    const Vec3 red{1, 0, 0}, half{0.5, 0.5, 0.5};
+    EXPECT_EQ(scene.materials[sphere_named(scene, "Cloud.point0").material].color, red);
+    EXPECT_EQ(scene.materials[sphere_named(scene, "Cloud.point3").material].color, half);
+    // No _RADIUS: 1% of the bounding-box diagonal (4 x 3 box: diagonal 5).
+    expect_sphere(scene, "Plain.point1", {14, 0, 0}, 0.05);
+
+    GltfImportOptions options;
+    options.point_radius = 0.3;
+    const GltfImportResult fixed = import_generated("points" + GetParam(), options);
+    expect_sphere(fixed.scene, "Plain.point2", {10, 3, 0}, 0.3);
+    expect_sphere(fixed.scene, "Cloud.point1", {2, 0, 1}, 0.4);  // _RADIUS wins
+}
+
+TEST_P(Containers, NonSpheresAreSkippedWithOneWarningBoundedOrRefused) {
+    const GltfImportResult skipped = import_generated("non_sphere" + GetParam());
+    ASSERT_EQ(skipped.scene.spheres.size(), 1u);
+    expect_sphere(skipped.scene, "Ball", {0, 0, 0}, 1);
+    ASSERT_EQ(skipped.warnings.size(), 1u);
+    EXPECT_NE(skipped.warnings[0].find("'Cube'"), std::string::npos) << skipped.warnings[0];
+
+    GltfImportOptions bound;
+    bound.non_spheres = NonSpherePolicy::Bound;
+    const GltfImportResult bounded = import_generated("non_sphere" + GetParam(), bound);
+    ASSERT_EQ(bounded.scene.spheres.size(), 2u);
+    expect_sphere(bounded.scene, "Box", {5, 0, 0}, std::sqrt(3.0));
+
+    GltfImportOptions error;
+    error.non_spheres = NonSpherePolicy::Error;
+    try {
+        import_generated("non_sphere" + GetParam(), error);
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("'Cube' is not a sphere"), std::string::npos) << e.what();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Gltf, Containers, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
+
+TEST(GltfGeometry, ImplicitSphereShapesOnNodes) {
+    const GltfImportResult result = import_generated("implicit_shapes.gltf");
+    ASSERT_EQ(result.scene.spheres.size(), 2u);
+    expect_sphere(result.scene, "Direct", {1, 1, 1}, 0.75);
+    expect_sphere(result.scene, "Collider", {-2, 0, 0}, 1.5);
+    EXPECT_TRUE(any_warning_contains(result, "implicit box")) << "the box shape should be named as left out";
+}
+
+TEST(GltfGeometry, NonUniformScaleWarnsAndUsesTheLargestAxis) {
+    const GltfImportResult result = import_generated("non_uniform.gltf");
+    expect_sphere(result.scene, "Squashed", {0, 0, 0}, 2);
+    EXPECT_TRUE(any_warning_contains(result, "non-uniform scale"));
+    GltfImportOptions strict;
+    strict.strict = true;
+    EXPECT_THROW(import_generated("non_uniform.gltf", strict), InputError);
+}
+
+TEST(GltfGeometry, SphereToleranceDecides) {
+    // A UV sphere with 16 segments is exact at its vertices: it passes even a
+    // tiny tolerance; a cube never passes, whatever the tolerance.
+    GltfImportOptions tight;
+    tight.sphere_tolerance = 1e-6;
+    EXPECT_EQ(import_generated("nested.gltf", tight).scene.spheres.size(), 3u);
+    GltfImportOptions loose;
+    loose.sphere_tolerance = 0.5;
+    EXPECT_EQ(import_generated("non_sphere.gltf", loose).scene.spheres.size(), 1u);
+}
+
+TEST(GltfGeometry, SceneSelectionByIndexAndName) {
+    expect_sphere(import_generated("scenes.gltf").scene, "First", {0, 0, 0}, 1);
+    GltfImportOptions by_name;
+    by_name.scene = "two";
+    expect_sphere(import_generated("scenes.gltf", by_name).scene, "Second", {10, 0, 0}, 1);
+    GltfImportOptions by_index;
+    by_index.scene = "1";
+    EXPECT_EQ(import_generated("scenes.gltf", by_index).scene.spheres.at(0).name, "Second");
+    GltfImportOptions missing;
+    missing.scene = "three";
+    EXPECT_THROW(import_generated("scenes.gltf", missing), InputError);
+}
+
+TEST(GltfGeometry, ExternalFilesMustExistInsideTheAssetFolder) {
+    EXPECT_NO_THROW(import_generated("escape.gltf"));
+    for (const char* name : {"sub/escape.gltf", "sub/absolute.gltf", "missing_buffer.gltf"}) {
+        try {
+            import_generated(name);
+            ADD_FAILURE() << name << ": expected an error";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(GltfGeometry, MalformedInputIsAnInputError) {
+    const char* cases[] = {
+        "",
+        "{",
+        "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"children\":[0]}],\"scenes\":[{\"nodes\":[0]}]}",
+        "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"children\":[1]},{\"children\":[0]}],\"scenes\":[{\"nodes\":[0]}]}",
+        "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"mesh\":7}],\"scenes\":[{\"nodes\":[0]}]}",
+        "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,\"uri\":\"data:application/octet-stream;base64,AAAAAA==\"}],"
+        "\"bufferViews\":[{\"buffer\":0,\"byteLength\":4}],\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":100,\"type\":\"VEC3\"}],"
+        "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]}",
+        "glTF\x02\0\0\0\xff\xff\0\0",
+    };
+    for (const char* text : cases) EXPECT_THROW(import_gltf(text, "bad.gltf", ".", {}), InputError) << text;
+    std::string deep = "{\"asset\":{\"version\":\"2.0\"},\"extras\":";
+    for (int i = 0; i < 100000; ++i) deep += "[";
+    EXPECT_THROW(import_gltf(deep, "deep.gltf", ".", {}), InputError);
+}
+
+}  // namespace
+}  // namespace orb::gltf_test

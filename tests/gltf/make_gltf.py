@@ -1,0 +1,399 @@
+#!/usr/bin/env python3
+"""Writes glTF 2.0 test assets with known answers (Python standard library only).
+
+Usage: make_gltf.py OUTPUT_DIR
+
+Every asset's expected import result follows from the numbers written here;
+tests/gltf/*_test.cpp check them. Most assets are written three ways:
+NAME.gltf (external NAME.bin), NAME_embedded.gltf (data-URI buffer) and NAME.glb.
+"""
+import base64
+import json
+import math
+import os
+import struct
+import sys
+
+FLOAT, UBYTE, USHORT, UINT = 5126, 5121, 5123, 5125
+TYPE_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
+
+
+class Asset:
+    """Collects one binary buffer plus the JSON that points into it."""
+
+    def __init__(self):
+        self.blob = bytearray()
+        self.gltf = {"asset": {"version": "2.0", "generator": "orb tests/gltf/make_gltf.py"},
+                     "buffers": [], "bufferViews": [], "accessors": [], "meshes": [], "nodes": [],
+                     "scenes": [{"nodes": []}], "scene": 0}
+
+    def accessor(self, values, type_, component=FLOAT, normalized=False, minmax=False):
+        """values: flat list of numbers. Returns the accessor index."""
+        fmt = {FLOAT: "f", UBYTE: "B", USHORT: "H", UINT: "I"}[component]
+        while len(self.blob) % 4:
+            self.blob.append(0)
+        offset = len(self.blob)
+        self.blob += struct.pack("<%d%s" % (len(values), fmt), *values)
+        self.gltf["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": len(self.blob) - offset})
+        n = TYPE_COMPONENTS[type_]
+        acc = {"bufferView": len(self.gltf["bufferViews"]) - 1, "componentType": component,
+               "count": len(values) // n, "type": type_}
+        if normalized:
+            acc["normalized"] = True
+        if minmax or type_ == "VEC3" and component == FLOAT:
+            acc["min"] = [min(values[i::n]) for i in range(n)]
+            acc["max"] = [max(values[i::n]) for i in range(n)]
+        self.gltf["accessors"].append(acc)
+        return len(self.gltf["accessors"]) - 1
+
+    def mesh(self, name, positions, indices=None, mode=None, material=None, extra_attributes=None):
+        prim = {"attributes": {"POSITION": self.accessor([c for p in positions for c in p], "VEC3")}}
+        if indices is not None:
+            prim["indices"] = self.accessor(indices, "SCALAR", UINT if len(positions) > 65535 else USHORT)
+        if mode is not None:
+            prim["mode"] = mode
+        if material is not None:
+            prim["material"] = material
+        for key, index in (extra_attributes or {}).items():
+            prim["attributes"][key] = index
+        self.gltf["meshes"].append({"name": name, "primitives": [prim]})
+        return len(self.gltf["meshes"]) - 1
+
+    def node(self, root=True, **fields):
+        self.gltf["nodes"].append({k: v for k, v in fields.items() if v is not None})
+        index = len(self.gltf["nodes"]) - 1
+        if root:
+            self.gltf["scenes"][0]["nodes"].append(index)
+        return index
+
+    def extension_used(self, name):
+        self.gltf.setdefault("extensionsUsed", [])
+        if name not in self.gltf["extensionsUsed"]:
+            self.gltf["extensionsUsed"].append(name)
+
+    def _clean(self):
+        doc = json.loads(json.dumps(self.gltf))
+        for key in ("meshes", "nodes", "accessors", "bufferViews"):
+            if not doc[key]:
+                del doc[key]
+        return doc
+
+    def write_all(self, out_dir, name):
+        self.write_gltf(out_dir, name)
+        self.write_gltf(out_dir, name + "_embedded", embedded=True)
+        self.write_glb(out_dir, name)
+
+    def write_gltf(self, out_dir, name, embedded=False):
+        doc = self._clean()
+        if self.blob:
+            if embedded:
+                uri = "data:application/octet-stream;base64," + base64.b64encode(bytes(self.blob)).decode()
+            else:
+                uri = name + ".bin"
+                with open(os.path.join(out_dir, uri), "wb") as f:
+                    f.write(self.blob)
+            doc["buffers"] = [{"byteLength": len(self.blob), "uri": uri}]
+        else:
+            del doc["buffers"]
+        with open(os.path.join(out_dir, name + ".gltf"), "w") as f:
+            json.dump(doc, f, indent=1)
+
+    def write_glb(self, out_dir, name):
+        doc = self._clean()
+        blob = bytes(self.blob)
+        if blob:
+            doc["buffers"] = [{"byteLength": len(blob)}]
+        else:
+            del doc["buffers"]
+        text = json.dumps(doc).encode()
+        text += b" " * (-len(text) % 4)
+        blob += b"\0" * (-len(blob) % 4)
+        chunks = struct.pack("<II", len(text), 0x4E4F534A) + text
+        if blob:
+            chunks += struct.pack("<II", len(blob), 0x004E4942) + blob
+        with open(os.path.join(out_dir, name + ".glb"), "wb") as f:
+            f.write(struct.pack("<III", 0x46546C67, 2, 12 + len(chunks)) + chunks)
+
+
+# ---- shapes ----
+
+def uv_sphere(radius=1.0, center=(0.0, 0.0, 0.0), segments=32, rings=16):
+    """Blender-style UV sphere: poles plus rings x segments vertices."""
+    pts = [(center[0], center[1] + radius, center[2])]
+    for r in range(1, rings):
+        theta = math.pi * r / rings
+        for s in range(segments):
+            phi = 2 * math.pi * s / segments
+            pts.append((center[0] + radius * math.sin(theta) * math.cos(phi), center[1] + radius * math.cos(theta),
+                        center[2] + radius * math.sin(theta) * math.sin(phi)))
+    pts.append((center[0], center[1] - radius, center[2]))
+    south = len(pts) - 1
+    idx = []
+    ring = lambda r, s: 1 + (r - 1) * segments + s % segments
+    for s in range(segments):
+        idx += [0, ring(1, s + 1), ring(1, s)]
+        idx += [south, ring(rings - 1, s), ring(rings - 1, s + 1)]
+    for r in range(1, rings - 1):
+        for s in range(segments):
+            a, b, c, d = ring(r, s), ring(r, s + 1), ring(r + 1, s), ring(r + 1, s + 1)
+            idx += [a, b, d, a, d, c]
+    return pts, idx
+
+
+def ico_sphere(radius=1.0, subdivisions=2):
+    t = (1 + math.sqrt(5)) / 2
+    verts = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
+             (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11),
+             (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    verts = [tuple(c / math.sqrt(sum(x * x for x in v)) for c in v) for v in verts]
+    for _ in range(subdivisions):
+        cache, new_faces = {}, []
+
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in cache:
+                m = [(verts[a][i] + verts[b][i]) / 2 for i in range(3)]
+                n = math.sqrt(sum(x * x for x in m))
+                verts.append(tuple(x / n for x in m))
+                cache[key] = len(verts) - 1
+            return cache[key]
+
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            new_faces += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        faces = new_faces
+    return [tuple(radius * c for c in v) for v in verts], [i for f in faces for i in f]
+
+
+def cube(half=1.0):
+    pts = [(x * half, y * half, z * half) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
+    quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    return pts, [i for a, b, c, d in quads for i in (a, b, c, a, c, d)]
+
+
+def quat_axis_angle(axis, degrees):
+    h = math.radians(degrees) / 2
+    return [axis[0] * math.sin(h), axis[1] * math.sin(h), axis[2] * math.sin(h), math.cos(h)]
+
+
+# ---- assets ----
+
+def nested(out):
+    """UV sphere (radius 1, centred at (0.5,0,0) in mesh space) under two
+    nested nodes; the same mesh again under a matrix node; an ico sphere."""
+    a = Asset()
+    uv = a.mesh("UVSphere", *uv_sphere(1.0, (0.5, 0.0, 0.0)))
+    ico = a.mesh("IcoSphere", *ico_sphere(1.5, 2))
+    child = a.node(root=False, name="Child", translation=[0, 1, 0], mesh=uv)
+    a.node(name="Root", translation=[1, 2, 3], rotation=quat_axis_angle((0, 0, 1), 90), scale=[2, 2, 2],
+           children=[child])
+    a.node(name="Matrix", matrix=[0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 10, 0, 0, 1], mesh=uv)
+    a.node(name="Ico", translation=[0, -5, 0], mesh=ico)
+    a.write_all(out, "nested")
+
+
+def instanced(out):
+    a = Asset()
+    a.extension_used("EXT_mesh_gpu_instancing")
+    uv = a.mesh("Ball", *uv_sphere(1.0))
+    t = a.accessor([0, 0, 0, 3, 0, 0, 0, 3, 0], "VEC3")
+    r = a.accessor([0, 0, 0, 1] * 3, "VEC4")
+    s = a.accessor([1, 1, 1, 2, 2, 2, 0.5, 0.5, 0.5], "VEC3")
+    a.node(name="Balls", translation=[0, 0, -1], mesh=uv,
+           extensions={"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": t, "ROTATION": r, "SCALE": s}}})
+    a.write_all(out, "instanced")
+
+
+def points(out):
+    a = Asset()
+    pos = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]
+    radius = a.accessor([0.1, 0.2, 0.3, 0.4], "SCALAR")
+    color = a.accessor([1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0.5, 0.5], "VEC3")
+    m1 = a.mesh("Cloud", [tuple(pos[i:i + 3]) for i in range(0, 12, 3)], mode=0,
+                extra_attributes={"_RADIUS": radius, "COLOR_0": color})
+    m2 = a.mesh("Plain", [(0, 0, 0), (4, 0, 0), (0, 3, 0)], mode=0)
+    a.node(name="Cloud", translation=[0, 0, 1], scale=[2, 2, 2], mesh=m1)
+    a.node(name="Plain", translation=[10, 0, 0], mesh=m2)
+    a.write_all(out, "points")
+
+
+def non_sphere(out):
+    a = Asset()
+    a.mesh("Ball", *uv_sphere(1.0))
+    a.mesh("Cube", *cube(1.0))
+    a.node(name="Ball", mesh=0)
+    a.node(name="Box", translation=[5, 0, 0], mesh=1)
+    a.write_all(out, "non_sphere")
+
+
+def materials(out):
+    """One sphere per material case, at x = 0, 3, 6, ..."""
+    a = Asset()
+    pts, idx = uv_sphere(1.0, segments=16, rings=8)
+    a.gltf["materials"] = [
+        {"name": "Diffuse", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.4, 0.6, 1], "metallicFactor": 0}},
+        {"name": "VertexColour", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 1, 1, 1], "metallicFactor": 0}},
+        {"name": "Mirror", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.7, 1], "metallicFactor": 1}},
+        {"name": "Glass", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 0.9, 1], "metallicFactor": 0},
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                        "KHR_materials_ior": {"ior": 1.33}}},
+        {"name": "Lamp", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0},
+         "emissiveFactor": [1, 0.5, 0.25], "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}},
+        {"name": "Textured", "pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.3, 0.3, 1], "metallicFactor": 0,
+                                                      "baseColorTexture": {"index": 0}}},
+    ]
+    for ext in ("KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_emissive_strength"):
+        a.extension_used(ext)
+    # A 1x1 PNG as a data URI: never decoded, only reported.
+    a.gltf["images"] = [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg=="}]
+    a.gltf["textures"] = [{"source": 0}]
+    # Vertex colours: half the vertices (0.5, 0.25, 1), half (0.3, 0.15, 0.6); mean (0.4, 0.2, 0.8).
+    colors = []
+    for i in range(len(pts)):
+        colors += [0.5, 0.25, 1.0] if i % 2 == 0 else [0.3, 0.15, 0.6]
+    assert len(pts) % 2 == 0
+    color = a.accessor(colors, "VEC3")
+    for m in range(6):
+        mesh = a.mesh("Ball%d" % m, pts, idx, material=m, extra_attributes={"COLOR_0": color} if m == 1 else None)
+        a.node(name=a.gltf["materials"][m]["name"], translation=[3 * m, 0, 0], mesh=mesh)
+    mesh = a.mesh("NoMaterial", pts, idx)
+    a.node(name="NoMaterial", translation=[18, 0, 0], mesh=mesh)
+    a.write_all(out, "materials")
+
+
+def cameras(out):
+    a = Asset()
+    a.mesh("Ball", *uv_sphere(1.0))
+    a.node(name="Ball", mesh=0)
+    a.gltf["cameras"] = [
+        {"name": "Main", "type": "perspective", "perspective": {"yfov": 0.5, "aspectRatio": 2.0, "znear": 0.1}},
+        {"name": "Side", "type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+    ]
+    a.node(name="MainCam", translation=[0, 0, 10], camera=0)
+    a.node(name="SideCam", translation=[10, 0, 0], rotation=quat_axis_angle((0, 1, 0), 90), camera=1)
+    a.write_all(out, "cameras")
+
+    o = Asset()
+    o.mesh("Ball", *uv_sphere(1.0))
+    o.node(name="Ball", mesh=0)
+    o.gltf["cameras"] = [{"name": "Ortho", "type": "orthographic",
+                          "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 100}}]
+    o.node(name="OrthoCam", translation=[0, 0, 10], camera=0)
+    o.write_all(out, "ortho")
+
+    n = Asset()
+    n.mesh("Ball", *uv_sphere(1.0))
+    n.node(name="A", mesh=0)
+    n.node(name="B", translation=[4, 0, 0], mesh=0)
+    n.write_all(out, "no_camera")
+
+
+def lights(out):
+    a = Asset()
+    a.extension_used("KHR_lights_punctual")
+    a.mesh("Ball", *uv_sphere(1.0))
+    a.node(name="Ball", mesh=0)
+    a.gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"name": "Bulb", "type": "point", "color": [1, 0.5, 0.25], "intensity": 100},
+        {"name": "Spot", "type": "spot", "intensity": 50, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.4}},
+        {"name": "Sun", "type": "directional", "intensity": 3},
+    ]}}
+    a.node(name="BulbNode", translation=[0, 5, 0], extensions={"KHR_lights_punctual": {"light": 0}})
+    a.write_all(out, "point_light")
+    a.node(name="SpotNode", translation=[0, -5, 0], extensions={"KHR_lights_punctual": {"light": 1}})
+    # The sun shines down -y: its node's -z is turned to -y by -90 degrees about x... +90 turns -z into -y.
+    a.node(name="SunNode", rotation=quat_axis_angle((1, 0, 0), -90), extensions={"KHR_lights_punctual": {"light": 2}})
+    a.write_all(out, "all_lights")
+
+
+def animation(out):
+    a = Asset()
+    ball = a.mesh("Ball", *uv_sphere(0.5))
+    nodes = {}
+    nodes["Linear"] = a.node(name="Linear", mesh=ball)
+    arm_child = a.node(root=False, name="ArmBall", translation=[2, 0, 0], mesh=ball)
+    nodes["Arm"] = a.node(name="Arm", children=[arm_child])
+    nodes["Step"] = a.node(name="Step", translation=[0, 10, 0], mesh=ball)
+    nodes["Cubic"] = a.node(name="Cubic", translation=[0, -10, 0], mesh=ball)
+    a.node(name="Static", translation=[0, 0, -10], mesh=ball)
+    a.gltf["cameras"] = [{"name": "Cam", "type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}]
+    nodes["Cam"] = a.node(name="CamNode", translation=[0, 0, 10], camera=0)
+    samplers, channels = [], []
+
+    def channel(node, path, interpolation, times, values, type_):
+        samplers.append({"input": a.accessor(times, "SCALAR", minmax=True),
+                         "output": a.accessor([c for v in values for c in v], type_),
+                         "interpolation": interpolation})
+        channels.append({"sampler": len(samplers) - 1, "target": {"node": node, "path": path}})
+
+    channel(nodes["Linear"], "translation", "LINEAR", [0, 1, 2], [(0, 0, 0), (1, 0, 0), (1, 2, 0)], "VEC3")
+    channel(nodes["Arm"], "rotation", "LINEAR", [0, 1], [(0, 0, 0, 1), quat_axis_angle((0, 1, 0), 90)], "VEC4")
+    channel(nodes["Step"], "scale", "STEP", [0, 1, 2], [(1, 1, 1), (2, 2, 2), (3, 3, 3)], "VEC3")
+    channel(nodes["Cubic"], "translation", "CUBICSPLINE", [0, 2],
+            [(0, 0, 0), (0, -10, 0), (1, 0, 0), (3, 0, 0), (4, -10, 0), (0, 0, 0)], "VEC3")
+    channel(nodes["Cam"], "translation", "LINEAR", [0, 1], [(0, 0, 10), (0, 0, 20)], "VEC3")
+    a.gltf["animations"] = [{"name": "Everything", "samplers": samplers, "channels": channels}]
+    a.write_all(out, "animation")
+
+
+def implicit_shapes(out):
+    a = Asset()
+    a.extension_used("KHR_implicit_shapes")
+    a.extension_used("KHR_physics_rigid_bodies")
+    a.gltf["extensions"] = {"KHR_implicit_shapes": {"shapes": [
+        {"type": "sphere", "sphere": {"radius": 0.75}}, {"type": "box", "box": {"size": [1, 1, 1]}}]}}
+    a.node(name="Direct", translation=[1, 1, 1], extensions={"KHR_implicit_shapes": {"shape": 0}})
+    a.node(name="Collider", translation=[-2, 0, 0], scale=[2, 2, 2],
+           extensions={"KHR_physics_rigid_bodies": {"collider": {"geometry": {"shape": 0}}}})
+    a.node(name="Crate", extensions={"KHR_implicit_shapes": {"shape": 1}})
+    a.write_gltf(out, "implicit_shapes")
+
+
+def non_uniform(out):
+    a = Asset()
+    a.mesh("Ball", *uv_sphere(1.0))
+    a.node(name="Squashed", scale=[1, 2, 1], mesh=0)
+    a.write_gltf(out, "non_uniform")
+
+
+def scenes(out):
+    a = Asset()
+    a.mesh("Ball", *uv_sphere(1.0))
+    a.node(name="First", mesh=0)
+    a.node(root=False, name="Second", translation=[10, 0, 0], mesh=0)
+    a.gltf["scenes"] = [{"name": "one", "nodes": [0]}, {"name": "two", "nodes": [1]}]
+    a.write_gltf(out, "scenes")
+
+
+def sandbox(out):
+    """External buffers outside the asset's folder, or missing, are errors."""
+    a = Asset()
+    a.mesh("Ball", *uv_sphere(1.0))
+    a.node(name="Ball", mesh=0)
+    a.write_gltf(out, "escape")
+    doc = json.load(open(os.path.join(out, "escape.gltf")))
+    os.makedirs(os.path.join(out, "sub"), exist_ok=True)
+    with open(os.path.join(out, "outside.bin"), "wb") as f:
+        f.write(a.blob)
+    doc["buffers"][0]["uri"] = "../outside.bin"
+    json.dump(doc, open(os.path.join(out, "sub", "escape.gltf"), "w"))
+    doc["buffers"][0]["uri"] = "missing.bin"
+    json.dump(doc, open(os.path.join(out, "missing_buffer.gltf"), "w"))
+    doc["buffers"][0]["uri"] = os.path.abspath(os.path.join(out, "outside.bin"))
+    json.dump(doc, open(os.path.join(out, "sub", "absolute.gltf"), "w"))
+
+
+def main():
+    out = sys.argv[1]
+    os.makedirs(out, exist_ok=True)
+    for make in (nested, instanced, points, non_sphere, materials, cameras, lights, animation, implicit_shapes,
+                 non_uniform, scenes, sandbox):
+        make(out)
+    with open(os.path.join(out, "stamp"), "w") as f:
+        f.write("ok\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,51 @@
+// orb-import's glTF options (docs/gltf.md lists the rules they change).
+#include "gltf_options.h"
+
+#include <map>
+
+namespace orb::import_tool {
+
+void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
+    const std::string group = "glTF input";
+    app.add_option("--scene", options.scene, "glTF scene to import, by index or name (default: the asset's default scene)")
+        ->option_text("N|NAME")
+        ->group(group);
+    app.add_option("--camera", options.camera,
+                   "glTF camera to use, by camera index, camera name or node name (default: the first one found; "
+                   "none: an automatic camera framing the scene from +z)")
+        ->option_text("N|NAME")
+        ->group(group);
+    app.add_option("--sphere-tolerance", options.sphere_tolerance,
+                   "A mesh is a sphere when all its vertices lie within this fraction of the radius of one sphere")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str()
+        ->option_text("FRACTION")
+        ->group(group);
+    app.add_option("--point-radius", options.point_radius,
+                   "Radius of POINTS without a _RADIUS attribute, in world units (default: 1% of the point cloud's "
+                   "bounding-box diagonal)")
+        ->check(CLI::PositiveNumber)
+        ->option_text("R")
+        ->group(group);
+    const std::map<std::string, NonSpherePolicy> policies{
+        {"skip", NonSpherePolicy::Skip}, {"bound", NonSpherePolicy::Bound}, {"error", NonSpherePolicy::Error}};
+    app.add_option("--non-spheres", options.non_spheres,
+                   "Meshes that are not spheres: skip them (one warning), replace them by their bounding sphere, or "
+                   "fail")
+        ->transform(CLI::CheckedTransformer(policies, CLI::ignore_case))
+        ->option_text("skip|bound|error")
+        ->default_str("skip")
+        ->group(group);
+    app.add_option("--light-radius", options.light_radius,
+                   "Radius of the emissive sphere for each point/spot light, in world units (default: 1% of the "
+                   "scene's bounding-box diagonal)")
+        ->check(CLI::PositiveNumber)
+        ->option_text("R")
+        ->group(group);
+    app.add_flag("--directional-lights", options.directional_lights,
+                 "Turn directional lights into a distant, large emissive sphere giving the same illuminance "
+                 "(default: leave them out with a warning)")
+        ->group(group);
+}
+
+}  // namespace orb::import_tool
