@@ -11,7 +11,7 @@
 #define MODE_DIRECT 1
 
 // Russian roulette applies from this scattering event on.
-#define RR_START_EVENT 3
+#define RR_START_EVENT 2
 
 typedef struct {
     float3 emission;  // paths with no diffuse vertex (emitters seen directly or through specular chains)

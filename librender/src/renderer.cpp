@@ -17,7 +17,7 @@ namespace {
 // Pass lengths aimed at: short on GPUs so no display watchdog fires and
 // progress stays smooth; longer on CPUs, where per-pass overhead matters more.
 constexpr double kGpuPassSeconds = 0.05;
-constexpr double kCpuPassSeconds = 0.15;
+constexpr double kCpuPassSeconds = 0.25;
 
 template <typename T>
 cl::Buffer read_only_buffer(const cl::Context& context, const std::vector<T>& data)
@@ -83,8 +83,9 @@ Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
         const cl_ulong constant_limit = device.getInfo<CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE>();
         const cl_uint constant_args = device.getInfo<CL_DEVICE_MAX_CONSTANT_ARGS>();
         const bool constant_scene = scene.bytes() + 64 <= constant_limit && constant_args >= 3;
-        const std::string options = std::string("-cl-std=CL1.2 -cl-mad-enable -DORB_SCENE_SPACE=") +
-                                    (constant_scene ? "__constant" : "__global");
+        std::string options = std::string("-cl-std=CL1.2 -cl-mad-enable -DORB_SCENE_SPACE=") +
+                              (constant_scene ? "__constant" : "__global") + (info.is_cpu ? " -DORB_CPU=1" : "");
+        if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
         program = build_program(context, device, program_source(config.kernel_dir), options,
                                 config.use_binary_cache)
                       .program;
