@@ -68,7 +68,10 @@ bool is_float_type(OIIO::TypeDesc t) {
            t.basetype == OIIO::TypeDesc::DOUBLE;
 }
 
+// OIIO's messages can span lines (one per library layer); the first says it.
 std::string clean_error(std::string message) {
+    if (const auto newline = message.find('\n'); newline != std::string::npos && newline > 0)
+        message.erase(newline);
     while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
     return message.empty() ? "unknown error" : message;
 }

@@ -1,0 +1,206 @@
+// orb-diff: compare two images with metrics and gates a CI job can rely on.
+// Exit status: 0 pass (or warn), 1 fail (or warn with --strict), 2 error.
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gates.h"
+#include "orb/cli/io.h"
+#include "orb/cli/messages.h"
+#include "orb/cli/tool_main.h"
+#include "orb/image/color_options.h"
+#include "orb/image/compare.h"
+#include "orb/image/flip.h"
+#include "orb/image/load.h"
+#include "orb/image/write.h"
+#include "report.h"
+
+namespace fs = std::filesystem;
+using namespace orb::image;
+using namespace orb::diff;
+using orb::cli::UsageError;
+
+namespace {
+
+constexpr int kExitPass = 0, kExitFail = 1, kExitError = 2;
+
+struct Settings {
+    std::string reference, test;
+    std::string pass = "beauty";
+    bool all_passes = false;
+    ColorOptions color;
+    Gates gates;
+    bool strict = false;
+    std::string diff_image;
+    std::string json;
+    double ppd = 0;
+};
+
+void add_gate_options(CLI::App& app, GateSet& g, const std::string& kind) {
+    const std::string verb = kind == "fail" ? "Fail" : "Warn";
+    app.add_option("--" + kind + "-rmse", g.rmse, verb + " if RMSE exceeds X")->option_text("X");
+    app.add_option("--" + kind + "-relmse", g.relmse, verb + " if relative MSE exceeds X")->option_text("X");
+    app.add_option("--" + kind + "-flip", g.flip, verb + " if mean FLIP exceeds X (colour passes)")->option_text("X");
+    app.add_option("--" + kind + "-percent", g.percent,
+                   verb + " if more than P% of pixels differ by more than --" + kind + "-threshold")
+        ->option_text("P");
+    app.add_option("--" + kind + "-threshold", g.threshold,
+                   "Per-channel difference that counts a pixel as different (default 1e-6)")
+        ->option_text("T");
+}
+
+// OUT for one pass; OUT.<pass>.ext when several passes are compared.
+std::string diff_image_path(const std::string& path, const std::string& pass, bool several) {
+    if (!several) return path;
+    fs::path p(path);
+    return (p.parent_path() / (p.stem().string() + "." + pass + p.extension().string())).string();
+}
+
+void write_heatmap(const std::string& path, const Image& heatmap) {
+    WriteOptions options;
+    options.format = path == "-" ? "png" : extension_of(path);
+    options = checked_write_options(options);
+    orb::cli::write_output_via_file(
+        path, [&](const std::string& tmp) { write_image_file(tmp, heatmap, options); }, "." + options.format);
+}
+
+std::vector<std::string> passes_to_compare(const Settings& s, const LoadedImage& a, const LoadedImage& b) {
+    if (!s.all_passes) return {s.pass};
+    const auto in_a = available_passes(a.image), in_b = available_passes(b.image);
+    std::vector<std::string> common;
+    for (const auto& p : in_a) {
+        if (std::find(in_b.begin(), in_b.end(), p) != in_b.end())
+            common.push_back(p);
+        else
+            orb::cli::warning("pass '" + p + "' is only in " + display_name(a.source) + "; not compared");
+    }
+    for (const auto& p : in_b)
+        if (std::find(in_a.begin(), in_a.end(), p) == in_a.end())
+            orb::cli::warning("pass '" + p + "' is only in " + display_name(b.source) + "; not compared");
+    if (common.empty()) throw orb::InputError("the images have no pass in common");
+    return common;
+}
+
+int run(const Settings& s) {
+    if (s.color.list) {
+        std::cout << load_color_config(s.color).listing();
+        return kExitPass;
+    }
+    if (s.reference.empty() || s.test.empty()) throw UsageError("need two images: orb-diff A B (see --help)");
+    if (s.reference == "-" && s.test == "-") throw UsageError("only one of the two images can be '-' (stdin)");
+    if (s.all_passes && s.pass != "beauty") throw UsageError("--pass and --all-passes exclude each other");
+    const bool through_display = !s.color.display.empty() || !s.color.view.empty();
+    if (!s.color.look.empty() && !through_display) throw UsageError("--look needs --display/--view");
+
+    const ColorConfig config = load_color_config(s.color);
+    const LoadedImage a = load_image(s.reference);
+    const LoadedImage b = load_image(s.test);
+
+    CompareSettings cs;
+    cs.config = &config;
+    cs.through_display = through_display;
+    cs.input_space = s.color.input_space;
+    if (through_display) {
+        DisplayView request{config.scene_linear(), s.color.display, s.color.view, s.color.look, 0.0};
+        cs.view = resolve_display_view(config, request);
+    }
+    cs.ppd = s.ppd;
+    cs.thresholds = {s.gates.fail_threshold(), s.gates.warn_threshold()};
+    cs.want_heatmap = !s.diff_image.empty();
+
+    const std::vector<std::string> passes = passes_to_compare(s, a, b);
+    if (s.diff_image == "-" && passes.size() > 1) throw UsageError("--diff-image - (stdout) needs a single pass");
+
+    std::vector<PassResult> results;
+    Verdict overall = Verdict::Pass;
+    for (const std::string& pass : passes) {
+        PassResult r{compare_pass(a, b, pass, cs), {}};
+        r.outcome = judge(r.comparison, s.gates);
+        overall = std::max(overall, r.outcome.verdict);
+        results.push_back(std::move(r));
+    }
+
+    if (!s.diff_image.empty())
+        for (const auto& r : results)
+            write_heatmap(diff_image_path(s.diff_image, r.comparison.pass, passes.size() > 1), *r.comparison.heatmap);
+
+    const int code = overall == Verdict::Fail ? kExitFail
+                     : overall == Verdict::Warn && s.strict ? kExitFail
+                                                             : kExitPass;
+    if (!orb::cli::quiet()) {
+        // With the JSON report on stdout, the summary moves to stderr.
+        std::ostream& out = s.json == "-" ? std::cerr : std::cout;
+        for (const auto& r : results) out << summary_line(r, s.gates) << "\n";
+        out << "verdict: " << verdict_name(overall) << (overall == Verdict::Warn && s.strict ? " (strict: fails)" : "")
+            << "\n";
+        out.flush();
+    }
+    if (!s.json.empty()) {
+        nlohmann::json report = {{"reference", display_name(s.reference)},
+                                 {"test", display_name(s.test)},
+                                 {"config", config.source()},
+                                 {"comparison",
+                                  {{"through_display", through_display},
+                                   {"display", through_display ? nlohmann::json(cs.view.display) : nlohmann::json(nullptr)},
+                                   {"view", through_display ? nlohmann::json(cs.view.view) : nlohmann::json(nullptr)},
+                                   {"look", cs.view.look.empty() ? nlohmann::json(nullptr) : nlohmann::json(cs.view.look)},
+                                   {"flip_ppd", s.ppd > 0 ? s.ppd : default_flip_ppd()}}},
+                                 {"thresholds", gates_json(s.gates)},
+                                 {"strict", s.strict},
+                                 {"passes", nlohmann::json::array()},
+                                 {"verdict", verdict_name(overall)},
+                                 {"exit_code", code}};
+        for (const auto& r : results) report["passes"].push_back(pass_json(r, s.gates));
+        orb::cli::write_output(s.json, report.dump(2) + "\n");
+    }
+    return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Settings s;
+    return orb::cli::run_tool(
+        argc, argv, "orb-diff", "Compare two images (any OIIO format) with metrics, FLIP and CI gates",
+        [&](CLI::App& app) {
+            app.add_option("reference", s.reference, "Reference image A ('-' = stdin)");
+            app.add_option("test", s.test, "Test image B ('-' = stdin)");
+            app.add_option("--pass", s.pass, "Pass to compare (default beauty): direct, indirect, albedo, normal, depth, ...")
+                ->option_text("NAME");
+            app.add_flag("--all-passes", s.all_passes, "Compare every pass the two images have in common");
+            add_color_options(app, s.color);
+            add_gate_options(app, s.gates.fail, "fail");
+            add_gate_options(app, s.gates.warn, "warn");
+            app.add_flag("--strict", s.strict, "Treat warnings as failures (exit 1)");
+            app.add_option("--diff-image", s.diff_image, "Write an error heatmap (FLIP, magma colour map)")
+                ->option_text("OUT");
+            app.add_option("--json", s.json, "Write a JSON report ('-' = stdout)")->option_text("FILE");
+            app.add_option("--ppd", s.ppd, "FLIP observer: pixels per degree (default 67, a 4K 0.7 m monitor at 0.7 m)")
+                ->option_text("PPD");
+            app.footer(
+                "Examples:\n"
+                "  orb-diff reference.exr render.exr --fail-flip 0.05 --warn-flip 0.02\n"
+                "  orb-diff golden.png out.png --fail-percent 0.5 --fail-threshold 0.02 --diff-image diff.png\n"
+                "  orb-diff a.exr b.exr --all-passes --fail-rmse 0.01 --json report.json\n"
+                "  orb-diff a.exr b.exr --display sRGB --view Filmic --fail-flip 0.1\n"
+                "  orb-render scene.json -o - | orb-diff golden.exr - --fail-relmse 0.001\n"
+                "Metrics run over R,G,B (alpha is not compared). Without any --fail-* option, any\n"
+                "channel differing by more than 1e-6 fails (as with idiff).\n"
+                "Exit status: 0 pass (also warn, unless --strict), 1 fail, 2 error (missing, unreadable or\n"
+                "truncated image, different sizes, a pass missing in one image, bad usage).");
+        },
+        [&]() -> int {
+            // run_tool maps bad input to 1, but for orb-diff 1 means "the images differ":
+            // every error must be 2 so a CI job can tell the two apart.
+            try {
+                return run(s);
+            } catch (const UsageError&) {
+                throw;
+            } catch (const std::exception& e) {
+                orb::cli::error(e.what());
+                return kExitError;
+            }
+        });
+}
