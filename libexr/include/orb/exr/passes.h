@@ -1,0 +1,32 @@
+// The layers ("passes") orb-render can write, their EXR channel names, and
+// the comma-separated form users type (--passes beauty,albedo).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace orb::exr {
+
+enum class Pass { Beauty, Direct, Indirect, Emission, Albedo, Normal, Depth, Variance, Id };
+
+// Every pass, in the order they are documented and written.
+const std::vector<Pass>& all_passes();
+
+const char* pass_name(Pass pass);  // "beauty", "direct", ...
+
+// Channels a pass writes, e.g. Beauty -> R,G,B,A; Normal -> N.X,N.Y,N.Z.
+std::vector<std::string> pass_channels(Pass pass);
+
+// Helper channels written next to a pass so that --resume recovers the film's
+// sums exactly (Normal -> orb.normalLength). Always FLOAT.
+std::vector<std::string> pass_resume_channels(Pass pass);
+
+// Parses "beauty,albedo" (or "all"); duplicates are dropped, the result is in
+// all_passes() order. Throws std::invalid_argument naming the bad entry.
+std::vector<Pass> parse_passes(const std::string& list);
+
+std::string format_passes(const std::vector<Pass>& passes);  // "beauty,albedo"
+
+bool contains(const std::vector<Pass>& passes, Pass pass);
+
+}  // namespace orb::exr

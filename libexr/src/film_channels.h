@@ -1,0 +1,28 @@
+// Converting between the film's sums and the per-pixel values stored in the
+// EXR (means, the variance of the mean, normalised normals), and back.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "orb/exr/passes.h"
+#include "orb/render/film.h"
+
+namespace orb::exr::detail {
+
+struct Plane {
+    std::string name;
+    bool always_float = false;  // Z, id and resume helpers stay FLOAT under --half
+    std::vector<float> values;  // one float per pixel, row-major, top row first
+};
+
+// The channels of `passes`, plus their resume helpers, in a fixed order.
+std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes);
+
+// Recovers the sums of `passes` from planes read back (every channel of each
+// pass, and its helpers, present). `film` is sized and has its sample count.
+void planes_to_film(const std::map<std::string, std::vector<float>>& planes, const std::vector<Pass>& passes,
+                    render::Film& film);
+
+}  // namespace orb::exr::detail

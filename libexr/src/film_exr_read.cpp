@@ -1,0 +1,171 @@
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfDoubleAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfStandardAttributes.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfTestFile.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+#include "exr_attributes.h"
+#include "film_channels.h"
+#include "orb/exr/film_exr.h"
+#include "orb/scene/error.h"
+
+namespace orb::exr {
+namespace {
+
+// Guards the allocation below against a hostile header; 2^28 pixels is far
+// beyond any image Orb renders in one piece.
+constexpr long long kMaxPixels = 1LL << 28;
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) {
+    throw InputError(path + ": " + message);
+}
+
+template <typename Attribute>
+const Attribute& required(const Imf::Header& header, const char* name, const std::string& path) {
+    const Attribute* attribute = header.findTypedAttribute<Attribute>(name);
+    if (!attribute) fail(path, std::string("missing or mistyped header attribute ") + name);
+    return *attribute;
+}
+
+Matrix44 from_imath(const Imath::M44f& m) {
+    Matrix44 r{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r[i][j] = m[i][j];
+    return r;
+}
+
+std::uint64_t parse_seed(const std::string& text, const std::string& path) {
+    std::size_t used = 0;
+    unsigned long long value = 0;
+    try {
+        value = std::stoull(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (text.empty() || used != text.size() || text[0] == '-')
+        fail(path, std::string(attr::kSeed) + " is not an unsigned integer: '" + text + "'");
+    return value;
+}
+
+void check_readable(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
+    if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, expected an EXR file");
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) fail(path, std::string("cannot open: ") + std::strerror(errno));
+    bool tiled = false, deep = false, multipart = false;
+    if (!Imf::isOpenExrFile(path.c_str(), tiled, deep, multipart)) fail(path, "not an OpenEXR file");
+    if (deep) fail(path, "is a deep EXR, not an orb-render image");
+}
+
+ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
+    ExrMetadata m;
+    m.target_spp = static_cast<std::uint64_t>(std::max(0, required<Imf::IntAttribute>(header, attr::kTargetSpp, path).value()));
+    m.seed = parse_seed(required<Imf::StringAttribute>(header, attr::kSeed, path).value(), path);
+    m.max_depth = required<Imf::IntAttribute>(header, attr::kMaxDepth, path).value();
+    m.mode = required<Imf::StringAttribute>(header, attr::kMode, path).value();
+    if (m.mode != "global" && m.mode != "direct")
+        fail(path, std::string(attr::kMode) + " must be global or direct, got '" + m.mode + "'");
+    m.device = required<Imf::StringAttribute>(header, attr::kDevice, path).value();
+    m.render_seconds = required<Imf::DoubleAttribute>(header, attr::kRenderSeconds, path).value();
+    m.scene_file = required<Imf::StringAttribute>(header, attr::kSceneFile, path).value();
+    m.scene_hash = required<Imf::StringAttribute>(header, attr::kSceneHash, path).value();
+    m.scene_time = required<Imf::DoubleAttribute>(header, attr::kSceneTime, path).value();
+    m.version = required<Imf::StringAttribute>(header, attr::kVersion, path).value();
+    if (!Imf::hasWorldToCamera(header)) fail(path, "missing header attribute worldToCamera");
+    if (!Imf::hasWorldToNDC(header)) fail(path, "missing header attribute worldToNDC");
+    m.world_to_camera = from_imath(Imf::worldToCamera(header));
+    m.world_to_ndc = from_imath(Imf::worldToNDC(header));
+    return m;
+}
+
+}  // namespace
+
+ExrFilm read_film_exr(const std::string& path) {
+    check_readable(path);
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& header = file.header();
+
+        const auto* spp = header.findTypedAttribute<Imf::IntAttribute>(attr::kSpp);
+        if (!spp)
+            fail(path, "not an orb-render image (no orb:spp header attribute); --resume needs an EXR written by orb-render");
+        const auto& format = required<Imf::IntAttribute>(header, attr::kFilmFormat, path);
+        if (format.value() != kFilmFormatVersion)
+            fail(path, "film format " + std::to_string(format.value()) + " is not the one this Orb reads (" +
+                           std::to_string(kFilmFormatVersion) + ")");
+        if (spp->value() < 1) fail(path, "orb:spp must be at least 1, got " + std::to_string(spp->value()));
+
+        const Imath::Box2i window = header.dataWindow();
+        if (window != header.displayWindow() || window.min.x != 0 || window.min.y != 0)
+            fail(path, "data window differs from the display window at the origin; not an orb-render image");
+        const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
+        const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
+        if (width < 1 || height < 1 || width * height > kMaxPixels) fail(path, "implausible image size");
+
+        ExrFilm result;
+        result.metadata = read_metadata(header, path);
+        try {
+            result.passes = parse_passes(required<Imf::StringAttribute>(header, attr::kPasses, path).value());
+        } catch (const std::invalid_argument& e) {
+            fail(path, std::string(attr::kPasses) + ": " + e.what());
+        }
+
+        // Every channel the listed passes need, read as FLOAT whatever it is stored as.
+        std::map<std::string, std::vector<float>> planes;
+        Imf::FrameBuffer frame;
+        const std::size_t pixels = static_cast<std::size_t>(width * height);
+        for (Pass pass : result.passes) {
+            std::vector<std::string> names = pass_channels(pass);
+            for (const auto& helper : pass_resume_channels(pass)) names.push_back(helper);
+            for (const std::string& name : names) {
+                const Imf::Channel* channel = header.channels().findChannel(name);
+                if (!channel) fail(path, "channel " + name + " of pass " + pass_name(pass) + " is missing");
+                if (channel->type == Imf::HALF) result.half = true;
+                if (channel->type == Imf::UINT) fail(path, "channel " + name + " is UINT, expected FLOAT or HALF");
+                if (channel->xSampling != 1 || channel->ySampling != 1) fail(path, "channel " + name + " is subsampled");
+                auto& values = planes[name];
+                values.assign(pixels, 0.0f);
+                frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
+                                              sizeof(float) * static_cast<std::size_t>(width)));
+            }
+        }
+        if (!file.isComplete()) fail(path, "truncated EXR (some scanlines are missing)");
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+
+        render::Film& film = result.film;
+        film.resize(static_cast<int>(width), static_cast<int>(height));
+        film.samples_per_pixel = static_cast<std::uint64_t>(spp->value());
+        detail::planes_to_film(planes, result.passes, film);
+        return result;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        fail(path, std::string("unreadable or truncated EXR: ") + e.what());
+    }
+}
+
+void require_resumable(const ExrFilm& file, const std::vector<Pass>& wanted, const std::string& path) {
+    if (file.half)
+        fail(path, "was written with --half; resuming within float rounding needs FLOAT channels (render without --half to resume)");
+    for (Pass pass : wanted)
+        if (!contains(file.passes, pass))
+            fail(path, std::string("has no ") + pass_name(pass) + " pass to continue (it holds " +
+                           format_passes(file.passes) + ")");
+    if (contains(wanted, Pass::Variance) && !contains(file.passes, Pass::Beauty))
+        fail(path, "the variance pass cannot be continued without the beauty pass (R,G,B) in the same file");
+}
+
+}  // namespace orb::exr

@@ -1,0 +1,88 @@
+#include "orb/render/progressive.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace orb::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_between(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+}
+
+// Samples for the next pass: one for the very first pass, so a first image
+// (checkpoint) exists as early as possible; then the device's suggestion,
+// shrunk so a time budget is not overrun by much, never past the target.
+std::uint64_t next_pass_samples(const Renderer& renderer, const ProgressiveLimits& limits, const ProgressState& state,
+                                double seconds_per_sample_per_pixel) {
+    const std::uint64_t remaining = limits.target_spp - state.spp;
+    std::uint64_t samples =
+        state.pass == 0 ? 1 : static_cast<std::uint64_t>(std::max(1, renderer.suggested_samples_per_pass()));
+    if (limits.max_seconds > 0 && seconds_per_sample_per_pixel > 0) {
+        const double time_left = limits.max_seconds - state.elapsed_seconds;
+        const double affordable = std::floor(time_left / seconds_per_sample_per_pixel);
+        samples = std::min<std::uint64_t>(samples, static_cast<std::uint64_t>(std::max(1.0, affordable)));
+    }
+    return std::min(samples, remaining);
+}
+
+}  // namespace
+
+StopReason render_progressively(Renderer& renderer, const ProgressiveLimits& limits,
+                                const ProgressiveCallbacks& callbacks, const std::atomic<bool>& stop_requested,
+                                ProgressState* final_state) {
+    const Clock::time_point start = Clock::now();
+    const std::uint64_t start_spp = renderer.samples_per_pixel();
+    const double pixels = static_cast<double>(renderer.config().width) * renderer.config().height;
+
+    ProgressState state;
+    state.spp = start_spp;
+    state.target_spp = limits.target_spp;
+
+    Clock::time_point last_checkpoint = start;
+    bool checkpointed = false;
+    double seconds_per_sample_per_pixel = 0;  // from the latest pass
+
+    auto reached = [&](StopReason& reason) {
+        if (stop_requested.load()) return reason = StopReason::Interrupted, true;
+        if (state.spp >= limits.target_spp) return reason = StopReason::ReachedSpp, true;
+        if (limits.max_seconds > 0 && state.elapsed_seconds >= limits.max_seconds)
+            return reason = StopReason::ReachedTime, true;
+        return false;
+    };
+
+    StopReason reason = StopReason::ReachedSpp;
+    while (!reached(reason)) {
+        const std::uint64_t samples = next_pass_samples(renderer, limits, state, seconds_per_sample_per_pixel);
+        const Clock::time_point pass_start = Clock::now();
+        renderer.render_pass(static_cast<int>(std::min<std::uint64_t>(samples, 1u << 30)));
+        const Clock::time_point pass_end = Clock::now();
+
+        seconds_per_sample_per_pixel = seconds_between(pass_start, pass_end) / static_cast<double>(samples);
+        state.pass += 1;
+        state.spp = renderer.samples_per_pixel();
+        state.elapsed_seconds = seconds_between(start, pass_end);
+        state.samples_per_second =
+            state.elapsed_seconds > 0 ? static_cast<double>(state.spp - start_spp) * pixels / state.elapsed_seconds : 0;
+        if (callbacks.on_pass) callbacks.on_pass(state);
+
+        // The final image is written by the caller once the loop ends, so a
+        // checkpoint is only worth its time while more passes will follow.
+        StopReason ignored;
+        if (limits.checkpoint_seconds > 0 && !reached(ignored) &&
+            (!checkpointed || seconds_between(last_checkpoint, Clock::now()) >= limits.checkpoint_seconds)) {
+            if (callbacks.on_checkpoint) callbacks.on_checkpoint(state);
+            checkpointed = true;
+            last_checkpoint = Clock::now();
+        }
+    }
+
+    state.elapsed_seconds = seconds_between(start, Clock::now());
+    if (final_state) *final_state = state;
+    return reason;
+}
+
+}  // namespace orb::render

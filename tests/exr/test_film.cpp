@@ -1,0 +1,75 @@
+#include "test_film.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <random>
+
+#include <unistd.h>
+
+namespace orb::exr::testing {
+
+render::Film synthetic_film(int width, int height, std::uint64_t spp, unsigned seed) {
+    render::Film film;
+    film.resize(width, height);
+    film.samples_per_pixel = spp;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const float n = static_cast<float>(spp);
+    for (std::size_t i = 0; i < film.pixel_count(); ++i) {
+        const bool miss = i % 7 == 3;
+        film.alpha[i] = miss ? 0.0f : n * (i % 5 == 0 ? 0.5f : 1.0f);
+        film.depth[i] = miss ? std::numeric_limits<float>::infinity() : 1.0f + 10.0f * unit(rng);
+        film.object_id[i] = miss ? -1.0f : static_cast<float>(i % 4);
+        for (int c = 0; c < 3; ++c) {
+            const std::size_t k = i * 3 + c;
+            if (miss) continue;
+            film.direct[k] = n * unit(rng);
+            film.indirect[k] = n * 0.3f * unit(rng);
+            film.emission[k] = (i % 11 == 0) ? n * 5.0f : 0.0f;
+            film.radiance[k] = film.direct[k] + film.indirect[k] + film.emission[k];
+            const float mean = film.radiance[k] / n;
+            film.radiance_sq[k] = n * mean * mean * (1.0f + unit(rng));
+            film.albedo[k] = n * unit(rng);
+            film.normal[k] = n * (unit(rng) - 0.5f);
+        }
+    }
+    return film;
+}
+
+ExrMetadata synthetic_metadata() {
+    ExrMetadata m;
+    m.target_spp = 64;
+    m.seed = 18446744073709551557ull;  // needs all 64 bits
+    m.max_depth = 6;
+    m.mode = "direct";
+    m.device = "Test Device (Test Platform)";
+    m.render_seconds = 12.5;
+    m.scene_file = "scenes/cornell.json";
+    m.scene_hash = "0123456789abcdef";
+    m.version = "0.1.0";
+    m.scene_time = 0.25;
+    orb::Camera camera;
+    m.world_to_camera = world_to_camera(camera);
+    m.world_to_ndc = world_to_ndc(camera, 8, 6);
+    return m;
+}
+
+std::string scratch_path(const std::string& name) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                ("orb-exr-tests-" + std::to_string(::getpid())) /
+                                (std::string(info->test_suite_name()) + "." + info->name());
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+}
+
+bool within_float_rounding(double a, double b, double ulps) {
+    if (std::isinf(a) || std::isinf(b)) return a == b;
+    const double scale = std::max({std::fabs(a), std::fabs(b), 1e-30});
+    return std::fabs(a - b) <= ulps * std::numeric_limits<float>::epsilon() * scale;
+}
+
+}  // namespace orb::exr::testing

@@ -1,0 +1,80 @@
+#include "progress_reporter.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+
+#include "orb/cli/messages.h"
+
+namespace orb::render_cli {
+
+std::string format_rate(double samples_per_second) {
+    const char* units[] = {"", "k", "M", "G", "T"};
+    int unit = 0;
+    double value = samples_per_second;
+    while (value >= 1000.0 && unit < 4) {
+        value /= 1000.0;
+        ++unit;
+    }
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g %ssamples/s", value, units[unit]);
+    return text;
+}
+
+std::string format_duration(double seconds) {
+    char text[64];
+    if (!std::isfinite(seconds) || seconds < 0) return "?";
+    if (seconds < 60)
+        std::snprintf(text, sizeof text, "%.1f s", seconds);
+    else if (seconds < 3600)
+        std::snprintf(text, sizeof text, "%d min %02d s", int(seconds) / 60, int(seconds) % 60);
+    else
+        std::snprintf(text, sizeof text, "%d h %02d min", int(seconds) / 3600, int(seconds) / 60 % 60);
+    return text;
+}
+
+ProgressReporter::ProgressReporter(bool quiet, double pixels, double time_limit)
+    : enabled_(!quiet), terminal_(::isatty(STDERR_FILENO) == 1), pixels_(pixels), time_limit_(time_limit) {}
+
+std::string ProgressReporter::status_line(const render::ProgressState& s) const {
+    // This run's samples per pixel per second gives the time to the target;
+    // a time limit ends the render sooner if it comes first.
+    const double spp_per_second = pixels_ > 0 ? s.samples_per_second / pixels_ : 0;
+    double eta = spp_per_second > 0 ? double(s.target_spp - std::min(s.spp, s.target_spp)) / spp_per_second
+                                    : std::numeric_limits<double>::infinity();
+    if (time_limit_ > 0) eta = std::min(eta, std::max(0.0, time_limit_ - s.elapsed_seconds));
+    const double fraction = s.target_spp ? std::min(1.0, double(s.spp) / double(s.target_spp)) : 1.0;
+
+    char text[256];
+    std::snprintf(text, sizeof text, "pass %d  %llu/%llu spp (%3.0f%%)  %s  elapsed %s  ETA %s", s.pass,
+                  static_cast<unsigned long long>(s.spp), static_cast<unsigned long long>(s.target_spp),
+                  100.0 * fraction, format_rate(s.samples_per_second).c_str(),
+                  format_duration(s.elapsed_seconds).c_str(), format_duration(eta).c_str());
+    return text;
+}
+
+void ProgressReporter::on_pass(const render::ProgressState& state) {
+    if (!enabled_ || !terminal_) return;
+    // Redraw at most ~10 times a second: short GPU passes come far faster.
+    const auto now = std::chrono::steady_clock::now();
+    if (line_open_ && now - last_draw_ < std::chrono::milliseconds(100)) return;
+    last_draw_ = now;
+    std::cerr << "\r\033[K" << status_line(state) << std::flush;
+    line_open_ = true;
+}
+
+void ProgressReporter::on_checkpoint(const render::ProgressState& state, const std::string& output) {
+    if (!enabled_ || terminal_) return;
+    cli::info("checkpoint " + output + ": " + status_line(state));
+}
+
+void ProgressReporter::finish(const render::ProgressState& final_state) {
+    if (line_open_) std::cerr << "\r\033[K" << status_line(final_state) << "\n" << std::flush;
+    line_open_ = false;
+}
+
+}  // namespace orb::render_cli

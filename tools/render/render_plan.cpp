@@ -1,0 +1,127 @@
+#include "render_plan.h"
+
+#include <filesystem>
+#include <sstream>
+
+#include "orb/cli/io.h"
+#include "orb/cli/messages.h"
+#include "orb/cli/paths.h"
+#include "orb/scene/animation.h"
+#include "orb/scene/error.h"
+#include "orb/scene/import.h"
+#include "orb/scene/scene_json.h"
+
+namespace orb::render_cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* mode_name(render::IntegratorMode mode) {
+    return mode == render::IntegratorMode::Direct ? "direct" : "global";
+}
+
+render::IntegratorMode parse_mode(const std::string& name) {
+    return name == "direct" ? render::IntegratorMode::Direct : render::IntegratorMode::Global;
+}
+
+Scene import_from(const std::string& path, std::string& label) {
+    label = cli::is_stdio(path) ? "<stdin>" : path;
+    const std::string bytes = cli::read_input(path);
+    const std::string base_dir =
+        cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
+    ImportResult imported = import_scene(bytes, label, base_dir);
+    for (const std::string& message : imported.warnings) cli::warning(message);
+    return std::move(imported.scene);
+}
+
+// A setting the resumed file fixes may be repeated on the command line, but
+// only with the same value.
+template <typename T>
+void require_same(const std::optional<T>& given, const T& in_file, const std::string& option,
+                  const std::string& attribute, const std::string& path) {
+    if (given && *given != in_file) {
+        std::ostringstream message;
+        message << path << ": " << option << " " << *given << " differs from the resumed render's " << attribute
+                << " " << in_file << "; drop " << option << " to continue it";
+        throw InputError(message.str());
+    }
+}
+
+void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& plan) {
+    const std::string& path = o.resume;
+    exr::ExrFilm file = exr::read_film_exr(path);
+    const exr::ExrMetadata& m = file.metadata;
+
+    require_same(o.time_at, m.scene_time, "--time-at", "orb:sceneTime", path);
+    plan.scene_time = m.scene_time;
+    plan.scene = scene_at_time(imported, plan.scene_time);
+    plan.scene_hash = scene_content_hash(plan.scene);
+    if (plan.scene_hash != m.scene_hash)
+        throw InputError(path + ": was rendered from a different scene (orb:sceneHash " + m.scene_hash + ", from " +
+                         m.scene_file + "); " + plan.scene_label + " hashes to " + plan.scene_hash);
+
+    require_same(o.width, file.film.width, "--width", "width", path);
+    require_same(o.height, file.film.height, "--height", "height", path);
+    require_same(o.seed, m.seed, "--seed", "orb:seed", path);
+    require_same(o.mode, m.mode, "--mode", "orb:mode", path);
+    require_same(o.max_depth, m.max_depth, "--max-depth", "orb:maxDepth", path);
+    plan.config.width = file.film.width;
+    plan.config.height = file.film.height;
+    plan.config.seed = m.seed;
+    plan.config.mode = parse_mode(m.mode);
+    plan.config.max_depth = m.max_depth;
+
+    plan.target_spp = o.spp ? *o.spp : m.target_spp;
+    if (plan.target_spp < file.film.samples_per_pixel)
+        throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
+                         " samples per pixel, more than the " + std::to_string(plan.target_spp) + " asked for");
+    plan.passes = o.passes ? exr::parse_passes(*o.passes) : file.passes;
+    exr::require_resumable(file, plan.passes, path);
+    plan.resumed = std::move(file);
+}
+
+}  // namespace
+
+RenderPlan make_render_plan(const RenderOptions& o) {
+    RenderPlan plan;
+    const Scene imported = import_from(o.scene, plan.scene_label);
+
+    plan.config.device = o.device;
+    plan.config.kernel_dir = o.kernel_dir;
+    plan.config.use_binary_cache = !o.no_cache;
+    plan.half = o.half;
+
+    if (!o.resume.empty()) {
+        apply_resume(o, imported, plan);
+        return plan;
+    }
+    plan.scene_time = o.time_at.value_or(0.0);
+    plan.scene = scene_at_time(imported, plan.scene_time);
+    plan.scene_hash = scene_content_hash(plan.scene);
+    plan.config.width = o.width.value_or(plan.scene.render.width);
+    plan.config.height = o.height.value_or(plan.scene.render.height);
+    plan.config.seed = o.seed.value_or(0);
+    plan.config.mode = parse_mode(o.mode.value_or("global"));
+    plan.config.max_depth = o.max_depth.value_or(plan.scene.render.max_depth);
+    plan.target_spp = o.spp ? *o.spp : static_cast<std::uint64_t>(plan.scene.render.spp);
+    plan.passes = o.passes ? exr::parse_passes(*o.passes) : exr::all_passes();
+    return plan;
+}
+
+exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
+    exr::ExrMetadata m;
+    m.target_spp = plan.target_spp;
+    m.seed = plan.config.seed;
+    m.max_depth = plan.config.max_depth;
+    m.mode = mode_name(plan.config.mode);
+    m.scene_file = plan.scene_label;
+    m.scene_hash = plan.scene_hash;
+    m.scene_time = plan.scene_time;
+    m.version = cli::version_string();
+    m.world_to_camera = exr::world_to_camera(plan.scene.camera);
+    m.world_to_ndc = exr::world_to_ndc(plan.scene.camera, plan.config.width, plan.config.height);
+    if (plan.resumed) m.render_seconds = plan.resumed->metadata.render_seconds;
+    return m;
+}
+
+}  // namespace orb::render_cli
