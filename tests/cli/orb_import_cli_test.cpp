@@ -166,6 +166,9 @@ struct BadInput {
     const char* expected_message;
 };
 
+// Test output names the case rather than dumping the struct's bytes.
+void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.name; }
+
 class OrbImportBadInput : public OrbImportCli, public ::testing::WithParamInterface<BadInput> {};
 
 TEST_P(OrbImportBadInput, FailsCleanlyLeavingNoFileAndClobberingNothing) {
