@@ -50,7 +50,7 @@ seeds_for() {
   case "$1" in
     fuzz_scn) echo "$root/scenes" ;;
     fuzz_scene_json) echo "$root/tests/data/scene/valid" ;;
-    fuzz_gltf) echo "$root/tests/data/gltf" ;;
+    fuzz_gltf) echo "$root/tests/data/gltf-validator-corpus" ;;
   esac
   return 0
 }

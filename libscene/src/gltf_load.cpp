@@ -135,10 +135,13 @@ tinygltf::Model load_model(std::string_view bytes, const std::string& source, co
     if (json_depth(json_text) > kMaxJsonDepth)
         throw InputError(source + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
 
+    // No base directory: no external file is ever read (fuzzing, embedded use).
     Sandbox sandbox;
-    std::error_code ec;
-    sandbox.root = fs::weakly_canonical(fs::absolute(base_dir.empty() ? fs::path(".") : fs::path(base_dir), ec), ec);
-    if (ec) sandbox.root.clear();
+    if (!base_dir.empty()) {
+        std::error_code ec;
+        sandbox.root = fs::weakly_canonical(fs::absolute(fs::path(base_dir), ec), ec);
+        if (ec) sandbox.root.clear();
+    }
 
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&sandbox_file_exists, &sandbox_expand, &sandbox_read, &refuse_write, &sandbox});
