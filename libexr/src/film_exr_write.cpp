@@ -85,6 +85,9 @@ void write_film_exr(const std::string& path, const render::Film& film, const Exr
 
     Imf::Header header(film.width, film.height);
     header.compression() = to_imf(options.compression);
+    // Noisy float mantissas barely compress harder at higher levels, and a
+    // checkpoint written while rendering must be quick: the fastest level.
+    header.zipCompressionLevel() = 1;
     add_metadata(header, film, metadata, options.passes);
 
     // OpenEXR's writer does not convert pixel types, so HALF channels get

@@ -1,0 +1,45 @@
+// Shared set-up for the orb-render command-line tests: a scratch folder per
+// test, small scenes written with the scene library, and the executable.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "exr_channels.h"
+#include "orb/scene/scene.h"
+#include "process.h"
+
+namespace orb::test {
+
+// A small open scene: a floor, a diffuse ball, a mirror ball and a sphere
+// light, seen from the front with sky (misses) at the top, so every pass has
+// something in it. 32x24, 4 spp by default.
+Scene small_scene();
+
+class RenderCli : public ::testing::Test {
+protected:
+    void SetUp() override;
+
+    std::string path(const std::string& name) const;       // inside this test's scratch folder
+    std::string write_scene(const Scene& scene, const std::string& name = "scene.json") const;
+
+    // orb-render with these arguments (stdin from /dev/null unless given).
+    ProcessResult render(const std::vector<std::string>& args, const std::string& stdin_path = "",
+                         const std::string& stdout_path = "") const;
+
+    // Files in the scratch folder, to check nothing partial was left behind.
+    std::vector<std::string> files() const;
+
+    std::string dir_;
+};
+
+std::string render_exe();
+
+// Mean-valued channels of two renders agree within float rounding: the
+// relative difference allowed covers the sums' different addition order
+// (resume, pass splits) and the mean*n recovery, a few dozen float ulps.
+void expect_same_within_float_rounding(const exr::testing::RawExr& a, const exr::testing::RawExr& b);
+
+}  // namespace orb::test

@@ -1,0 +1,86 @@
+// --resume: continuing a render gives the uninterrupted render's image, and
+// a file that is not the same render is refused.
+#include <OpenEXR/ImfRgbaFile.h>
+
+#include <filesystem>
+
+#include "cli_fixture.h"
+#include "orb/exr/film_exr.h"
+
+using namespace orb::test;
+using orb::exr::testing::read_raw_exr;
+
+TEST_F(RenderCli, ResumeEndsAtTheUninterruptedImage) {
+    const std::string scene = write_scene(small_scene());
+    ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "9", "--seed", "5"}).exit_code, 0);
+    ASSERT_EQ(render({scene, "-o", path("part.exr"), "--spp", "4", "--seed", "5"}).exit_code, 0);
+    const auto resumed = render({scene, "--resume", path("part.exr"), "-o", path("resumed.exr"), "--spp", "9"});
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+
+    const auto film = orb::exr::read_film_exr(path("resumed.exr"));
+    EXPECT_EQ(film.film.samples_per_pixel, 9u);
+    EXPECT_EQ(film.metadata.seed, 5u);
+    expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("resumed.exr")));
+}
+
+TEST_F(RenderCli, ResumeInPlaceContinuesToTheStoredTarget) {
+    const std::string scene = write_scene(small_scene());
+    ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "6", "--mode", "direct", "--max-depth", "2"}).exit_code, 0);
+    // Two resumes in place (the output replacing its input), mode and depth
+    // coming from the header each time.
+    ASSERT_EQ(render({scene, "-o", path("out.exr"), "--spp", "2", "--mode", "direct", "--max-depth", "2"}).exit_code, 0);
+    ASSERT_EQ(render({scene, "--resume", path("out.exr"), "-o", path("out.exr"), "--spp", "3"}).exit_code, 0);
+    const auto last = render({scene, "--resume", path("out.exr"), "-o", path("out.exr"), "--spp", "6"});
+    ASSERT_EQ(last.exit_code, 0) << last.err;
+    const auto film = orb::exr::read_film_exr(path("out.exr"));
+    EXPECT_EQ(film.film.samples_per_pixel, 6u);
+    EXPECT_EQ(film.metadata.mode, "direct");  // from the header, not the defaults
+    EXPECT_EQ(film.metadata.max_depth, 2);
+    expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("out.exr")));
+    EXPECT_EQ(files(), (std::vector<std::string>{"out.exr", "scene.json", "whole.exr"}));
+}
+
+TEST_F(RenderCli, ResumeRefusesAnotherScene) {
+    orb::Scene scene = small_scene();
+    ASSERT_EQ(render({write_scene(scene), "-o", path("part.exr"), "--spp", "1"}).exit_code, 0);
+    scene.spheres[1].radius = 0.6;
+    const std::string changed = write_scene(scene, "changed.json");
+    const auto run = render({changed, "--resume", path("part.exr"), "-o", path("out.exr"), "--spp", "2"});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_NE(run.err.find("different scene"), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(path("out.exr")));
+}
+
+TEST_F(RenderCli, ResumeRefusesAnotherSizeOrSeed) {
+    const std::string scene = write_scene(small_scene());
+    ASSERT_EQ(render({scene, "-o", path("part.exr"), "--spp", "1"}).exit_code, 0);
+    const auto size = render({scene, "--resume", path("part.exr"), "-o", path("out.exr"), "--width", "16"});
+    EXPECT_EQ(size.exit_code, 1);
+    EXPECT_NE(size.err.find("--width 16 differs"), std::string::npos) << size.err;
+    const auto seed = render({scene, "--resume", path("part.exr"), "-o", path("out.exr"), "--seed", "9"});
+    EXPECT_EQ(seed.exit_code, 1);
+    EXPECT_NE(seed.err.find("--seed 9 differs"), std::string::npos) << seed.err;
+    EXPECT_FALSE(std::filesystem::exists(path("out.exr")));
+}
+
+TEST_F(RenderCli, ResumeRefusesAForeignExr) {
+    {
+        std::vector<Imf::Rgba> pixels(32 * 24, Imf::Rgba(0.5f, 0.5f, 0.5f, 1.0f));
+        Imf::RgbaOutputFile file(path("foreign.exr").c_str(), 32, 24, Imf::WRITE_RGBA);
+        file.setFrameBuffer(pixels.data(), 1, 32);
+        file.writePixels(24);
+    }
+    const auto run =
+        render({write_scene(small_scene()), "--resume", path("foreign.exr"), "-o", path("out.exr"), "--spp", "2"});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_NE(run.err.find("not an orb-render image"), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(path("out.exr")));
+}
+
+TEST_F(RenderCli, ResumeRefusesAHalfFile) {
+    const std::string scene = write_scene(small_scene());
+    ASSERT_EQ(render({scene, "-o", path("half.exr"), "--spp", "1", "--half"}).exit_code, 0);
+    const auto run = render({scene, "--resume", path("half.exr"), "-o", path("out.exr"), "--spp", "2"});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_NE(run.err.find("--half"), std::string::npos) << run.err;
+}
