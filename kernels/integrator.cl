@@ -32,97 +32,128 @@ inline void add_by_diffuse_count(PathSample* s, int diffuse_vertices, float3 con
         s->indirect += contribution;
 }
 
-inline PathSample trace_path(const SceneView* scene, float3 o, float3 d, uint pixel, ulong sample, uint2 seed,
-                             int max_depth, int mode)
+// The state of one camera path between two ray casts.
+typedef struct {
+    float3 o, d;     // the ray to cast next
+    int self;        // sphere the ray leaves, -1 for the camera
+    int depth;       // scattering events so far
+    float3 beta;     // path throughput
+    int diffuse_vertices;
+    bool albedo_set;
+    // Where the ray was BSDF-sampled from, for MIS at an emitter it hits.
+    bool from_diffuse;
+    float from_pdf;
+    float3 from_point;
+    int from_self;
+} PathState;
+
+inline void begin_path(PathState* path, PathSample* out, float3 o, float3 d)
 {
-    PathSample out;
-    out.emission = out.direct = out.indirect = out.albedo = out.normal = (float3)(0.0f);
-    out.alpha = 0.0f;
+    path->o = o;
+    path->d = d;
+    path->self = -1;
+    path->depth = 0;
+    path->beta = (float3)(1.0f);
+    path->diffuse_vertices = 0;
+    path->albedo_set = false;
+    path->from_diffuse = false;
+    path->from_pdf = 0.0f;
+    path->from_point = o;
+    path->from_self = -1;
+    out->emission = out->direct = out->indirect = out->albedo = out->normal = (float3)(0.0f);
+    out->alpha = 0.0f;
+}
+
+// Starts sample `sample` of pixel (x, y) at the camera (RNG block 0).
+inline void begin_camera_path(const CameraView* cam, int x, int y, int width, int height, uint pixel, ulong sample,
+                              uint2 seed, PathState* path, PathSample* out)
+{
+    const Rand5 c = rng_block(pixel, sample, 0u, seed);
+    float3 o, d;
+    camera_ray(cam, (float)x + c.u0, (float)y + c.u1, width, height, c.u2, c.u3, &o, &d);
+    begin_path(path, out, o, d);
+}
+
+// Casts the path's next ray and handles what it hits: emission, next-event
+// estimation, scattering. Returns false when the path has ended.
+inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out, uint pixel, ulong sample,
+                        uint2 seed, int max_depth, int mode)
+{
+    const Hit hit = intersect_scene(scene, path->o, path->d, path->self);
+    if (hit.id < 0) return false;
+    const SphereRecord m = load_sphere(scene, hit.id);
+    const float3 d = path->d;
+    const float3 p = path->o + hit.t * d;
+    const float3 outward = (p - m.centre) * (1.0f / m.radius);
+    const bool entering = dot(d, outward) < 0.0f;
+    const float3 n = entering ? outward : -outward;
+    const int depth = path->depth;
+    if (depth == 0) {
+        out->alpha = 1.0f;
+        out->normal = n;
+    }
 
     const int light_count = scene->light_count;
     // Global mode picks one light uniformly per vertex; direct mode samples every light.
     const float pick_pdf = mode == MODE_DIRECT ? 1.0f : 1.0f / (float)max(light_count, 1);
 
-    float3 beta = (float3)(1.0f);  // path throughput
-    int self = -1;                 // sphere the current ray leaves, -1 for the camera
-    int diffuse_vertices = 0;
-    bool albedo_set = false;
-    // Where the current ray was BSDF-sampled from, for MIS at an emitter it hits.
-    bool from_diffuse = false;
-    float from_pdf = 0.0f;
-    float3 from_point = o;
-    int from_self = -1;
-
-    for (int depth = 0;; ++depth) {
-        const Hit hit = intersect_scene(scene, o, d, self);
-        if (hit.id < 0) break;
-        const SphereRecord m = load_sphere(scene, hit.id);
-        const float3 p = o + hit.t * d;
-        const float3 outward = (p - m.centre) * (1.0f / m.radius);
-        const bool entering = dot(d, outward) < 0.0f;
-        const float3 n = entering ? outward : -outward;
-        if (depth == 0) {
-            out.alpha = 1.0f;
-            out.normal = n;
+    if (m.emission.x + m.emission.y + m.emission.z > 0.0f) {
+        float weight = 1.0f;  // after the camera or a specular event only this strategy exists
+        if (path->from_diffuse) {
+            const float light_pdf =
+                pick_pdf * light_direction_pdf(path->from_point, path->from_self, hit.id, m.centre, m.radius);
+            weight = power_heuristic(path->from_pdf, light_pdf);
         }
-
-        if (m.emission.x + m.emission.y + m.emission.z > 0.0f) {
-            float weight = 1.0f;  // after the camera or a specular event only this strategy exists
-            if (from_diffuse) {
-                const float light_pdf =
-                    pick_pdf * light_direction_pdf(from_point, from_self, hit.id, m.centre, m.radius);
-                weight = power_heuristic(from_pdf, light_pdf);
-            }
-            add_by_diffuse_count(&out, diffuse_vertices, beta * m.emission * weight);
-        }
-
-        if (depth == max_depth) break;
-        // Direct mode: the ray after the first diffuse vertex was traced only for its emission.
-        if (mode == MODE_DIRECT && diffuse_vertices == 1) break;
-
-        const Rand5 r = rng_block(pixel, sample, (uint)(depth + 1), seed);
-        if (m.type == MATERIAL_DIFFUSE) {
-            ++diffuse_vertices;
-            if (!albedo_set) {
-                out.albedo = beta * m.color;
-                albedo_set = true;
-            }
-            if (mode == MODE_DIRECT) {
-                for (int i = 0; i < light_count; ++i)
-                    add_by_diffuse_count(&out, diffuse_vertices,
-                                         beta * estimate_direct_light(scene, scene->lights[i], 1.0f, p, n, hit.id,
-                                                                      m.color, r.u0, r.u1));
-            } else if (light_count > 0) {
-                // One uniform number picks the light and, rescaled, samples it.
-                const float scaled = r.u0 * (float)light_count;
-                const int pick = min((int)scaled, light_count - 1);
-                const float u = fmin(scaled - (float)pick, 0x1.fffffep-1f);
-                add_by_diffuse_count(&out, diffuse_vertices,
-                                     beta * estimate_direct_light(scene, scene->lights[pick], pick_pdf, p, n, hit.id,
-                                                                  m.color, u, r.u1));
-            }
-        }
-
-        const BsdfSample bs = sample_bsdf(&m, d, n, entering, r.u2, r.u3, r.u0);
-        beta *= bs.weight;
-        from_diffuse = bs.pdf > 0.0f;
-        from_pdf = bs.pdf;
-        from_point = p;
-        from_self = hit.id;
-
-        const float beta_max = fmax(beta.x, fmax(beta.y, beta.z));
-        if (beta_max <= 0.0f) break;
-        if (depth + 1 >= RR_START_EVENT) {
-            // Survive with probability q and divide by q: unbiased.
-            const float q = fmin(1.0f, beta_max);
-            if (r.u4 >= q) break;
-            beta *= 1.0f / q;
-        }
-        o = p;
-        d = bs.dir;
-        self = hit.id;
+        add_by_diffuse_count(out, path->diffuse_vertices, path->beta * m.emission * weight);
     }
-    return out;
+
+    if (depth == max_depth) return false;
+    // Direct mode: the ray after the first diffuse vertex was traced only for its emission.
+    if (mode == MODE_DIRECT && path->diffuse_vertices == 1) return false;
+
+    const Rand5 r = rng_block(pixel, sample, (uint)(depth + 1), seed);
+    if (m.type == MATERIAL_DIFFUSE) {
+        const int vertices = ++path->diffuse_vertices;
+        if (!path->albedo_set) {
+            out->albedo = path->beta * m.color;
+            path->albedo_set = true;
+        }
+        if (mode == MODE_DIRECT) {
+            for (int i = 0; i < light_count; ++i)
+                add_by_diffuse_count(out, vertices,
+                                     path->beta * estimate_direct_light(scene, scene->lights[i], 1.0f, p, n, hit.id,
+                                                                        m.color, r.u0, r.u1));
+        } else if (light_count > 0) {
+            // One uniform number picks the light and, rescaled, samples it.
+            const float scaled = r.u0 * (float)light_count;
+            const int pick = min((int)scaled, light_count - 1);
+            const float u = fmin(scaled - (float)pick, 0x1.fffffep-1f);
+            add_by_diffuse_count(out, vertices,
+                                 path->beta * estimate_direct_light(scene, scene->lights[pick], pick_pdf, p, n, hit.id,
+                                                                    m.color, u, r.u1));
+        }
+    }
+
+    const BsdfSample bs = sample_bsdf(&m, d, n, entering, r.u2, r.u3, r.u0);
+    float3 beta = path->beta * bs.weight;
+    const float beta_max = fmax(beta.x, fmax(beta.y, beta.z));
+    if (beta_max <= 0.0f) return false;
+    if (depth + 1 >= RR_START_EVENT) {
+        // Survive with probability q and divide by q: unbiased.
+        const float q = fmin(1.0f, beta_max);
+        if (r.u4 >= q) return false;
+        beta *= 1.0f / q;
+    }
+    path->beta = beta;
+    path->from_diffuse = bs.pdf > 0.0f;
+    path->from_pdf = bs.pdf;
+    path->from_point = p;
+    path->from_self = hit.id;
+    path->o = p;
+    path->d = bs.dir;
+    path->self = hit.id;
+    path->depth = depth + 1;
+    return true;
 }
 
 __kernel void render_pass(__global float* film_radiance, __global float* film_radiance_sq,
@@ -166,12 +197,18 @@ __kernel void render_pass(__global float* film_radiance, __global float* film_ra
     float3 sum_albedo = (float3)(0.0f), sum_normal = (float3)(0.0f);
     float sum_alpha = 0.0f;
 
-    for (int i = 0; i < sample_count; ++i) {
-        const ulong sample = first_sample + (ulong)i;
-        const Rand5 c = rng_block(pixel, sample, 0u, seed);
-        float3 o, d;
-        camera_ray(&cam, (float)x + c.u0, (float)y + c.u1, width, height, c.u2, c.u3, &o, &d);
-        PathSample s = trace_path(&scene, o, d, pixel, sample, seed, max_depth, mode);
+    // Path regeneration: one flat loop of ray casts, where a finished path
+    // hands over to the pass's next sample at once. On GPUs the threads of a
+    // warp then stay busy casting rays instead of waiting for the longest
+    // path of the group to end before all start their next sample.
+    PathState path;
+    PathSample s;
+    int i = 0;
+    ulong sample = first_sample;
+    if (sample_count > 0) begin_camera_path(&cam, x, y, width, height, pixel, sample, seed, &path, &s);
+    while (i < sample_count) {
+        if (extend_path(&scene, &path, &s, pixel, sample, seed, max_depth, mode)) continue;
+
         float3 radiance = (s.emission + s.direct) + s.indirect;
         if (!all(isfinite(radiance))) {
             // Never expected; a non-finite sample would poison the pixel's sum forever.
@@ -185,6 +222,11 @@ __kernel void render_pass(__global float* film_radiance, __global float* film_ra
         sum_albedo += s.albedo;
         sum_normal += s.normal;
         sum_alpha += s.alpha;
+
+        if (++i < sample_count) {
+            sample = first_sample + (ulong)i;
+            begin_camera_path(&cam, x, y, width, height, pixel, sample, seed, &path, &s);
+        }
     }
 
     film_add3(film_radiance, pixel, sum_radiance);
