@@ -90,3 +90,22 @@ TEST_F(RenderCli, SigtermAlsoWritesTheImageAndExits143) {
     EXPECT_GE(std::filesystem::last_write_time(out), before);
     EXPECT_GE(orb::exr::read_film_exr(out).film.samples_per_pixel, 1u);
 }
+
+TEST_F(RenderCli, InterruptedRenderResumesToItsTargetAndMatchesAnUninterruptedOne) {
+    const std::string scene = write_scene(small_scene());
+    const std::string out = path("out.exr");
+    Child child({render_exe(), scene, "-o", out, "--spp", "3000", "--seed", "11", "--checkpoint", "0.05"},
+                path("stderr.txt"));
+    ASSERT_TRUE(eventually([&] { return std::filesystem::exists(out); }, 60)) << read_text(path("stderr.txt"));
+    child.send_signal(SIGINT);
+    const auto stopped = child.wait(60);
+    ASSERT_EQ(stopped.exit_code, 130) << stopped.err;
+    ASSERT_LT(orb::exr::read_film_exr(out).film.samples_per_pixel, 3000u);
+
+    const auto resumed = render({scene, "--resume", out, "-o", out});  // no --spp: the stored target
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "3000", "--seed", "11"}).exit_code, 0);
+    EXPECT_EQ(orb::exr::read_film_exr(out).film.samples_per_pixel, 3000u);
+    expect_same_within_float_rounding(orb::exr::testing::read_raw_exr(path("whole.exr")),
+                                      orb::exr::testing::read_raw_exr(out));
+}

@@ -1,0 +1,101 @@
+// Options that shape the set-up rather than the image: --time-at (animated
+// scenes), --kernel-dir/--no-cache, and running without any OpenCL platform.
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli_fixture.h"
+#include "orb/exr/film_exr.h"
+#include "orb/scene/animation.h"
+#include "orb/scene/scene_json.h"
+
+using namespace orb::test;
+using orb::exr::testing::read_raw_exr;
+
+namespace {
+
+// small_scene() with the red ball sliding from x = -1.4 at t = 0 to x = -0.1 at t = 2.
+orb::Scene animated_scene() {
+    orb::Scene scene = small_scene();
+    orb::AnimationNode node;
+    node.name = "slider";
+    orb::AnimationChannel channel;
+    channel.path = orb::AnimationPath::Translation;
+    channel.times = {0.0, 2.0};
+    channel.values = {{-1.4, 0.7, 0.0, 0.0}, {-0.1, 0.7, 0.0, 0.0}};
+    node.channels.push_back(channel);
+    scene.animation.nodes.push_back(node);
+    orb::SphereBinding binding;
+    binding.sphere = 1;
+    binding.node = 0;
+    binding.radius = 0.5;
+    scene.animation.spheres.push_back(binding);
+    return scene;
+}
+
+std::string quoted(const std::string& text) { return "'" + text + "'"; }
+
+}  // namespace
+
+TEST_F(RenderCli, TimeAtRendersTheSceneAsItStandsThen) {
+    const orb::Scene scene = animated_scene();
+    const std::string file = write_scene(scene);
+    for (double t : {0.0, 2.0}) {
+        const std::string out = path("t" + std::to_string(int(t)) + ".exr");
+        const auto run = render({file, "-o", out, "--spp", "1", "--passes", "id", "--time-at", std::to_string(t)});
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        const orb::Scene posed = orb::scene_at_time(scene, t);
+        const auto film = orb::exr::read_film_exr(out);
+        EXPECT_EQ(film.metadata.scene_time, t);
+        EXPECT_EQ(film.metadata.scene_hash, orb::scene_content_hash(posed));
+
+        // The ball is found where the pose at t puts it.
+        Imf::InputFile exr(out.c_str());
+        const auto& c = posed.spheres[1].center;
+        Imath::V3f ndc;
+        Imf::worldToNDC(exr.header())
+            .multVecMatrix(Imath::V3f{static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])},
+                           ndc);
+        const auto raw = read_raw_exr(out);
+        const int x = int(ndc.x * raw.width), y = int(ndc.y * raw.height);
+        ASSERT_TRUE(x >= 0 && x < raw.width && y >= 0 && y < raw.height);
+        EXPECT_EQ(raw.channels.at("id")[std::size_t(y) * raw.width + x], 1.0f) << "t = " << t;
+    }
+    EXPECT_NE(orb::exr::read_film_exr(path("t0.exr")).metadata.scene_hash,
+              orb::exr::read_film_exr(path("t2.exr")).metadata.scene_hash);
+    // Resuming must stay at the file's time.
+    const auto clash = render({file, "--resume", path("t2.exr"), "-o", path("r.exr"), "--spp", "2", "--time-at", "1"});
+    EXPECT_EQ(clash.exit_code, 1);
+    EXPECT_NE(clash.err.find("--time-at"), std::string::npos) << clash.err;
+}
+
+TEST_F(RenderCli, KernelDirIsUsedAndABuildFailurePrintsTheLog) {
+    std::filesystem::create_directories(path("kernels"));
+    for (const auto& entry : std::filesystem::directory_iterator(ORB_KERNELS_DIR))
+        if (entry.path().extension() == ".cl")
+            std::filesystem::copy_file(entry.path(), path("kernels") + "/" + entry.path().filename().string());
+    const std::string scene = write_scene(small_scene());
+    const auto good = render({scene, "-o", path("ok.exr"), "--spp", "1", "--kernel-dir", path("kernels"), "--no-cache"});
+    ASSERT_EQ(good.exit_code, 0) << good.err;
+
+    std::ofstream(path("kernels/integrator.cl"), std::ios::app) << "\nthis_is_not_opencl_c\n";
+    const auto bad = render({scene, "-o", path("bad.exr"), "--spp", "1", "--kernel-dir", path("kernels"), "--no-cache"});
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.err.find("build log"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("integrator.cl"), std::string::npos) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(path("bad.exr")));
+}
+
+TEST_F(RenderCli, NoOpenCLPlatformSaysToInstallPocl) {
+    std::filesystem::create_directories(path("no-icds"));
+    // The ICD loader reads its vendor list from OCL_ICD_VENDORS: an empty folder means no platform.
+    for (const std::string& args : {std::string("--list-devices"), quoted(write_scene(small_scene())) + " -o " + quoted(path("out.exr"))}) {
+        const auto run = run_process({"/bin/sh", "-c", "OCL_ICD_VENDORS=" + quoted(path("no-icds")) + " " +
+                                                           quoted(render_exe()) + " " + args});
+        EXPECT_EQ(run.exit_code, 1) << args << "\n" << run.err;
+        EXPECT_NE(run.err.find("pocl-opencl-icd"), std::string::npos) << run.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(path("out.exr")));
+}
