@@ -160,7 +160,8 @@ __kernel void render_pass(__global float* film_radiance, __global float* film_ra
                           __global float* film_direct, __global float* film_indirect, __global float* film_emission,
                           __global float* film_albedo, __global float* film_normal, __global float* film_alpha,
                           __global float* film_depth, __global float* film_object_id,
-                          SCENE_MEM const float4* packets, int packet_count, SCENE_MEM const float4* records,
+                          SCENE_MEM const float4* packets, int packet_count, int sphere_count,
+                          SCENE_MEM const float4* records,
                           SCENE_MEM const int* lights, int light_count,
                           float4 cam_origin, float4 cam_right, float4 cam_up, float4 cam_forward,
                           float4 cam_lens,  // half_width, half_height, lens_radius, focus_distance
@@ -175,6 +176,7 @@ __kernel void render_pass(__global float* film_radiance, __global float* film_ra
     SceneView scene;
     scene.packets = packets;
     scene.packet_count = packet_count;
+    scene.sphere_count = sphere_count;
     scene.records = records;
     scene.lights = lights;
     scene.light_count = light_count;

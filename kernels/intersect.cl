@@ -17,6 +17,9 @@ typedef struct {
     int id;   // sphere index, -1 for a miss
 } Hit;
 
+#ifndef ORB_INTERSECT_SCALAR
+// Four spheres per step in SIMD lanes: CPUs execute the float4 arithmetic as
+// one vector instruction each.
 inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 {
     float4 best_t = (float4)(ORB_NO_HIT);
@@ -53,3 +56,33 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
                                : best_id.w;
     return hit;
 }
+#else
+// One sphere per step, for GPUs: a GPU thread executes float4 arithmetic one
+// lane at a time, so packets would only add the padding lanes' work. Reads
+// the same packet layout; same roots and rules as the packet version.
+inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
+{
+    SCENE_MEM const float* lanes = (SCENE_MEM const float*)scene->packets;
+    Hit hit;
+    hit.t = ORB_NO_HIT;
+    hit.id = -1;
+    for (int i = 0; i < scene->sphere_count; ++i) {
+        SCENE_MEM const float* packet = lanes + 16 * (i >> 2) + (i & 3);
+        const float3 oc = o - (float3)(packet[0], packet[4], packet[8]);
+        const float b = dot(oc, d);
+        const float3 f = oc - b * d;
+        const float disc = packet[12] - dot(f, f);
+        if (disc < 0.0f) continue;
+        const float s = sqrt(disc);
+        const float t_near = -b - s;
+        const bool is_self = i == self;
+        if (is_self && b >= 0.0f) continue;
+        const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
+        if (t > 0.0f && t < hit.t) {
+            hit.t = t;
+            hit.id = i;
+        }
+    }
+    return hit;
+}
+#endif

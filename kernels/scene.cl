@@ -26,6 +26,7 @@
 typedef struct {
     SCENE_MEM const float4* packets;
     int packet_count;
+    int sphere_count;
     SCENE_MEM const float4* records;
     SCENE_MEM const int* lights;
     int light_count;
