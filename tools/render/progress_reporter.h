@@ -10,7 +10,7 @@
 
 namespace orb::render_cli {
 
-std::string format_rate(double samples_per_second);  // "1.32 M samples/s"
+std::string format_rate(double samples_per_second);  // "1.32 Msamples/s"
 std::string format_duration(double seconds);         // "42.0 s", "3 min 05 s"
 
 class ProgressReporter {

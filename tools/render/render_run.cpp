@@ -27,6 +27,7 @@ void check_output_folder(const std::string& output) {
     std::error_code ec;
     if (!parent.empty() && !fs::is_directory(parent, ec))
         throw InputError(output + ": cannot write: directory " + parent.string() + " does not exist");
+    if (fs::is_directory(output, ec)) throw InputError(output + ": is a directory, expected an EXR file name");
 }
 
 const char* stop_reason_name(render::StopReason reason) {
@@ -77,7 +78,6 @@ RunStats base_stats(const RenderPlan& plan, const render::Renderer& renderer) {
 
 int run_render(const RenderPlan& plan, const RenderOptions& options) {
     check_output_folder(options.output);
-    install_interrupt_handlers();
 
     render::Renderer renderer(plan.scene, plan.config);
     cli::info("device: " + device_label(renderer.device()));
@@ -99,9 +99,19 @@ int run_render(const RenderPlan& plan, const RenderOptions& options) {
     render::ProgressiveCallbacks callbacks;
     callbacks.on_pass = [&](const render::ProgressState& state) { progress.on_pass(state); };
     callbacks.on_checkpoint = [&](const render::ProgressState& state) {
-        writer.write(state.elapsed_seconds);
-        progress.on_checkpoint(state, options.output);
+        // A checkpoint that cannot be written (a full disk, say) must not
+        // cost the render; the final write reports for good if it persists.
+        try {
+            writer.write(state.elapsed_seconds);
+            progress.on_checkpoint(state, options.output);
+        } catch (const std::exception& e) {
+            cli::warning(std::string("checkpoint not written: ") + e.what());
+        }
     };
+
+    // From here on SIGINT/SIGTERM end the render gracefully; before, during
+    // the kernel build, there is nothing to save and they end it at once.
+    install_interrupt_handlers();
 
     render::ProgressState final_state;
     const render::StopReason reason =
