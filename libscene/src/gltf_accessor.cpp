@@ -11,7 +11,7 @@ namespace {
 
 // Accessors without a buffer view (all zeros, maybe sparse) allocate memory
 // for `count` elements with no data to back it; cap them.
-constexpr std::uint64_t kMaxUnbackedElements = std::uint64_t(1) << 24;
+constexpr std::uint64_t kMaxUnbackedElements = std::uint64_t(1) << 20;
 
 int component_size(int component_type) {
     switch (component_type) {

@@ -56,6 +56,9 @@ const std::set<std::string> kSupportedExtensions{
     "KHR_implicit_shapes",      "KHR_physics_rigid_bodies",        "KHR_texture_transform",
     "KHR_texture_basisu",       "EXT_texture_webp",                "KHR_materials_unlit"};
 
+// More spheres than this is refused up front rather than exhausting memory
+// (instances x points can multiply a small file into billions).
+constexpr std::size_t kMaxSpheres = std::size_t(1) << 24;
 // Two axis scales closer than this (relative) count as uniform.
 constexpr double kUniformScaleTolerance = 1e-6;
 // Default sizes relative to the diagonal of the scene's bounds.
@@ -254,6 +257,7 @@ private:
         } else {
             if (n.translation.size() == 3) std::copy(n.translation.begin(), n.translation.end(), out.translation.begin());
             if (n.rotation.size() == 4) std::copy(n.rotation.begin(), n.rotation.end(), out.rotation.begin());
+            out.rotation = detail::normalized(out.rotation);  // a zero quaternion means no rotation, as when placing
             if (n.scale.size() == 3) std::copy(n.scale.begin(), n.scale.end(), out.scale.begin());
             auto it = channels_.find(node);
             if (it != channels_.end()) out.channels = it->second;
@@ -481,6 +485,13 @@ private:
             non_spheres_.insert((mesh.name.empty() ? "mesh " + std::to_string(mesh_index) : "'" + mesh.name + "'") +
                                 " (" + node_label(model_, node) + ")");
         const std::vector<Matrix4> instances = instances_of(node);
+        std::size_t per_instance = content.spheres.size();
+        for (const MeshPoints& points : content.points) per_instance += points.positions.size();
+        if (per_instance > 0 && (scene_.spheres.size() >= kMaxSpheres ||
+                                 instances.size() > (kMaxSpheres - scene_.spheres.size()) / per_instance))
+            diagnostics_.fail(node_label(model_, node) + ": " + std::to_string(instances.size()) + " instances of " +
+                              std::to_string(per_instance) + " spheres exceed the limit of " +
+                              std::to_string(kMaxSpheres) + " spheres");
         for (std::size_t i = 0; i < instances.size(); ++i) {
             const std::string instance_name = instances.size() > 1 ? base + "#" + std::to_string(i) : base;
             for (std::size_t k = 0; k < content.spheres.size(); ++k) {

@@ -163,10 +163,12 @@ tinygltf::Model load_model(std::string_view bytes, const std::string& source, co
         error = e.what();
     }
     if (!ok) {
+        if (error.empty()) error = warning;
+        if (error.empty()) error = "an object lacks a required property (tinygltf gives no detail)";
         while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
         for (char& ch : error)
             if (ch == '\n') ch = ';';
-        throw InputError(source + ": not a valid glTF 2.0 asset: " + (error.empty() ? "tinygltf refused it" : error));
+        throw InputError(source + ": not a valid glTF 2.0 asset: " + error);
     }
     return model;
 }

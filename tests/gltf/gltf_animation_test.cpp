@@ -7,6 +7,7 @@
 
 #include "gltf_test_util.h"
 #include "orb/scene/animation.h"
+#include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::gltf_test {
@@ -82,6 +83,22 @@ TEST_P(Animated, RoundTripsThroughJson) {
     const Scene back = load_scene_json(text, "animation.json");
     EXPECT_EQ(back, scene_);
     EXPECT_EQ(scene_at_time(back, 0.7), at(0.7));
+}
+
+TEST(GltfAnimation, ABrokenChannelCostsItsMotionNotTheScene) {
+    // The sampler's input accessor does not exist; the sphere still imports, static.
+    const std::string text = R"({"asset":{"version":"2.0"},
+      "extensions":{"KHR_implicit_shapes":{"shapes":[{"type":"sphere","sphere":{"radius":1}}]}},
+      "nodes":[{"name":"Ball","extensions":{"KHR_implicit_shapes":{"shape":0}}}],
+      "animations":[{"samplers":[{"input":5,"output":6}],"channels":[{"sampler":0,"target":{"node":0,"path":"translation"}}]}],
+      "scenes":[{"nodes":[0]}]})";
+    const GltfImportResult result = import_gltf(text, "broken.gltf", "", {});
+    ASSERT_EQ(result.scene.spheres.size(), 1u);
+    EXPECT_TRUE(result.scene.animation.empty());
+    EXPECT_TRUE(any_warning_contains(result, "animation 0 channel 0 input: accessor 5 does not exist; the channel is ignored"));
+    GltfImportOptions strict;
+    strict.strict = true;
+    EXPECT_THROW(import_gltf(text, "broken.gltf", "", strict), InputError);
 }
 
 INSTANTIATE_TEST_SUITE_P(Gltf, Animated, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));

@@ -141,6 +141,40 @@ TEST(GltfGeometry, ExternalFilesMustExistInsideTheAssetFolder) {
     }
 }
 
+TEST(GltfGeometry, SparseAccessorOverZeros) {
+    // POSITION: 3 points, all zero except point 1, set to (5,0,0) by a sparse substitution.
+    const std::string text = R"({"asset":{"version":"2.0"},
+      "buffers":[{"byteLength":16,"uri":"data:application/octet-stream;base64,AQAAAAAAoEAAAAAAAAAAAA=="}],
+      "bufferViews":[{"buffer":0,"byteLength":4},{"buffer":0,"byteOffset":4,"byteLength":12}],
+      "accessors":[{"componentType":5126,"count":3,"type":"VEC3",
+                    "sparse":{"count":1,"indices":{"bufferView":0,"componentType":5125},"values":{"bufferView":1}}}],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0},"mode":0}]}],
+      "nodes":[{"name":"P","mesh":0}],"scenes":[{"nodes":[0]}]})";
+    GltfImportOptions options;
+    options.point_radius = 0.5;
+    const Scene scene = import_gltf(text, "sparse.gltf", "", options).scene;
+    ASSERT_EQ(scene.spheres.size(), 3u);
+    EXPECT_EQ(sphere_named(scene, "P.point0").center, (Vec3{0, 0, 0}));
+    EXPECT_EQ(sphere_named(scene, "P.point1").center, (Vec3{5, 0, 0}));
+    EXPECT_EQ(sphere_named(scene, "P.point2").center, (Vec3{0, 0, 0}));
+}
+
+TEST(GltfGeometry, InstancesTimesPointsBeyondTheLimitAreRefusedUpFront) {
+    // A few hundred bytes asking for 10^6 instances of 10^6 points (zero-filled accessors).
+    const std::string text = R"({"asset":{"version":"2.0"},
+      "extensionsUsed":["EXT_mesh_gpu_instancing"],
+      "accessors":[{"componentType":5126,"count":1000000,"type":"VEC3"}],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0},"mode":0}]}],
+      "nodes":[{"mesh":0,"extensions":{"EXT_mesh_gpu_instancing":{"attributes":{"TRANSLATION":0}}}}],
+      "scenes":[{"nodes":[0]}]})";
+    try {
+        import_gltf(text, "huge.gltf", "", {});
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("exceed the limit"), std::string::npos) << e.what();
+    }
+}
+
 TEST(GltfGeometry, MalformedInputIsAnInputError) {
     const char* cases[] = {
         "",
