@@ -32,8 +32,11 @@ ErrorStats compute_error_stats(const Image& reference, const Image& test) {
     double sum_abs = 0, sum_sq = 0, sum_rel = 0;
     double max_abs = -1;
     size_t max_index = 0;
+    double peak = 1.0;
     for (size_t i = 0; i < count; ++i) {
         const float r = reference.pixels[i];
+        for (float v : {r, test.pixels[i]})
+            if (std::isfinite(v) && v > peak) peak = v;
         const double d = abs_difference(r, test.pixels[i]);
         if (!std::isfinite(d)) ++s.nonfinite;
         sum_abs += d;
@@ -48,7 +51,7 @@ ErrorStats compute_error_stats(const Image& reference, const Image& test) {
     s.mean_abs_error = sum_abs / count;
     s.rmse = std::sqrt(sum_sq / count);
     s.relmse = sum_rel / count;
-    s.psnr = s.rmse > 0 ? 20.0 * std::log10(1.0 / s.rmse) : std::numeric_limits<double>::infinity();
+    s.psnr = s.rmse > 0 ? 20.0 * std::log10(peak / s.rmse) : std::numeric_limits<double>::infinity();
     s.max_abs_error = max_abs;
     const size_t pixel = max_index / n;
     s.max_x = static_cast<int>(pixel % reference.width);

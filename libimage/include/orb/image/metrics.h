@@ -15,7 +15,8 @@ struct ErrorStats {
     int max_x = 0, max_y = 0;   // where it is
     std::string max_channel;    // and in which channel
     double rmse = 0;            // sqrt(mean (t - r)^2)
-    double psnr = 0;            // 20 log10(1 / rmse), peak value 1 as idiff reports it; +inf if identical
+    double psnr = 0;            // 20 log10(peak / rmse), +inf if identical; peak = max(1, largest
+                                // value in either image), exactly as OIIO's idiff reports it
     double relmse = 0;          // mean (t - r)^2 / (r^2 + 0.01), Rousselle et al. 2011
     size_t nonfinite = 0;       // values that are NaN/inf in one image and differ in the other
 };
