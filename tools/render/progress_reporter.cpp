@@ -28,7 +28,9 @@ std::string format_rate(double samples_per_second) {
 std::string format_duration(double seconds) {
     char text[64];
     if (!std::isfinite(seconds) || seconds < 0) return "?";
-    if (seconds < 60)
+    if (seconds < 10)  // short GPU renders: keep two digits
+        std::snprintf(text, sizeof text, "%.2g s", seconds);
+    else if (seconds < 60)
         std::snprintf(text, sizeof text, "%.1f s", seconds);
     else if (seconds < 3600)
         std::snprintf(text, sizeof text, "%d min %02d s", int(seconds) / 60, int(seconds) % 60);
