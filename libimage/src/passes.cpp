@@ -180,6 +180,7 @@ std::vector<std::string> available_passes(const Image& image) {
     }
     claimed_layers.insert("n");
     claimed_layers.insert("normals");
+    claimed_layers.insert("orb");  // orb-render's own bookkeeping channels, not a picture
     for (const std::string& channel : image.channel_names) {
         const auto dot = channel.rfind('.');
         if (dot == std::string::npos) continue;
