@@ -5,13 +5,13 @@
 #include <numbers>
 
 #include "gltf_internal.h"
+#include "orb/scene/scene_json.h"
 
 namespace orb::gltf {
 namespace {
 
 // glTF's aspect ratio sets the width; the height stays at Orb's default.
 constexpr int kDefaultHeight = 480;
-constexpr int kMaxWidth = 16384;
 
 }  // namespace
 
@@ -29,7 +29,7 @@ void convert_camera(const tinygltf::Camera& camera, const std::string& name, con
     const double aspect = camera.perspective.aspectRatio;
     if (aspect > 0 && std::isfinite(aspect)) {
         scene.render.height = kDefaultHeight;
-        scene.render.width = int(std::clamp(std::lround(kDefaultHeight * aspect), 1L, long(kMaxWidth)));
+        scene.render.width = int(std::clamp(std::lround(kDefaultHeight * aspect), 1L, long(kMaxImageSide)));
     }
 
     // The camera looks down its node's -z with +y up.

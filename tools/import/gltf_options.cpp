@@ -16,7 +16,8 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
         ->option_text("N|NAME")
         ->group(group);
     app.add_option("--sphere-tolerance", options.sphere_tolerance,
-                   "A mesh is a sphere when all its vertices lie within this fraction of the radius of one sphere")
+                   "A mesh is a sphere when all its vertices lie within this fraction of the radius of one sphere "
+                   "(default 0.001)")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str()
         ->option_text("FRACTION")
