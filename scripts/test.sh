@@ -2,14 +2,13 @@
 # Installs what is missing, builds Orb with its tests, and runs the whole
 # default test suite through CTest. Opt-in extras:
 #   ORB_FUZZ_SECONDS=60  also build the libFuzzer targets and fuzz each for that long
+#                        (CTest's fuzz.bounded_run test runs scripts/fuzz.sh)
 #   ORB_SANITIZE=1       also build and run the unit tests under ASan+UBSan
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 [[ -n "${ORB_FUZZ_SECONDS:-}" ]] && export ORB_WITH_FUZZ=1
 "$root/scripts/install-deps.sh"
-"$root/scripts/test-python-deps.sh"
 "$root/scripts/build.sh"
 build=${ORB_BUILD_DIR:-$root/build}
 ctest --test-dir "$build" -j "${ORB_JOBS:-$(nproc)}" --output-on-failure --timeout 600
-if [[ -n "${ORB_FUZZ_SECONDS:-}" ]]; then "$root/scripts/fuzz.sh"; fi
 if [[ "${ORB_SANITIZE:-0}" == 1 ]]; then "$root/scripts/sanitize.sh"; fi

@@ -257,14 +257,15 @@ void validate_scene(const Scene& scene, const std::string& source) {
     check(all_finite(c.target), source, "camera.target", "expected finite numbers");
     check(all_finite(c.up), source, "camera.up", "expected finite numbers");
     const Vec3 forward{c.target[0] - c.position[0], c.target[1] - c.position[1], c.target[2] - c.position[2]};
-    const double forward_length = std::sqrt(forward[0] * forward[0] + forward[1] * forward[1] + forward[2] * forward[2]);
+    // hypot: lengths of huge but finite coordinates must not overflow to infinity.
+    const double forward_length = std::hypot(forward[0], forward[1], forward[2]);
     check(forward_length > 0, source, "camera.target", "must differ from camera.position, both are " + fmt(c.position));
-    const double up_length = std::sqrt(c.up[0] * c.up[0] + c.up[1] * c.up[1] + c.up[2] * c.up[2]);
+    const double up_length = std::hypot(c.up[0], c.up[1], c.up[2]);
     check(up_length > 0, source, "camera.up", "must not be the zero vector");
-    const Vec3 cross{forward[1] * c.up[2] - forward[2] * c.up[1], forward[2] * c.up[0] - forward[0] * c.up[2],
-                     forward[0] * c.up[1] - forward[1] * c.up[0]};
-    const double sine = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]) /
-                        (forward_length * up_length);
+    // Sine of the angle between the unit view direction and unit up.
+    const Vec3 f{forward[0] / forward_length, forward[1] / forward_length, forward[2] / forward_length};
+    const Vec3 u{c.up[0] / up_length, c.up[1] / up_length, c.up[2] / up_length};
+    const double sine = std::hypot(f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2], f[0] * u[1] - f[1] * u[0]);
     check(sine > 1e-9, source, "camera.up",
           "the view direction (target - position) is parallel to up " + fmt(c.up) + ": the camera's roll is undefined");
     check(std::isfinite(c.vfov_deg) && c.vfov_deg > 0 && c.vfov_deg < 180, source, "camera.vfov_deg",
