@@ -1,20 +1,11 @@
 #include "orb/image/quantize.h"
+#include "orb/image/hash.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace orb::image {
 namespace {
-
-// A well-mixed 32-bit hash (lowbias32 by Chris Wellons' hash prospector).
-uint32_t mix(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
 
 float clamp01(float v) { return std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f); }
 
@@ -27,7 +18,7 @@ std::vector<uint8_t> quantize_8bit_dithered(const Image& image) {
         for (int x = 0; x < image.width; ++x) {
             for (int c = 0; c < n; ++c) {
                 const size_t i = image.index(x, y, c);
-                const uint32_t h = mix(static_cast<uint32_t>(x) * 0x9e3779b9U ^ mix(static_cast<uint32_t>(y) * 0x85ebca6bU + c));
+                const uint32_t h = hash32(static_cast<uint32_t>(x) * 0x9e3779b9U ^ hash32(static_cast<uint32_t>(y) * 0x85ebca6bU + c));
                 const float u = static_cast<float>(h >> 8) * (1.0f / 16777216.0f);  // [0,1)
                 const float code = std::floor(clamp01(image.pixels[i]) * 255.0f + u);
                 out[i] = static_cast<uint8_t>(std::clamp(code, 0.0f, 255.0f));

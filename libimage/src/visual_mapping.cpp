@@ -1,4 +1,5 @@
 #include "orb/image/visual_mapping.h"
+#include "orb/image/hash.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,15 +37,6 @@ Image depth(const Image& in) {
         for (int c = 0; c < 3; ++c) out.pixels[p * 3 + c] = v;
     }
     return out;
-}
-
-uint32_t hash32(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
 }
 
 Image ids(const Image& in) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "json_reader.h"
 #include "orb/scene/error.h"
 
 namespace orb::detail {
@@ -37,76 +38,7 @@ ordered_json numbers(const double* values, std::size_t count) {
     return array;
 }
 
-std::string describe(const json& value) {
-    switch (value.type()) {
-        case json::value_t::null: return "null";
-        case json::value_t::boolean: return "a boolean";
-        case json::value_t::string: return "a string";
-        case json::value_t::array: return "an array";
-        case json::value_t::object: return "an object";
-        case json::value_t::discarded: return "invalid JSON";
-        default: return "a number";
-    }
-}
-
-// Reads with the JSON path of every problem in the message.
-class Reader {
-public:
-    explicit Reader(const std::string& source) : source_(source) {}
-
-    [[noreturn]] void fail(const std::string& path, const std::string& message) const {
-        throw InputError(source_ + ": " + path + ": " + message);
-    }
-    const json& object(const json& value, const std::string& path) const {
-        if (!value.is_object()) fail(path, "expected an object, got " + describe(value));
-        return value;
-    }
-    const json& array(const json& value, const std::string& path) const {
-        if (!value.is_array()) fail(path, "expected an array, got " + describe(value));
-        return value;
-    }
-    const json& member(const json& object, const std::string& path, const char* key) const {
-        auto it = object.find(key);
-        if (it == object.end()) fail(path, std::string("missing required key \"") + key + "\"");
-        return *it;
-    }
-    void only_keys(const json& object, const std::string& path, std::initializer_list<const char*> allowed) const {
-        for (auto it = object.begin(); it != object.end(); ++it) {
-            bool known = false;
-            for (const char* key : allowed) known = known || it.key() == key;
-            if (!known) {
-                std::string list;
-                for (const char* key : allowed) list += std::string(list.empty() ? "" : ", ") + key;
-                fail(path + "." + it.key(), "unknown key (expected one of: " + list + ")");
-            }
-        }
-    }
-    double number(const json& value, const std::string& path) const {
-        if (!value.is_number()) fail(path, "expected a number, got " + describe(value));
-        const double d = value.get<double>();
-        if (!std::isfinite(d)) fail(path, "expected a finite number");
-        return d;
-    }
-    std::int64_t integer(const json& value, const std::string& path) const {
-        if (!value.is_number_integer()) fail(path, "expected an integer, got " + describe(value));
-        return value.get<std::int64_t>();
-    }
-    std::string string(const json& value, const std::string& path) const {
-        if (!value.is_string()) fail(path, "expected a string, got " + describe(value));
-        return value.get<std::string>();
-    }
-    template <std::size_t N>
-    std::array<double, N> fixed(const json& value, const std::string& path) const {
-        array(value, path);
-        if (value.size() != N) fail(path, "expected " + std::to_string(N) + " numbers, got " + std::to_string(value.size()));
-        std::array<double, N> result{};
-        for (std::size_t i = 0; i < N; ++i) result[i] = number(value[i], path + "[" + std::to_string(i) + "]");
-        return result;
-    }
-
-private:
-    const std::string& source_;
-};
+using Reader = JsonReader;
 
 std::string at(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
 
@@ -131,9 +63,9 @@ AnimationChannel read_channel(const Reader& r, const json& value, const std::str
     for (std::size_t i = 0; i < values.size(); ++i) {
         const std::string value_path = at(path + ".values", i);
         if (channel.path == AnimationPath::Rotation) {
-            channel.values.push_back(r.fixed<4>(values[i], value_path));
+            channel.values.push_back(r.numbers<4>(values[i], value_path));
         } else {
-            const auto v = r.fixed<3>(values[i], value_path);
+            const auto v = r.numbers<3>(values[i], value_path);
             channel.values.push_back({v[0], v[1], v[2], 0.0});
         }
     }
@@ -155,11 +87,11 @@ AnimationNode read_node(const Reader& r, const json& value, const std::string& p
             if (value.contains(key))
                 r.fail(path + "." + key, "a node with \"matrix\" cannot also have \"" + std::string(key) + "\"");
         node.has_matrix = true;
-        node.matrix = r.fixed<16>(value["matrix"], path + ".matrix");
+        node.matrix = r.numbers<16>(value["matrix"], path + ".matrix");
     }
-    if (value.contains("translation")) node.translation = r.fixed<3>(value["translation"], path + ".translation");
-    if (value.contains("rotation")) node.rotation = r.fixed<4>(value["rotation"], path + ".rotation");
-    if (value.contains("scale")) node.scale = r.fixed<3>(value["scale"], path + ".scale");
+    if (value.contains("translation")) node.translation = r.numbers<3>(value["translation"], path + ".translation");
+    if (value.contains("rotation")) node.rotation = r.numbers<4>(value["rotation"], path + ".rotation");
+    if (value.contains("scale")) node.scale = r.numbers<3>(value["scale"], path + ".scale");
     if (value.contains("channels")) {
         const json& channels = r.array(value["channels"], path + ".channels");
         for (std::size_t i = 0; i < channels.size(); ++i)
@@ -178,7 +110,7 @@ SphereBinding read_binding(const Reader& r, const json& value, const std::string
     if (node < 0 || node > UINT32_MAX) r.fail(path + ".node", "must be a node index >= 0");
     binding.sphere = std::uint32_t(sphere);
     binding.node = std::uint32_t(node);
-    binding.center = r.fixed<3>(r.member(value, path, "center"), path + ".center");
+    binding.center = r.numbers<3>(r.member(value, path, "center"), path + ".center");
     binding.radius = r.number(r.member(value, path, "radius"), path + ".radius");
     return binding;
 }

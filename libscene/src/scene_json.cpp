@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "animation_json.h"
+#include "json_reader.h"
 #include "json_text.h"
 #include "orb/scene/error.h"
 
@@ -19,98 +20,16 @@ namespace {
 using json = nlohmann::json;
 using ordered_json = nlohmann::ordered_json;
 
-// Collects the source name so every reader below can throw with context.
-class Reader {
-public:
-    explicit Reader(std::string source) : source_(std::move(source)) {}
-
-    [[noreturn]] void fail(const std::string& path, const std::string& message) const {
-        throw InputError(source_ + ": " + path + ": " + message);
-    }
-
-    const json& member(const json& object, const std::string& path, const char* key) const {
-        auto it = object.find(key);
-        if (it == object.end()) fail(path, std::string("missing required key \"") + key + "\"");
-        return *it;
-    }
-
-    void only_keys(const json& object, const std::string& path, std::initializer_list<const char*> allowed) const {
-        for (auto it = object.begin(); it != object.end(); ++it) {
-            bool known = false;
-            for (const char* key : allowed) known = known || it.key() == key;
-            if (!known) {
-                std::string list;
-                for (const char* key : allowed) list += std::string(list.empty() ? "" : ", ") + key;
-                fail(join(path, it.key()), "unknown key (expected one of: " + list + ")");
-            }
-        }
-    }
-
-    const json& object(const json& value, const std::string& path) const {
-        if (!value.is_object()) fail(path, "expected an object, got " + describe(value));
-        return value;
-    }
-
-    const json& array(const json& value, const std::string& path) const {
-        if (!value.is_array()) fail(path, "expected an array, got " + describe(value));
-        return value;
-    }
-
-    double number(const json& value, const std::string& path) const {
-        if (!value.is_number()) fail(path, "expected a number, got " + describe(value));
-        double d = value.get<double>();
-        if (!std::isfinite(d)) fail(path, "expected a finite number");
-        return d;
-    }
-
-    long long integer(const json& value, const std::string& path, long long lo, long long hi) const {
-        if (!value.is_number_integer() && !(value.is_number_float() && is_whole(value.get<double>())))
-            fail(path, "expected an integer, got " + describe(value));
-        double d = value.get<double>();
-        if (d < static_cast<double>(lo) || d > static_cast<double>(hi))
-            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + value.dump());
-        return static_cast<long long>(d);
-    }
-
-    std::string string(const json& value, const std::string& path) const {
-        if (!value.is_string()) fail(path, "expected a string, got " + describe(value));
-        return value.get<std::string>();
-    }
-
-    Vec3 vec3(const json& value, const std::string& path) const {
-        if (!value.is_array() || value.size() != 3) fail(path, "expected an array of 3 numbers, got " + describe(value));
-        Vec3 v;
-        for (std::size_t i = 0; i < 3; ++i) v[i] = number(value[i], path + "[" + std::to_string(i) + "]");
-        return v;
-    }
-
-    static std::string join(const std::string& path, const std::string& key) {
-        return path.empty() ? key : path + "." + key;
-    }
-    static std::string index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
-
-    const std::string& source() const { return source_; }
-
-private:
-    static bool is_whole(double d) { return std::isfinite(d) && std::floor(d) == d; }
-
-    static std::string describe(const json& value) {
-        std::string text = value.dump();
-        if (text.size() > 40) text = text.substr(0, 37) + "...";
-        return std::string(value.type_name()) + " " + text;
-    }
-
-    std::string source_;
-};
+using Reader = detail::JsonReader;
 
 Camera read_camera(const Reader& r, const json& value) {
     const std::string path = "camera";
     r.object(value, path);
     r.only_keys(value, path, {"position", "target", "up", "vfov_deg", "aperture", "focus_distance"});
     Camera camera;
-    camera.position = r.vec3(r.member(value, path, "position"), path + ".position");
-    camera.target = r.vec3(r.member(value, path, "target"), path + ".target");
-    if (value.contains("up")) camera.up = r.vec3(value["up"], path + ".up");
+    camera.position = r.numbers<3>(r.member(value, path, "position"), path + ".position");
+    camera.target = r.numbers<3>(r.member(value, path, "target"), path + ".target");
+    if (value.contains("up")) camera.up = r.numbers<3>(value["up"], path + ".up");
     if (value.contains("vfov_deg")) camera.vfov_deg = r.number(value["vfov_deg"], path + ".vfov_deg");
     if (value.contains("aperture")) camera.aperture = r.number(value["aperture"], path + ".aperture");
     if (value.contains("focus_distance"))
@@ -151,8 +70,8 @@ std::vector<Material> read_materials(const Reader& r, const json& value) {
         Material material;
         if (m.contains("name")) material.name = r.string(m["name"], path + ".name");
         material.type = read_material_type(r, r.member(m, path, "type"), path + ".type");
-        material.color = m.contains("color") ? r.vec3(m["color"], path + ".color") : Vec3{0.8, 0.8, 0.8};
-        if (m.contains("emission")) material.emission = r.vec3(m["emission"], path + ".emission");
+        material.color = m.contains("color") ? r.numbers<3>(m["color"], path + ".color") : Vec3{0.8, 0.8, 0.8};
+        if (m.contains("emission")) material.emission = r.numbers<3>(m["emission"], path + ".emission");
         if (m.contains("ior")) material.ior = r.number(m["ior"], path + ".ior");
         materials.push_back(std::move(material));
     }
@@ -188,7 +107,7 @@ std::vector<Sphere> read_spheres(const Reader& r, const json& value, const std::
         r.only_keys(s, path, {"name", "center", "radius", "material"});
         Sphere sphere;
         if (s.contains("name")) sphere.name = r.string(s["name"], path + ".name");
-        sphere.center = r.vec3(r.member(s, path, "center"), path + ".center");
+        sphere.center = r.numbers<3>(r.member(s, path, "center"), path + ".center");
         sphere.radius = r.number(r.member(s, path, "radius"), path + ".radius");
         sphere.material = resolve_material(r, r.member(s, path, "material"), path + ".material", materials);
         spheres.push_back(std::move(sphere));

@@ -1,4 +1,5 @@
 #include "test_support.h"
+#include "orb/image/hash.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -25,15 +26,6 @@ std::string slurp(const fs::path& p) {
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
-}
-
-uint32_t hash(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
 }
 
 }  // namespace
@@ -83,7 +75,7 @@ Image make_scene(int width, int height, float peak, float noise, unsigned seed) 
             for (int c = 0; c < 3; ++c) {
                 rgb[c] += peak * spot * (c == 0 ? 1.0f : c == 1 ? 0.8f : 0.5f);
                 if (noise > 0) {
-                    const uint32_t h = hash(seed * 0x9e3779b9U ^ hash(static_cast<uint32_t>((y * width + x) * 3 + c)));
+                    const uint32_t h = orb::image::hash32(seed * 0x9e3779b9U ^ orb::image::hash32(static_cast<uint32_t>((y * width + x) * 3 + c)));
                     rgb[c] = std::max(0.0f, rgb[c] + noise * ((h >> 8) / 16777216.0f - 0.5f) * 2.0f);
                 }
                 img.at(x, y, c) = rgb[c];
