@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -177,6 +178,8 @@ ProgramBuild build_program(const cl::Context& context, const cl::Device& device,
         throw std::runtime_error("the OpenCL kernels failed to build on " + device_name + " (" +
                                  describe_cl_error(error) + "); build log:\n" + build_log(program, device));
     }
+    if (std::getenv("ORB_SHOW_BUILD_LOG"))  // development knob: compiler remarks, register counts
+        std::fprintf(stderr, "%s\n", build_log(program, device).c_str());
     if (!cache_file.empty()) {
         const std::vector<unsigned char> binary = program_binary(program);
         if (!binary.empty()) write_cached_binary(cache_file, key, binary);
