@@ -1,6 +1,7 @@
 // Devices, kernel building and the program binary cache.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -141,6 +142,36 @@ TEST(KernelBuild, FailureCarriesTheBuildLog)
         EXPECT_NE(message.find("integrator.cl:"), std::string::npos) << message;  // positions name the file
     }
     fs::remove_all(dir);
+}
+
+// GPUs build the kernels with one-sphere-at-a-time intersection; run that
+// variant here on PoCL through the development knob ORB_CL_OPTIONS.
+TEST(KernelBuild, GpuIntersectionVariantMatchesThePacketOne)
+{
+    const Scene cornell = load_scene_file(std::string(ORB_SCENES_DIR) + "/cornell.scn");
+    const RenderConfig config = small_config(32, 24, 5);
+    const Film packets = render(cornell, config, {16});
+    ::setenv("ORB_CL_OPTIONS", "-DORB_INTERSECT_SCALAR=1", 1);
+    Film scalar;
+    try {
+        scalar = render(cornell, config, {16});
+    } catch (...) {
+        ::unsetenv("ORB_CL_OPTIONS");
+        throw;
+    }
+    ::unsetenv("ORB_CL_OPTIONS");
+    EXPECT_EQ(scalar.object_id, packets.object_id);
+    // Hit distances agree to the float precision of the radius-1e4 walls:
+    // their centres sit 1e4 away, where one float ulp is about 1e-3.
+    ASSERT_EQ(scalar.depth.size(), packets.depth.size());
+    for (std::size_t i = 0; i < scalar.depth.size(); ++i) EXPECT_NEAR(scalar.depth[i], packets.depth[i], 4e-3) << i;
+    // Same random numbers; float rounding may flip a rare roulette decision,
+    // so compare the image means within 5 standard errors of their difference.
+    for (int c = 0; c < 3; ++c) {
+        const PixelStatistics a = radiance_statistics(packets, all_pixels(packets), c);
+        const PixelStatistics b = radiance_statistics(scalar, all_pixels(scalar), c);
+        EXPECT_NEAR(a.mean, b.mean, 5.0 * std::hypot(a.standard_error, b.standard_error)) << "channel " << c;
+    }
 }
 
 TEST(Renderer, RejectsScenesTheKernelsCannotRender)
