@@ -2,6 +2,7 @@
 #include <OpenEXR/ImfDoubleAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
@@ -11,6 +12,8 @@
 #include <Imath/half.h>
 
 #include <climits>
+#include <cstring>
+#include <fstream>
 #include <list>
 #include <stdexcept>
 #include <thread>
@@ -63,6 +66,26 @@ void add_metadata(Imf::Header& header, const render::Film& film, const ExrMetada
     Imf::addWorldToNDC(header, to_imath(m.world_to_ndc));
 }
 
+// OpenEXR's output stream over a growing string: the file is encoded in
+// memory and the caller writes it, checking every step (orb::cli::OutputFile).
+class MemoryStream final : public Imf::OStream {
+public:
+    MemoryStream() : Imf::OStream("<memory>") {}
+    void write(const char c[], int n) override {
+        const auto end = position_ + static_cast<std::uint64_t>(n);
+        if (end > bytes_.size()) bytes_.resize(end);
+        std::memcpy(bytes_.data() + position_, c, static_cast<std::size_t>(n));
+        position_ = end;
+    }
+    std::uint64_t tellp() override { return position_; }
+    void seekp(std::uint64_t position) override { position_ = position; }
+    std::string take() { return std::move(bytes_); }
+
+private:
+    std::string bytes_;
+    std::uint64_t position_ = 0;
+};
+
 // OpenEXR compresses scanline blocks on its own thread pool; once is enough.
 void use_all_cores_for_compression() {
     static const bool configured = [] {
@@ -75,8 +98,7 @@ void use_all_cores_for_compression() {
 
 }  // namespace
 
-void write_film_exr(const std::string& path, const render::Film& film, const ExrMetadata& metadata,
-                    const ExrWriteOptions& options) {
+std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options) {
     if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("cannot write an empty film");
     if (options.passes.empty()) throw std::invalid_argument("no passes to write");
     use_all_cores_for_compression();
@@ -109,13 +131,24 @@ void write_film_exr(const std::string& path, const render::Film& film, const Exr
         }
     }
 
+    MemoryStream stream;
     try {
-        Imf::OutputFile file(path.c_str(), header);
+        Imf::OutputFile file(stream, header);
         file.setFrameBuffer(frame);
         file.writePixels(film.height);
     } catch (const std::exception& e) {
-        throw std::runtime_error(path + ": cannot write EXR: " + e.what());
+        throw std::runtime_error(std::string("cannot encode the EXR: ") + e.what());
     }
+    return stream.take();
+}
+
+void write_film_exr(const std::string& path, const render::Film& film, const ExrMetadata& metadata,
+                    const ExrWriteOptions& options) {
+    const std::string bytes = encode_film_exr(film, metadata, options);
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) throw std::runtime_error(path + ": cannot write EXR");
 }
 
 }  // namespace orb::exr

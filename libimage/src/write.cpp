@@ -1,10 +1,14 @@
 #include "orb/image/write.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <stdlib.h>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 
 #include "orb/image/quantize.h"
@@ -38,18 +42,73 @@ WriteOptions checked_write_options(WriteOptions options) {
     return options;
 }
 
-void write_image_file(const std::string& filename, const Image& source, const WriteOptions& options) {
+namespace {
+
+// Drops alpha for formats that cannot store it and premultiplies it for
+// those that store associated alpha.
+Image prepared_for(const Image& source, const WriteOptions& options, bool format_has_alpha) {
+    if (source.channels() != 4) return source;
+    if (!format_has_alpha) return select_channels(source, {0, 1, 2}, {"R", "G", "B"});
     Image image = source;
-    int n = image.channels();
-    const bool has_alpha = n == 4;
-    // JPEG and other colour-only formats cannot store alpha: drop it.
-    if (has_alpha && (options.format == "jpg" || options.format == "bmp" || options.format == "ppm")) {
-        image = select_channels(source, {0, 1, 2}, {"R", "G", "B"});
-        n = 3;
-    } else if (has_alpha && options.premultiply_alpha) {
+    if (options.premultiply_alpha)
         for (size_t p = 0; p < image.pixel_count(); ++p)
             for (int c = 0; c < 3; ++c) image.pixels[p * 4 + c] *= image.pixels[p * 4 + 3];
+    return image;
+}
+
+// Writes through `out`, already opened on a file or an in-memory proxy.
+void write_pixels(OIIO::ImageOutput& out, const Image& image, OIIO::TypeDesc type, const WriteOptions& options) {
+    bool ok;
+    if (type == OIIO::TypeDesc::UINT8) {
+        const auto codes = options.dither ? quantize_8bit_dithered(image) : quantize_8bit(image);
+        ok = out.write_image(OIIO::TypeDesc::UINT8, codes.data());
+    } else if (type == OIIO::TypeDesc::UINT16) {
+        const auto codes = quantize_16bit(image);
+        ok = out.write_image(OIIO::TypeDesc::UINT16, codes.data());
+    } else {
+        ok = out.write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
     }
+    if (!ok) throw InputError("cannot encode the image: " + out.geterror());
+    if (!out.close()) throw InputError("cannot encode the image: " + out.geterror());
+}
+
+// For the few OIIO writers that only write named files: a private temporary
+// folder, the file read back whole, and decoded once to prove it complete
+// (a writer that ignores a short write must not pass as a good image).
+std::string encode_through_file(OIIO::ImageOutput& out, const OIIO::ImageSpec& spec, const Image& image,
+                                OIIO::TypeDesc type, const WriteOptions& options) {
+    namespace fs = std::filesystem;
+    std::string folder_template = (fs::temp_directory_path() / "orb-encode-XXXXXX").string();
+    if (!::mkdtemp(folder_template.data())) throw InputError("cannot create a temporary folder to encode the image");
+    const fs::path folder(folder_template);
+    const std::string file = (folder / ("image." + options.format)).string();
+    std::error_code ec;
+    try {
+        if (!out.open(file, spec)) throw InputError("cannot encode the image: " + out.geterror());
+        write_pixels(out, image, type, options);
+        auto check = OIIO::ImageInput::open(file);
+        std::vector<float> pixels(image.pixel_count() * static_cast<size_t>(spec.nchannels));
+        if (!check || !check->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+            throw InputError("the encoded image does not read back: " + OIIO::geterror());
+        check->close();
+        std::ifstream in(file, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (in.bad()) throw InputError("cannot read back the encoded image");
+        fs::remove_all(folder, ec);
+        return bytes;
+    } catch (...) {
+        fs::remove_all(folder, ec);
+        throw;
+    }
+}
+
+}  // namespace
+
+std::string encode_image(const Image& source, const WriteOptions& options) {
+    auto out = OIIO::ImageOutput::create(options.format);
+    if (!out) throw InputError("cannot write '" + options.format + "' images: " + OIIO::geterror());
+    const Image image = prepared_for(source, options, out->supports("alpha"));
+    const int n = image.channels();
 
     const bool is_float = options.format == "exr" || options.bits == 32;
     OIIO::TypeDesc type = options.bits == 8    ? OIIO::TypeDesc::UINT8
@@ -61,21 +120,13 @@ void write_image_file(const std::string& filename, const Image& source, const Wr
     if (n == 4) spec.alpha_channel = 3;
     if (options.format == "exr") spec.attribute("compression", "zip");
 
-    auto out = OIIO::ImageOutput::create(options.format);
-    if (!out) throw InputError("cannot write '" + options.format + "' images: " + OIIO::geterror());
-    if (!out->open(filename, spec)) throw InputError("cannot write image: " + out->geterror());
-    bool ok;
-    if (type == OIIO::TypeDesc::UINT8) {
-        const auto codes = options.dither ? quantize_8bit_dithered(image) : quantize_8bit(image);
-        ok = out->write_image(OIIO::TypeDesc::UINT8, codes.data());
-    } else if (type == OIIO::TypeDesc::UINT16) {
-        const auto codes = quantize_16bit(image);
-        ok = out->write_image(OIIO::TypeDesc::UINT16, codes.data());
-    } else {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-    }
-    if (!ok) throw InputError("cannot write image: " + out->geterror());
-    if (!out->close()) throw InputError("cannot write image: " + out->geterror());
+    if (!out->supports("ioproxy")) return encode_through_file(*out, spec, image, type, options);
+    std::vector<unsigned char> buffer;
+    OIIO::Filesystem::IOVecOutput proxy(buffer);
+    if (!out->set_ioproxy(&proxy) || !out->open("memory." + options.format, spec))
+        throw InputError("cannot encode the image: " + out->geterror());
+    write_pixels(*out, image, type, options);
+    return std::string(buffer.begin(), buffer.end());
 }
 
 }  // namespace orb::image

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "gates.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
+#include "orb/cli/output_file.h"
+#include "orb/cli/output_overlap.h"
 #include "orb/cli/tool_main.h"
 #include "orb/image/color_options.h"
 #include "orb/image/compare.h"
@@ -58,12 +61,10 @@ std::string diff_image_path(const std::string& path, const std::string& pass, bo
     return (p.parent_path() / (p.stem().string() + "." + pass + p.extension().string())).string();
 }
 
-void write_heatmap(const std::string& path, const Image& heatmap) {
+WriteOptions heatmap_write_options(const std::string& path) {
     WriteOptions options;
     options.format = path == "-" ? "png" : extension_of(path);
-    options = checked_write_options(options);
-    orb::cli::write_output_via_file(
-        path, [&](const std::string& tmp) { write_image_file(tmp, heatmap, options); }, "." + options.format);
+    return checked_write_options(options);
 }
 
 std::vector<std::string> passes_to_compare(const Settings& s, const LoadedImage& a, const LoadedImage& b) {
@@ -94,6 +95,14 @@ int run(const Settings& s) {
     const bool through_display = !s.color.display.empty() || !s.color.view.empty();
     if (!s.color.look.empty() && !through_display) throw UsageError("--look needs --display/--view");
 
+    std::vector<orb::cli::NamedPath> inputs{{"reference", s.reference}, {"test", s.test}};
+    if (!s.color.config_path.empty()) inputs.push_back({"--config", s.color.config_path});
+    std::vector<orb::cli::NamedPath> outputs;
+    if (!s.json.empty()) outputs.push_back({"--json", s.json});
+    orb::cli::refuse_overlapping_paths(inputs, outputs);
+    std::optional<orb::cli::OutputFile> json_output;
+    if (!s.json.empty()) json_output.emplace(s.json, "--json");
+
     const ColorConfig config = load_color_config(s.color);
     const LoadedImage a = load_image(s.reference);
     const LoadedImage b = load_image(s.test);
@@ -112,6 +121,18 @@ int run(const Settings& s) {
 
     const std::vector<std::string> passes = passes_to_compare(s, a, b);
     if (s.diff_image == "-" && passes.size() > 1) throw UsageError("--diff-image - (stdout) needs a single pass");
+    // One heatmap per pass, named only now that the passes are known; each is
+    // checked and prepared before the comparison runs.
+    std::vector<orb::cli::OutputFile> heatmap_outputs;
+    std::optional<WriteOptions> heatmap_options;
+    if (!s.diff_image.empty()) {
+        for (const std::string& pass : passes)
+            outputs.push_back({"--diff-image", diff_image_path(s.diff_image, pass, passes.size() > 1)});
+        orb::cli::refuse_overlapping_paths(inputs, outputs);
+        heatmap_options = heatmap_write_options(s.diff_image);
+        for (const std::string& pass : passes)
+            heatmap_outputs.emplace_back(diff_image_path(s.diff_image, pass, passes.size() > 1), "--diff-image");
+    }
 
     std::vector<PassResult> results;
     Verdict overall = Verdict::Pass;
@@ -122,9 +143,8 @@ int run(const Settings& s) {
         results.push_back(std::move(r));
     }
 
-    if (!s.diff_image.empty())
-        for (const auto& r : results)
-            write_heatmap(diff_image_path(s.diff_image, r.comparison.pass, passes.size() > 1), *r.comparison.heatmap);
+    for (std::size_t i = 0; i < heatmap_outputs.size(); ++i)
+        heatmap_outputs[i].write(encode_image(*results[i].comparison.heatmap, *heatmap_options));
 
     const int code = overall == Verdict::Fail ? kExitFail
                      : overall == Verdict::Warn && s.strict ? kExitFail
@@ -153,7 +173,7 @@ int run(const Settings& s) {
                                  {"verdict", verdict_name(overall)},
                                  {"exit_code", code}};
         for (const auto& r : results) report["passes"].push_back(pass_json(r, s.gates));
-        orb::cli::write_output(s.json, report.dump(2) + "\n");
+        json_output->write(report.dump(2) + "\n");
     }
     return code;
 }

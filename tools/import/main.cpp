@@ -7,6 +7,8 @@
 #include "gltf_options.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
+#include "orb/cli/output_file.h"
+#include "orb/cli/output_overlap.h"
 #include "orb/cli/tool_main.h"
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
@@ -69,6 +71,10 @@ int run(Arguments& args) {
         args.import_options.format = orb::SceneFormat::GltfJson;
     args.import_options.gltf.strict = args.strict;
 
+    // The output is checked and prepared before anything is read or converted.
+    orb::cli::refuse_overlapping_paths({{"INPUT", args.input}}, {{"-o", args.output}});
+    orb::cli::OutputFile output(args.output, "-o");
+
     const std::string source = orb::cli::is_stdio(args.input) ? "<stdin>" : args.input;
     const std::string bytes = orb::cli::read_input(args.input);
     orb::ImportResult imported =
@@ -83,7 +89,7 @@ int run(Arguments& args) {
     } else {
         text = orb::write_scene_json(imported.scene);
     }
-    orb::cli::write_output(args.output, text);
+    output.write(text);
     return orb::cli::kSuccess;
 }
 

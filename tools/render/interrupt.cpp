@@ -30,6 +30,7 @@ void install(int signal_number) {
 void install_interrupt_handlers() {
     install(SIGINT);
     install(SIGTERM);
+    install(SIGHUP);  // a dropped ssh session or a closed terminal: save the work, like SIGTERM
 }
 
 const std::atomic<bool>& interrupt_requested() { return g_stop; }

@@ -5,6 +5,7 @@
 #include "device_listing.h"
 #include "orb/cli/tool_main.h"
 #include "render_options.h"
+#include "render_outputs.h"
 #include "render_plan.h"
 #include "render_run.h"
 
@@ -21,7 +22,11 @@ int main(int argc, char** argv) {
                 print_device_list(std::cout);
                 return orb::cli::kSuccess;
             }
+            // Outputs first: a render that cannot be written must fail before
+            // it reads a byte or builds a kernel, and the lock taken here also
+            // covers reading the file that --resume continues in place.
+            RenderOutputs outputs = prepare_render_outputs(options);
             const RenderPlan plan = make_render_plan(options);
-            return options.benchmark ? run_benchmark(plan, options) : run_render(plan, options);
+            return options.benchmark ? run_benchmark(plan, options, outputs) : run_render(plan, options, outputs);
         });
 }

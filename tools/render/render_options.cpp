@@ -1,6 +1,8 @@
 #include "render_options.h"
 
+#include <cctype>
 #include <climits>
+#include <filesystem>
 #include <cmath>
 #include <stdexcept>
 
@@ -47,6 +49,17 @@ const char* kExamples = R"(Examples:
 Exit status: 0 done, 1 failed or bad input, 2 usage error,
 130/143 stopped by SIGINT/SIGTERM (the image so far is written).
 Details: docs/orb-render.md)";
+
+// orb-render writes OpenEXR only; an EXR quietly written under another
+// format's name would fool every program that trusts the extension.
+void refuse_non_exr_output_name(const std::string& output) {
+    std::string extension = std::filesystem::path(output).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (cli::is_stdio(output) || extension.empty() || extension == ".exr") return;
+    const std::string stem = std::filesystem::path(output).replace_extension(".exr").string();
+    throw cli::UsageError("-o " + output + ": orb-render writes OpenEXR only; write " + stem +
+                          " and convert it with orb-tonemap (orb-tonemap " + stem + " -o " + output + ")");
+}
 
 }  // namespace
 
@@ -108,6 +121,7 @@ void check_option_combinations(const RenderOptions& o) {
         return;
     }
     if (o.output.empty()) throw UsageError("missing -o/--output (an EXR path, or - for stdout)");
+    refuse_non_exr_output_name(o.output);
     if (cli::is_stdio(o.output) && o.checkpoint)
         throw UsageError("--checkpoint rewrites a file while rendering and cannot go to stdout (-o -)");
     if (cli::is_stdio(o.output) && cli::is_stdio(o.stats_json))

@@ -1,7 +1,6 @@
 #include "render_run.h"
 
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 
 #include "interrupt.h"
@@ -16,19 +15,7 @@
 namespace orb::render_cli {
 namespace {
 
-namespace fs = std::filesystem;
-
 std::string device_label(const render::DeviceInfo& d) { return d.name + " (" + d.platform + ")"; }
-
-// A missing output folder is found now, not after an hour of rendering.
-void check_output_folder(const std::string& output) {
-    if (cli::is_stdio(output)) return;
-    const fs::path parent = fs::path(output).parent_path();
-    std::error_code ec;
-    if (!parent.empty() && !fs::is_directory(parent, ec))
-        throw InputError(output + ": cannot write: directory " + parent.string() + " does not exist");
-    if (fs::is_directory(output, ec)) throw InputError(output + ": is a directory, expected an EXR file name");
-}
 
 const char* stop_reason_name(render::StopReason reason) {
     switch (reason) {
@@ -41,7 +28,7 @@ const char* stop_reason_name(render::StopReason reason) {
 
 class ImageWriter {
 public:
-    ImageWriter(const RenderPlan& plan, const std::string& output, const render::Renderer& renderer)
+    ImageWriter(const RenderPlan& plan, cli::OutputFile& output, const render::Renderer& renderer)
         : output_(output), renderer_(renderer), metadata_(plan_metadata(plan)) {
         previous_seconds_ = metadata_.render_seconds;
         metadata_.device = device_label(renderer.device());
@@ -52,13 +39,11 @@ public:
     void write(double seconds_this_run) {
         const render::Film film = renderer_.read_film();
         metadata_.render_seconds = previous_seconds_ + seconds_this_run;
-        cli::write_output_via_file(
-            output_, [&](const std::string& temporary) { exr::write_film_exr(temporary, film, metadata_, options_); },
-            ".exr");
+        output_.write(exr::encode_film_exr(film, metadata_, options_));
     }
 
 private:
-    std::string output_;
+    cli::OutputFile& output_;
     const render::Renderer& renderer_;
     exr::ExrMetadata metadata_;
     exr::ExrWriteOptions options_;
@@ -76,9 +61,7 @@ RunStats base_stats(const RenderPlan& plan, const render::Renderer& renderer) {
 
 }  // namespace
 
-int run_render(const RenderPlan& plan, const RenderOptions& options) {
-    check_output_folder(options.output);
-
+int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
     render::Renderer renderer(plan.scene, plan.config);
     cli::info("device: " + device_label(renderer.device()));
     if (plan.resumed) {
@@ -88,7 +71,7 @@ int run_render(const RenderPlan& plan, const RenderOptions& options) {
     }
     const std::uint64_t start_spp = renderer.samples_per_pixel();
 
-    ImageWriter writer(plan, options.output, renderer);
+    ImageWriter writer(plan, *outputs.image, renderer);
     const double pixels = double(plan.config.width) * plan.config.height;
     ProgressReporter progress(cli::quiet(), pixels, options.time_limit.value_or(0));
 
@@ -132,11 +115,11 @@ int run_render(const RenderPlan& plan, const RenderOptions& options) {
     stats.samples_per_second = final_state.samples_per_second;
     stats.stop_reason = stop_reason_name(reason);
     stats.output = options.output;
-    if (!options.stats_json.empty()) write_stats_json(options.stats_json, stats);
+    if (outputs.stats) outputs.stats->write(stats_json(stats));
 
     const std::string summary = std::to_string(stats.spp) + " spp in " + format_duration(stats.seconds) + " (" +
                                 format_rate(stats.samples_per_second) + ") -> " +
-                                (cli::is_stdio(options.output) ? std::string("<stdout>") : options.output);
+                                outputs.image->display_name();
     if (reason == render::StopReason::Interrupted) {
         cli::warning("interrupted: wrote " + summary);
         return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
@@ -145,7 +128,7 @@ int run_render(const RenderPlan& plan, const RenderOptions& options) {
     return cli::kSuccess;
 }
 
-int run_benchmark(const RenderPlan& plan, const RenderOptions& options) {
+int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
     render::Renderer renderer(plan.scene, plan.config);
     cli::info("device: " + device_label(renderer.device()));
     const render::BenchmarkResult result = render::run_benchmark(renderer, options.benchmark_seconds);
@@ -153,7 +136,7 @@ int run_benchmark(const RenderPlan& plan, const RenderOptions& options) {
               " over " + std::to_string(result.passes) + " passes at " + std::to_string(plan.config.width) + "x" +
               std::to_string(plan.config.height));
 
-    if (!options.stats_json.empty()) {
+    if (outputs.stats) {
         RunStats stats = base_stats(plan, renderer);
         stats.spp = renderer.samples_per_pixel();
         stats.spp_this_run = stats.spp;
@@ -161,7 +144,7 @@ int run_benchmark(const RenderPlan& plan, const RenderOptions& options) {
         stats.seconds = result.seconds;
         stats.samples_per_second = result.samples_per_second;
         stats.stop_reason = "benchmark";
-        write_stats_json(options.stats_json, stats);
+        outputs.stats->write(stats_json(stats));
     }
     std::printf("samples_per_second=%.0f\n", result.samples_per_second);
     std::fflush(stdout);

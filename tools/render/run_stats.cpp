@@ -2,8 +2,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "orb/cli/io.h"
-
 namespace orb::render_cli {
 
 std::string stats_json(const RunStats& s) {
@@ -26,7 +24,5 @@ std::string stats_json(const RunStats& s) {
                              {"output", s.output}};
     return j.dump(2) + "\n";
 }
-
-void write_stats_json(const std::string& path, const RunStats& stats) { cli::write_output(path, stats_json(stats)); }
 
 }  // namespace orb::render_cli

@@ -23,6 +23,5 @@ struct RunStats {
 };
 
 std::string stats_json(const RunStats& stats);
-void write_stats_json(const std::string& path, const RunStats& stats);  // "-" = stdout, atomic otherwise
 
 }  // namespace orb::render_cli

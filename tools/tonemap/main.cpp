@@ -8,6 +8,8 @@
 #include "frame_pattern.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
+#include "orb/cli/output_file.h"
+#include "orb/cli/output_overlap.h"
 #include "orb/cli/tool_main.h"
 #include "orb/image/color_options.h"
 #include "orb/image/contact_sheet.h"
@@ -65,7 +67,26 @@ std::vector<Job> plan_jobs(const Settings& s) {
     return jobs;
 }
 
+// Every output against every input (and the colour config), before any work.
+void refuse_overlaps(const std::vector<Job>& jobs, const Settings& s) {
+    std::vector<orb::cli::NamedPath> inputs, outputs;
+    for (const Job& job : jobs) {
+        inputs.push_back({"input", job.input});
+        outputs.push_back({"-o", job.output});
+    }
+    if (!s.color.config_path.empty()) inputs.push_back({"--config", s.color.config_path});
+    orb::cli::refuse_overlapping_paths(inputs, outputs);
+}
+
 void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
+    WriteOptions options;
+    options.format = s.format.empty() ? extension_of(job.output) : s.format;
+    options.bits = s.bits;
+    options.dither = !s.no_dither;
+    options = checked_write_options(options);
+    options.premultiply_alpha = options.format == "exr" || options.format == "tif";
+    orb::cli::OutputFile output(job.output, "-o");  // fails now, before the work, if it cannot be written
+
     const LoadedImage loaded = load_image(job.input);
     DisplayView request{input_space_for(config, s.color, loaded), s.color.display, s.color.view, s.color.look,
                         s.exposure};
@@ -79,15 +100,8 @@ void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
         picture = tonemap_pass(pass, config, view);
     }
 
-    WriteOptions options;
-    options.format = s.format.empty() ? extension_of(job.output) : s.format;
-    options.bits = s.bits;
-    options.dither = !s.no_dither;
-    options = checked_write_options(options);
-    options.premultiply_alpha = options.format == "exr" || options.format == "tif";
-    orb::cli::write_output_via_file(
-        job.output, [&](const std::string& tmp) { write_image_file(tmp, picture, options); }, "." + options.format);
-    orb::cli::info("wrote " + (job.output == "-" ? std::string("<stdout>") : job.output));
+    output.write(encode_image(picture, options));
+    orb::cli::info("wrote " + output.display_name());
 }
 
 }  // namespace
@@ -136,6 +150,7 @@ int main(int argc, char** argv) {
             if (s.output == "-" && s.format.empty()) throw UsageError("-o - (stdout) needs --format, e.g. --format png");
             if (s.contact_sheet && s.pass != "beauty") throw UsageError("--contact-sheet shows every pass; drop --pass");
             const std::vector<Job> jobs = plan_jobs(s);
+            refuse_overlaps(jobs, s);
             const ColorConfig config = load_color_config(s.color);
             if (jobs.size() == 1) {
                 tonemap_one(jobs[0], s, config);

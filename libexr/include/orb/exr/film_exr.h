@@ -42,9 +42,13 @@ struct ExrWriteOptions {
     ExrCompression compression = ExrCompression::Zip;
 };
 
-// Writes `path` directly (callers wanting atomic replacement write a
-// temporary and rename). Throws std::runtime_error on I/O errors and
+// The film as the bytes of an EXR file, encoded in memory so that the caller
+// writes them safely (tools use orb::cli::OutputFile). Throws
 // std::invalid_argument for an empty film.
+std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options);
+
+// Writes `path` directly, for tests and simple callers. Throws
+// std::runtime_error on I/O errors and std::invalid_argument for an empty film.
 void write_film_exr(const std::string& path, const render::Film& film, const ExrMetadata& metadata,
                     const ExrWriteOptions& options);
 

@@ -21,8 +21,9 @@ std::string extension_of(const std::string& path);
 // throws orb::InputError for formats OIIO cannot write or bit depths they cannot hold.
 WriteOptions checked_write_options(WriteOptions options);
 
-// Writes `image` to `filename` (usually a temporary that the caller renames).
-// Throws orb::InputError on failure.
-void write_image_file(const std::string& filename, const Image& image, const WriteOptions& options);
+// The image encoded in `options.format`, in memory, so that the caller does
+// the (checked) writing. Alpha is dropped for formats that cannot store it
+// (JPEG, Radiance HDR, PPM, ...). Throws orb::InputError on failure.
+std::string encode_image(const Image& image, const WriteOptions& options);
 
 }  // namespace orb::image

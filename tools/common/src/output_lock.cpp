@@ -1,0 +1,85 @@
+#include "output_lock.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "orb/scene/error.h"
+
+namespace orb::cli::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lock_path_for(const std::string& target) {
+    const fs::path p(target);
+    std::string name(".");  // appended, not "." + string: GCC 12 warns falsely (-Wrestrict) on that form
+    name += p.filename().string();
+    name += ".lock";
+    return (p.parent_path() / name).string();
+}
+
+std::string read_holder(int fd) {
+    char buffer[32] = {};
+    const ssize_t n = ::pread(fd, buffer, sizeof buffer - 1, 0);
+    std::string pid = n > 0 ? std::string(buffer, static_cast<size_t>(n)) : std::string();
+    while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
+    return pid;
+}
+
+bool same_inode(int fd, const std::string& path) {
+    struct stat open_file {}, on_disk {};
+    if (::fstat(fd, &open_file) != 0 || ::stat(path.c_str(), &on_disk) != 0) return false;
+    return open_file.st_dev == on_disk.st_dev && open_file.st_ino == on_disk.st_ino;
+}
+
+}  // namespace
+
+HeldLock lock_output(const std::string& target, const std::string& option) {
+    const std::string path = lock_path_for(target);
+    // A holder that releases unlinks the file; whoever locked the unlinked
+    // file must try again on the new one.
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+        if (fd < 0)
+            throw InputError(target + ": cannot write (" + option + "): cannot create the lock file " + path + ": " +
+                             std::strerror(errno));
+        if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+            const int error = errno;
+            const std::string holder = read_holder(fd);
+            ::close(fd);
+            if (error == EWOULDBLOCK)
+                throw InputError(target + ": another process" + (holder.empty() ? "" : " (pid " + holder + ")") +
+                                 " is writing this output (lock " + path + "); wait for it or choose another " +
+                                 option);
+            throw InputError(target + ": cannot lock " + path + ": " + std::strerror(error));
+        }
+        if (!same_inode(fd, path)) {
+            ::close(fd);
+            continue;
+        }
+        const std::string pid = std::to_string(::getpid()) + "\n";
+        if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
+            const int error = errno;
+            ::unlink(path.c_str());
+            ::close(fd);
+            throw InputError(target + ": cannot write the lock file " + path + ": " + std::strerror(error));
+        }
+        return {fd, path};
+    }
+    throw InputError(target + ": cannot lock " + path + ": it keeps being replaced");
+}
+
+void unlock_output(HeldLock& lock) noexcept {
+    if (lock.fd < 0) return;
+    ::unlink(lock.path.c_str());
+    ::close(lock.fd);
+    lock.fd = -1;
+}
+
+}  // namespace orb::cli::detail
