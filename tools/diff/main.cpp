@@ -61,9 +61,10 @@ std::string diff_image_path(const std::string& path, const std::string& pass, bo
     return (p.parent_path() / (p.stem().string() + "." + pass + p.extension().string())).string();
 }
 
+// PNG unless the name says otherwise: stdout, a device or a FIFO has no extension.
 WriteOptions heatmap_write_options(const std::string& path) {
     WriteOptions options;
-    options.format = path == "-" ? "png" : extension_of(path);
+    options.format = extension_of(path).empty() ? "png" : extension_of(path);
     return checked_write_options(options);
 }
 

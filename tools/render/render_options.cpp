@@ -47,7 +47,7 @@ const char* kExamples = R"(Examples:
   orb-render --benchmark scenes/cornell.json --width 640 --height 480
 
 Exit status: 0 done, 1 failed or bad input, 2 usage error,
-130/143 stopped by SIGINT/SIGTERM (the image so far is written).
+129/130/143 stopped by SIGHUP/SIGINT/SIGTERM (the image so far is written).
 Details: docs/orb-render.md)";
 
 // orb-render writes OpenEXR only; an EXR quietly written under another
