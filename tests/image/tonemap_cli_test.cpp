@@ -165,6 +165,28 @@ TEST_F(TonemapCli, BadInputsFailCleanlyWithoutPartialOutput) {
         EXPECT_EQ(entry.path().filename().string().find(".out.png"), std::string::npos);
 }
 
+TEST_F(TonemapCli, MeaninglessExposureOrBitsAreUsageErrors) {
+    struct Case {
+        std::string option, value, message;
+    };
+    const std::vector<Case> cases = {
+        {"--exposure", "nan", "expected a number of stops in [-100, 100], got 'nan'"},
+        {"--exposure", "inf", "expected a number of stops in [-100, 100], got 'inf'"},
+        {"--exposure", "-inf", "expected a number of stops in [-100, 100], got '-inf'"},
+        {"--exposure", "1e6", "expected a number of stops in [-100, 100], got '1e6'"},
+        {"--bits", "12", "expected 8, 16 or 32, got '12'"},
+        {"--bits", "0", "expected 8, 16 or 32, got '0'"},
+    };
+    for (const Case& c : cases) {
+        const auto r = run(kTonemap + " " + quote(input) + " -o " + quote(dir.path("out.png")) + " " + c.option + " " + c.value);
+        EXPECT_EQ(r.exit_code, 2) << c.option << " " << c.value << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind("orb-tonemap: error: " + c.option + ": " + c.message + "\n", 0), 0u) << r.err;
+        EXPECT_FALSE(fs::exists(dir.path("out.png")));
+    }
+    for (const auto& entry : fs::directory_iterator(dir.path("")))
+        EXPECT_EQ(entry.path().filename().string(), "scene.exr");
+}
+
 TEST_F(TonemapCli, ListHonoursOcioAndConfigOverrides) {
     auto r = run(kTonemap + " --list");
     ASSERT_EQ(r.exit_code, 0) << r.err;
