@@ -42,8 +42,12 @@ void write_image_file(const std::string& filename, const Image& source, const Wr
     Image image = source;
     int n = image.channels();
     const bool has_alpha = n == 4;
-    // JPEG and other colour-only formats cannot store alpha: drop it.
-    if (has_alpha && (options.format == "jpg" || options.format == "bmp" || options.format == "ppm")) {
+    // Formats whose writer cannot store alpha (JPEG, Radiance HDR, PNM, ...)
+    // get RGB rather than an error. OIIO can write BMP's 32-bit alpha, but most
+    // readers ignore it, so BMP stays RGB as it always was.
+    const auto writer = OIIO::ImageOutput::create(options.format);
+    const bool holds_alpha = writer && writer->supports("alpha") && options.format != "bmp";
+    if (has_alpha && !holds_alpha) {
         image = select_channels(source, {0, 1, 2}, {"R", "G", "B"});
         n = 3;
     } else if (has_alpha && options.premultiply_alpha) {
