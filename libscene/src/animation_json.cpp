@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "json_reader.h"
+#include "float_limits.h"
 #include "json_text.h"
 #include "orb/scene/error.h"
-#include "orb/scene/scene_json.h"
 
 namespace orb::detail {
 namespace {
@@ -40,10 +40,7 @@ void require_magnitude(const JsonReader& r, const std::array<double, N>& values,
     for (double d : values)
         if (!std::isfinite(d)) r.fail(path, "expected finite numbers");
     for (double d : values)
-        if (std::fabs(d) > kMaxSceneMagnitude)
-            r.fail(path, "each component must be in [-" + format_number(kMaxSceneMagnitude) + ", " +
-                             format_number(kMaxSceneMagnitude) + "] (the renderer computes in 32-bit floats), got " +
-                             format_number(d));
+        if (!within_magnitude(d)) r.fail(path, magnitude_rule() + kFloatReason + format_number(d));
 }
 
 std::size_t component_count(AnimationPath path) { return path == AnimationPath::Rotation ? 4 : 3; }
@@ -260,10 +257,7 @@ void validate_animation(const Animation& animation, std::size_t sphere_count, co
                                        std::to_string(node_count) + " nodes)");
         require_magnitude(r, b.center, path + ".center");
         if (!(b.radius > 0) || !std::isfinite(b.radius)) r.fail(path + ".radius", "must be > 0");
-        if (b.radius < kMinScenePositive || b.radius > kMaxSceneMagnitude)
-            r.fail(path + ".radius", "must be in [" + format_number(kMinScenePositive) + ", " +
-                                         format_number(kMaxSceneMagnitude) +
-                                         "] (the renderer computes in 32-bit floats), got " + format_number(b.radius));
+        if (!positive_in_range(b.radius)) r.fail(path + ".radius", positive_rule() + kFloatReason + format_number(b.radius));
     }
     if (animation.camera_node >= 0 && std::size_t(animation.camera_node) >= node_count)
         r.fail("animation.camera.node", "index " + std::to_string(animation.camera_node) + " is out of range (there are " +
