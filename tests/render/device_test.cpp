@@ -54,11 +54,14 @@ private:
     std::string old_;
 };
 
+// Orb's cached binaries and any temporaries; PoCL keeps its own cache in the
+// pocl/ folder beside them (docs/orb-render.md), which is not counted.
 std::vector<fs::path> files_in(const fs::path& dir)
 {
     std::vector<fs::path> out;
     if (fs::exists(dir))
-        for (const auto& entry : fs::directory_iterator(dir)) out.push_back(entry.path());
+        for (const auto& entry : fs::directory_iterator(dir))
+            if (entry.is_regular_file()) out.push_back(entry.path());
     return out;
 }
 
