@@ -129,7 +129,9 @@ TEST(KernelBuild, FailureCarriesTheBuildLog)
     const fs::path dir = fs::temp_directory_path() / ("orb-broken-kernels-" + std::to_string(::getpid()));
     fs::create_directories(dir);
     for (const kernels::EmbeddedKernel& k : kernels::embedded_kernels()) {
-        std::ofstream out(dir / std::string(k.file_name));
+        const fs::path file = dir / std::string(k.file_name);
+        fs::create_directories(file.parent_path());
+        std::ofstream out(file);
         out << k.source;
         if (k.file_name == "integrator.cl") out << "\nthis_is_not_opencl_c;\n";
     }
