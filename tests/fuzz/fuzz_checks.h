@@ -19,4 +19,8 @@ void check_scn_input(std::string_view bytes);
 // load(write(scene)) == scene.
 void check_scene_json_input(std::string_view bytes);
 
+// import_ply either rejects the bytes or returns a valid scene with
+// load(write(scene)) == scene in Orb JSON.
+void check_ply_input(std::string_view bytes);
+
 }  // namespace orb::fuzz

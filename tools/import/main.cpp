@@ -1,4 +1,4 @@
-// orb-import: any scene Orb can read (Orb JSON, SmallptGPU .scn, glTF, GLB)
+// orb-import: any scene Orb can read (Orb JSON, SmallptGPU .scn, glTF, GLB, PLY)
 // -> the canonical Orb JSON scene, or back to .scn (docs/orb-import.md).
 #include <filesystem>
 #include <string>
@@ -15,16 +15,18 @@
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
 #include "output_format.h"
+#include "ply_options.h"
 
 namespace {
 
 constexpr const char* kDescription =
-    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb) to the canonical Orb JSON scene,\n"
+    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb, PLY point cloud) to the canonical Orb JSON scene,\n"
     "or write it back as SmallptGPU .scn. The input format is recognised by content.";
 
 constexpr const char* kExamples = R"(Examples:
   orb-import scenes/cornell.scn -o cornell.json      .scn -> Orb JSON
   orb-import model.glb > model.json                  glTF binary -> Orb JSON on stdout
+  orb-import cloud.ply --radius 0.01 -o cloud.json   PLY point cloud -> spheres, camera, lights
   orb-import cornell.json --to scn -o cornell.scn    Orb JSON -> .scn (warns about losses)
   orb-import model.gltf --to scn --strict -o m.scn   fail instead of losing anything
   cat scene.txt | orb-import - --from scn            read stdin, say what it is
@@ -64,11 +66,12 @@ int run(Arguments& args) {
     using orb::import_tool::OutputFormat;
     const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
     if (!args.from.empty()) args.import_options.format = orb::scene_format_from_name(args.from);
-    // A .gltf/.glb name means glTF even when the content is too broken to recognise,
+    // A .gltf/.glb (.ply) name means glTF (PLY) even when the content is too broken to recognise,
     // so that the glTF reader (not the .scn one) explains what is wrong.
     const std::string extension = std::filesystem::path(args.input).extension().string();
     if (args.from.empty() && (extension == ".gltf" || extension == ".glb"))
         args.import_options.format = orb::SceneFormat::GltfJson;
+    if (args.from.empty() && extension == ".ply") args.import_options.format = orb::SceneFormat::Ply;
     args.import_options.gltf.strict = args.strict;
 
     // The output is checked and prepared before anything is read or converted.
@@ -104,8 +107,8 @@ int main(int argc, char** argv) {
             app.add_option("-o,--output", args.output, "Where to write; - (the default) writes stdout")
                 ->option_text("FILE");
             app.add_option("--from", args.from, "Input format, instead of recognising it by content")
-                ->check(CLI::IsMember({"orb", "json", "scn", "gltf", "glb"}))
-                ->option_text("orb|scn|gltf|glb");
+                ->check(CLI::IsMember({"orb", "json", "scn", "gltf", "glb", "ply"}))
+                ->option_text("orb|scn|gltf|glb|ply");
             app.add_option("--to", args.to,
                            "Output format: orb (Orb JSON) or scn; default from the -o extension (.scn), else orb")
                 ->check(CLI::IsMember({"orb", "json", "scn"}))
@@ -113,6 +116,7 @@ int main(int argc, char** argv) {
             app.add_flag("--strict", args.strict,
                          "Fail (exit 1, no output) instead of warning when information would be lost");
             orb::import_tool::add_gltf_options(app, args.import_options.gltf);
+            orb::import_tool::add_ply_options(app, args.import_options.ply);
             app.footer(kExamples);
         },
         [&] { return run(args); });
