@@ -5,6 +5,7 @@
 
 #include "orb/scene/error.h"
 #include "orb/scene/ply.h"
+#include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
 
@@ -24,6 +25,7 @@ std::string_view skip_bom_and_space(std::string_view bytes) {
 SceneFormat detect_scene_format(std::string_view bytes) {
     if (bytes.substr(0, 4) == "glTF") return SceneFormat::Glb;
     if (has_ply_magic(bytes)) return SceneFormat::Ply;
+    if (has_scene_binary_magic(bytes)) return SceneFormat::OrbBinary;
     std::string_view text = skip_bom_and_space(bytes);
     if (text.empty()) return SceneFormat::Unknown;
     if (text.front() == '{') {
@@ -48,6 +50,7 @@ SceneFormat scene_format_from_name(const std::string& name) {
     if (name == "gltf") return SceneFormat::GltfJson;
     if (name == "glb") return SceneFormat::Glb;
     if (name == "ply") return SceneFormat::Ply;
+    if (name == "orb-binary") return SceneFormat::OrbBinary;
     return SceneFormat::Unknown;
 }
 
@@ -58,6 +61,7 @@ const char* scene_format_name(SceneFormat format) {
         case SceneFormat::GltfJson: return "gltf";
         case SceneFormat::Glb: return "glb";
         case SceneFormat::Ply: return "ply";
+        case SceneFormat::OrbBinary: return "orb-binary";
         case SceneFormat::Unknown: break;
     }
     return "unknown";
@@ -76,6 +80,7 @@ ImportResult import_scene(std::string_view bytes, const std::string& source, con
             return {std::move(result.scene), std::move(result.warnings)};
         }
         case SceneFormat::Ply: return {import_ply(bytes, source, options.ply), {}};
+        case SceneFormat::OrbBinary: return {load_scene_binary(bytes, source), {}};
         case SceneFormat::Unknown: break;
     }
     throw InputError(source + ": empty input, expected a scene (Orb JSON, .scn, .gltf, .glb or .ply)");

@@ -11,10 +11,10 @@
 
 namespace orb {
 
-enum class SceneFormat { Unknown, OrbJson, Scn, GltfJson, Glb, Ply };
+enum class SceneFormat { Unknown, OrbJson, Scn, GltfJson, Glb, Ply, OrbBinary };
 
 SceneFormat detect_scene_format(std::string_view bytes);
-SceneFormat scene_format_from_name(const std::string& name);  // "orb","json","scn","gltf","glb","ply"
+SceneFormat scene_format_from_name(const std::string& name);  // "orb","json","scn","gltf","glb","ply","orb-binary"
 const char* scene_format_name(SceneFormat format);
 
 struct ImportOptions {
