@@ -85,6 +85,7 @@ void frame_cloud(Scene& scene, const Vec3& center, double radius, const std::str
 // (outside the camera's view): a key light from the upper left giving an
 // irradiance of 0.8·π at the centre and a fill light from the right giving
 // 0.3·π. A sphere of radiance L seen at sin θ = 1/4 gives E = π·L/16.
+// They are the last two spheres and materials.
 void add_default_lights(Scene& scene, const Vec3& center, double radius) {
     struct Light {
         const char* name;
@@ -98,8 +99,9 @@ void add_default_lights(Scene& scene, const Vec3& center, double radius) {
         material.color = {0, 0, 0};
         material.emission = {light.radiance, light.radiance, light.radiance};
         scene.materials.push_back(material);
+        // Unnamed like the points (the material names it): a cloud's binary
+        // form then needs no name section at all.
         Sphere sphere;
-        sphere.name = light.name;
         const Vec3 d = normalized(light.direction);
         for (int c = 0; c < 3; ++c) sphere.center[c] = center[c] + d[c] * 4 * radius;
         sphere.radius = radius;

@@ -104,7 +104,7 @@ TEST(PlyScene, TheAutomaticCameraSeesEveryPointAndNoLight) {
             } else {
                 bool outside = false;
                 for (double plane : d) outside = outside || plane < -s.radius;
-                EXPECT_TRUE(outside) << s.name << " is in view";
+                EXPECT_TRUE(outside) << scene.materials[s.material].name << " is in view";
             }
         }
     }
