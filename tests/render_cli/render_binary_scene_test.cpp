@@ -1,5 +1,6 @@
 // orb-render reads the binary scene form (recognised by its magic) and
-// renders exactly what it renders from the same scene as JSON.
+// renders exactly what it renders from the same scene as JSON; it reads PLY
+// clouds too, through the same importer as orb-import.
 #include <fstream>
 
 #include "cli_fixture.h"
@@ -39,4 +40,17 @@ TEST_F(RenderCli, BrokenBinarySceneIsOneErrorAndNoImage) {
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_NE(run.err.find("broken.orb: truncated"), std::string::npos) << run.err;
     EXPECT_EQ(files(), std::vector<std::string>{"broken.orb"});
+}
+
+TEST_F(RenderCli, PlyCloudRendersWithItsAutomaticCameraAndLights) {
+    std::ofstream(path("cloud.ply"), std::ios::binary)
+        << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+           "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n"
+           "0 0 0 255 255 255\n1 0 0 255 0 0\n0 1 0 0 255 0\n";
+    const auto run = render({path("cloud.ply"), "-o", path("cloud.exr"), "--width", "16", "--height", "12", "--spp", "2"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto raw = read_raw_exr(path("cloud.exr"));
+    double total = 0;
+    for (float v : raw.channels.at("R")) total += v;
+    EXPECT_GT(total, 0.0) << "the default lights must light the cloud the camera sees";
 }
