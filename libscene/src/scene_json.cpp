@@ -14,6 +14,7 @@
 #include "json_reader.h"
 #include "json_text.h"
 #include "orb/scene/error.h"
+#include "scene_json_spheres.h"
 
 namespace orb {
 namespace {
@@ -231,6 +232,8 @@ void validate_scene(const Scene& scene, const std::string& source) {
     }
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
+        // Building the messages below costs more than the checks: skip them for a valid sphere.
+        if (all_finite(s.center) && std::isfinite(s.radius) && s.radius > 0 && s.material < scene.materials.size()) continue;
         const std::string path = "spheres[" + std::to_string(i) + "]";
         check_coordinates(s.center, source, path + ".center");
         check(std::isfinite(s.radius) && s.radius > 0, source, path + ".radius", "must be > 0, got " + fmt(s.radius));
@@ -313,21 +316,22 @@ std::string write_scene_json(const Scene& scene) {
     }
     document["materials"] = std::move(materials);
 
-    ordered_json spheres = ordered_json::array();
-    for (const Sphere& s : scene.spheres) {
-        ordered_json sphere;
-        sphere["name"] = s.name;
-        sphere["center"] = vec3_json(s.center);
-        sphere["radius"] = s.radius;
-        sphere["material"] = s.material;
-        spheres.push_back(std::move(sphere));
-    }
-    document["spheres"] = std::move(spheres);
+    // The spheres are written directly (scene_json_spheres.h) in place of the
+    // empty array that format_json puts last: "  \"spheres\": []\n}".
+    document["spheres"] = ordered_json::array();
+    std::string text = detail::format_json(document);
+    text.resize(text.size() - 4);
+    text += detail::format_spheres_json(scene.spheres);
 
     ordered_json animation = detail::animation_to_json(scene.animation);
-    if (!animation.is_null()) document["animation"] = std::move(animation);
-
-    return detail::format_json(document) + "\n";
+    if (!animation.is_null()) {
+        ordered_json wrapper;  // formats as "{\n  \"animation\": ...\n}"
+        wrapper["animation"] = std::move(animation);
+        const std::string part = detail::format_json(wrapper);
+        text += ",\n";
+        text.append(part, 2, part.size() - 4);
+    }
+    return text + "\n}\n";
 }
 
 std::string scene_content_hash(const Scene& scene) {

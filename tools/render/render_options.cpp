@@ -78,7 +78,7 @@ void refuse_non_exr_output_name(const std::string& output) {
 }  // namespace
 
 void add_render_options(CLI::App& app, RenderOptions& o) {
-    app.add_option("SCENE", o.scene, "Scene file (Orb JSON, .scn, glTF) or - for stdin");
+    app.add_option("SCENE", o.scene, "Scene file (Orb JSON or binary .orb, .scn, glTF, PLY) or - for stdin");
     app.add_option("-o,--output", o.output, "Output EXR, or - for stdout");
     app.add_flag("--list-devices", o.list_devices, "List OpenCL devices and exit");
     app.add_option("--device", o.device, "Device index or name substring (default: fastest GPU, else CPU)");
