@@ -233,7 +233,10 @@ void validate_scene(const Scene& scene, const std::string& source) {
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
         // Building the messages below costs more than the checks: skip them for a valid sphere.
-        if (all_finite(s.center) && std::isfinite(s.radius) && s.radius > 0 && s.material < scene.materials.size()) continue;
+        // (The same rules as the checks below, all of them: a valid sphere passes both or neither.)
+        if (all_finite(s.center) && within_magnitude(s.center) && std::isfinite(s.radius) && s.radius > 0 &&
+            detail::positive_in_range(s.radius) && s.material < scene.materials.size())
+            continue;
         const std::string path = "spheres[" + std::to_string(i) + "]";
         check_coordinates(s.center, source, path + ".center");
         check(std::isfinite(s.radius) && s.radius > 0, source, path + ".radius", "must be > 0, got " + fmt(s.radius));

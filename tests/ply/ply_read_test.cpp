@@ -73,14 +73,15 @@ TEST(PlyRead, EveryScalarTypeAndAliasReadsItsValues) {
         {"uint8", {1, 2, 3}},             {"short", {-32768, 0, 32767}},  {"int16", {-3, 4, 5}},
         {"ushort", {0, 40000, 65535}},    {"uint16", {6, 7, 8}},          {"int", {-2147483648.0, 0, 2147483647}},
         {"int32", {-9, 10, 11}},          {"uint", {0, 3000000000.0, 4294967295.0}},
-        {"uint32", {12, 13, 14}},         {"float", {0.5, -1.25, 1e30}},  {"float32", {3.5, 4.5, -5.5}},
-        {"double", {0.1, -1e300, 1e-300}}, {"float64", {0.3, 0.7, 123456789.125}},
+        {"uint32", {12, 13, 14}},         {"float", {0.5, -1.25, 1e15}},  {"float32", {3.5, 4.5, -5.5}},
+        {"double", {0.1, -9.75e14, 1e-300}}, {"float64", {0.3, 0.7, 123456789.125}},
     };
     for (const auto& [type, values] : types) {
         for (const std::string& encoding : kEncodings) {
             const PlyTestElement vertex{"vertex", {{type, "x", ""}, {type, "y", ""}, {type, "z", ""}}, {values}};
-            // A radius as large as the largest value keeps the automatic camera placeable.
-            const Scene scene = import_ply(make_ply(encoding, {vertex}), "types.ply", {.radius = 1e300});
+            // A radius as large as the largest value keeps the automatic camera placeable
+            // (and within the scene's float range, 1e18).
+            const Scene scene = import_ply(make_ply(encoding, {vertex}), "types.ply", {.radius = 1e15});
             Vec3 expected{values[0], values[1], values[2]};
             if (type == "float" || type == "float32")
                 for (double& v : expected) v = static_cast<float>(v);
