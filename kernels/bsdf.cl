@@ -25,10 +25,10 @@ inline float fresnel_dielectric(float cos_i, float eta, float* cos_t)
 
 // d: incoming ray direction (towards the surface); n: unit normal facing the
 // ray (dot(d, n) < 0); entering: the ray arrives from outside the sphere.
-inline BsdfSample sample_bsdf(const SphereRecord* m, float3 d, float3 n, bool entering, float u, float v, float w)
+inline BsdfSample sample_bsdf(const ShadingSphere* m, float3 d, float3 n, bool entering, float u, float v, float w)
 {
     BsdfSample s;
-    if (m->type == MATERIAL_DIFFUSE) {
+    if (m->kind == MaterialKind_Diffuse) {
         float cos_theta;
         s.dir = sample_cosine_hemisphere(n, u, v, &cos_theta);
         s.weight = m->color;  // (color / pi) * cos / (cos / pi)
@@ -40,7 +40,7 @@ inline BsdfSample sample_bsdf(const SphereRecord* m, float3 d, float3 n, bool en
     s.pdf = 0.0f;
     s.weight = m->color;
     s.dir = reflected;
-    if (m->type == MATERIAL_MIRROR) return s;
+    if (m->kind == MaterialKind_Mirror) return s;
 
     const float eta = entering ? 1.0f / m->ior : m->ior;
     float cos_t;

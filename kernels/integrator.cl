@@ -7,9 +7,6 @@
 // still traced, for the emission it may hit (the BSDF half of the MIS pair at
 // that vertex), but it scatters no further.
 
-#define MODE_GLOBAL 0
-#define MODE_DIRECT 1
-
 // Russian roulette applies from this scattering event on.
 #define RR_START_EVENT 2
 
@@ -65,7 +62,7 @@ inline void begin_path(PathState* path, PathSample* out, float3 o, float3 d)
 }
 
 // Starts sample `sample` of pixel (x, y) at the camera (RNG block 0).
-inline void begin_camera_path(const CameraView* cam, int x, int y, int width, int height, uint pixel, ulong sample,
+inline void begin_camera_path(const CameraParams* cam, int x, int y, int width, int height, uint pixel, ulong sample,
                               uint2 seed, PathState* path, PathSample* out)
 {
     const Rand5 c = rng_block(pixel, sample, 0u, seed);
@@ -81,7 +78,7 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
 {
     const Hit hit = intersect_scene(scene, path->o, path->d, path->self);
     if (hit.id < 0) return false;
-    const SphereRecord m = load_sphere(scene, hit.id);
+    const ShadingSphere m = load_sphere(scene, hit.id);
     const float3 d = path->d;
     const float3 p = path->o + hit.t * d;
     const float3 outward = (p - m.centre) * (1.0f / m.radius);
@@ -95,7 +92,7 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
 
     const int light_count = scene->light_count;
     // Global mode picks one light uniformly per vertex; direct mode samples every light.
-    const float pick_pdf = mode == MODE_DIRECT ? 1.0f : 1.0f / (float)max(light_count, 1);
+    const float pick_pdf = mode == IntegratorMode_Direct ? 1.0f : 1.0f / (float)max(light_count, 1);
 
     if (m.emission.x + m.emission.y + m.emission.z > 0.0f) {
         float weight = 1.0f;  // after the camera or a specular event only this strategy exists
@@ -109,19 +106,19 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
 
     if (depth == max_depth) return false;
     // Direct mode: the ray after the first diffuse vertex was traced only for its emission.
-    if (mode == MODE_DIRECT && path->diffuse_vertices == 1) return false;
+    if (mode == IntegratorMode_Direct && path->diffuse_vertices == 1) return false;
 
     const Rand5 r = rng_block(pixel, sample, (uint)(depth + 1), seed);
-    if (m.type == MATERIAL_DIFFUSE) {
+    if (m.kind == MaterialKind_Diffuse) {
         const int vertices = ++path->diffuse_vertices;
         if (!path->albedo_set) {
             out->albedo = path->beta * m.color;
             path->albedo_set = true;
         }
-        if (mode == MODE_DIRECT) {
+        if (mode == IntegratorMode_Direct) {
             for (int i = 0; i < light_count; ++i)
                 add_by_diffuse_count(out, vertices,
-                                     path->beta * estimate_direct_light(scene, scene->lights[i], 1.0f, p, n, hit.id,
+                                     path->beta * estimate_direct_light(scene, scene->lights[i].sphere, 1.0f, p, n, hit.id,
                                                                         m.color, r.u0, r.u1));
         } else if (light_count > 0) {
             // One uniform number picks the light and, rescaled, samples it.
@@ -129,7 +126,7 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
             const int pick = min((int)scaled, light_count - 1);
             const float u = fmin(scaled - (float)pick, 0x1.fffffep-1f);
             add_by_diffuse_count(out, vertices,
-                                 path->beta * estimate_direct_light(scene, scene->lights[pick], pick_pdf, p, n, hit.id,
+                                 path->beta * estimate_direct_light(scene, scene->lights[pick].sphere, pick_pdf, p, n, hit.id,
                                                                     m.color, u, r.u1));
         }
     }
@@ -156,43 +153,33 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
     return true;
 }
 
-__kernel void render_pass(__global float* film_radiance, __global float* film_radiance_sq,
-                          __global float* film_direct, __global float* film_indirect, __global float* film_emission,
-                          __global float* film_albedo, __global float* film_normal, __global float* film_alpha,
-                          __global float* film_depth, __global float* film_object_id,
-                          SCENE_MEM const float4* packets, int packet_count, int sphere_count,
-                          SCENE_MEM const float4* records,
-                          SCENE_MEM const int* lights, int light_count,
-                          float4 cam_origin, float4 cam_right, float4 cam_up, float4 cam_forward,
-                          float4 cam_lens,  // half_width, half_height, lens_radius, focus_distance
-                          int width, int height, uint sample_start_lo, uint sample_start_hi, int sample_count,
-                          uint seed_lo, uint seed_hi, int max_depth, int mode, int write_centre_ray)
+// The signature is generated from ORB_RENDER_PASS_ARGUMENTS (device_types.h),
+// the list the host binds from: film sums, scene tables, then the parameters.
+#define ORB_KERNEL_FILM_ARG(name) __global float* name,
+#define ORB_KERNEL_TABLE_ARG(type, name) SCENE_MEM const type* name,
+#define ORB_KERNEL_PARAMS_ARG(type, name) type name
+__kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG))
 {
+    const int width = params.settings.width;
+    const int height = params.settings.height;
     const int x = get_global_id(0);
     const int y = get_global_id(1);
     if (x >= width || y >= height) return;
     const uint pixel = (uint)y * (uint)width + (uint)x;
 
     SceneView scene;
-    scene.packets = packets;
-    scene.packet_count = packet_count;
-    scene.sphere_count = sphere_count;
-    scene.records = records;
-    scene.lights = lights;
-    scene.light_count = light_count;
+#define ORB_SCENE_VIEW_SET_TABLE(type, name) scene.name = name;
+    ORB_RENDER_PASS_ARGUMENTS(ORB_SCENE_VIEW_FILM, ORB_SCENE_VIEW_SET_TABLE, ORB_SCENE_VIEW_PARAMS)
+    scene.packet_count = params.scene.packet_count;
+    scene.sphere_count = params.scene.sphere_count;
+    scene.light_count = params.scene.light_count;
 
-    CameraView cam;
-    cam.origin = cam_origin.xyz;
-    cam.right = cam_right.xyz;
-    cam.up = cam_up.xyz;
-    cam.forward = cam_forward.xyz;
-    cam.half_width = cam_lens.x;
-    cam.half_height = cam_lens.y;
-    cam.lens_radius = cam_lens.z;
-    cam.focus_distance = cam_lens.w;
-
-    const uint2 seed = (uint2)(seed_lo, seed_hi);
-    const ulong first_sample = ((ulong)sample_start_hi << 32) | (ulong)sample_start_lo;
+    const CameraParams cam = params.camera;
+    const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);
+    const int max_depth = params.settings.max_depth;
+    const int mode = params.settings.mode;
+    const ulong first_sample = ((ulong)params.pass.first_sample_hi << 32) | (ulong)params.pass.first_sample_lo;
+    const int sample_count = params.pass.sample_count;
 
     float3 sum_radiance = (float3)(0.0f), sum_radiance_sq = (float3)(0.0f);
     float3 sum_direct = (float3)(0.0f), sum_indirect = (float3)(0.0f), sum_emission = (float3)(0.0f);
@@ -240,9 +227,9 @@ __kernel void render_pass(__global float* film_radiance, __global float* film_ra
     film_add3(film_normal, pixel, sum_normal);
     film_add1(film_alpha, pixel, sum_alpha);
 
-    if (write_centre_ray) {
+    if (params.pass.write_centre_ray) {
         // Depth and object id are not averages: they come from the pixel-centre ray.
-        CameraView pinhole = cam;  // through the lens centre
+        CameraParams pinhole = cam;  // through the lens centre
         pinhole.lens_radius = 0.0f;
         float3 o, d;
         camera_ray(&pinhole, (float)x + 0.5f, (float)y + 0.5f, width, height, 0.0f, 0.0f, &o, &d);

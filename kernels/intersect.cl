@@ -27,10 +27,11 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
     const int4 lane = (int4)(0, 1, 2, 3);
     const int4 self4 = (int4)(self);
     for (int p = 0; p < scene->packet_count; ++p) {
-        const float4 ocx = (float4)(o.x) - scene->packets[4 * p + 0];
-        const float4 ocy = (float4)(o.y) - scene->packets[4 * p + 1];
-        const float4 ocz = (float4)(o.z) - scene->packets[4 * p + 2];
-        const float4 radius2 = scene->packets[4 * p + 3];
+        SCENE_MEM const SpherePacket* packet = &scene->packets[p];
+        const float4 ocx = (float4)(o.x) - packet->centre_x;
+        const float4 ocy = (float4)(o.y) - packet->centre_y;
+        const float4 ocz = (float4)(o.z) - packet->centre_z;
+        const float4 radius2 = packet->radius2;
         const float4 b = ocx * d.x + ocy * d.y + ocz * d.z;
         const float4 fx = ocx - b * d.x;
         const float4 fy = ocy - b * d.y;
@@ -59,19 +60,23 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 #else
 // One sphere per step, for GPUs: a GPU thread executes float4 arithmetic one
 // lane at a time, so packets would only add the padding lanes' work. Reads
-// the same packet layout; same roots and rules as the packet version.
+// the same packets (lane i & 3 of packet i >> 2); same roots and rules as
+// the packet version.
+inline float packet_lane(SCENE_MEM const float4* v, int lane) { return ((SCENE_MEM const float*)v)[lane]; }
+
 inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 {
-    SCENE_MEM const float* lanes = (SCENE_MEM const float*)scene->packets;
     Hit hit;
     hit.t = ORB_NO_HIT;
     hit.id = -1;
     for (int i = 0; i < scene->sphere_count; ++i) {
-        SCENE_MEM const float* packet = lanes + 16 * (i >> 2) + (i & 3);
-        const float3 oc = o - (float3)(packet[0], packet[4], packet[8]);
+        SCENE_MEM const SpherePacket* packet = &scene->packets[i >> 2];
+        const int lane = i & 3;
+        const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
+                                       packet_lane(&packet->centre_z, lane));
         const float b = dot(oc, d);
         const float3 f = oc - b * d;
-        const float disc = packet[12] - dot(f, f);
+        const float disc = packet_lane(&packet->radius2, lane) - dot(f, f);
         if (disc < 0.0f) continue;
         const float s = sqrt(disc);
         const float t_near = -b - s;

@@ -52,7 +52,7 @@ inline float3 sample_light_direction(float3 p, int self, int light_id, float3 ce
 inline float3 estimate_direct_light(const SceneView* scene, int light_id, float pick_pdf, float3 p, float3 n,
                                     int self, float3 albedo, float u, float v)
 {
-    const SphereRecord light = load_sphere(scene, light_id);
+    const ShadingSphere light = load_sphere(scene, light_id);
     float direction_pdf;
     const float3 wi = sample_light_direction(p, self, light_id, light.centre, light.radius, u, v, &direction_pdf);
     const float cos_theta = dot(n, wi);

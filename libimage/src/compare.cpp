@@ -71,7 +71,7 @@ PassComparison compare_pass(const LoadedImage& reference, const LoadedImage& tes
     }
     result.channels = a.channel_names;
     result.stats = compute_error_stats(a, b);
-    for (double t : s.thresholds) result.percent_over.push_back(percent_pixels_over(a, b, t));
+    for (const Tolerance& t : s.thresholds) result.percent_over.push_back(percent_pixels_over(a, b, t));
     if (s.want_heatmap)
         result.heatmap = result.flip ? magma_heatmap(result.flip->error, result.width, result.height)
                                      : normalized_heatmap(a, b);

@@ -1,5 +1,6 @@
 #include "orb/image/metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -14,6 +15,13 @@ double abs_difference(float r, float t) {
     if (r == t) return 0.0;
     if (std::isnan(r) || std::isnan(t)) return std::numeric_limits<double>::infinity();
     return std::fabs(static_cast<double>(t) - static_cast<double>(r));
+}
+
+bool differs(float r, float t, Tolerance tolerance) {
+    const double difference = abs_difference(r, t);
+    if (std::isinf(difference)) return true;  // else an infinite max(|r|, |t|) would excuse it
+    const double larger = std::max(std::fabs(static_cast<double>(r)), std::fabs(static_cast<double>(t)));
+    return difference > tolerance.absolute + tolerance.relative * larger;
 }
 
 void check_same_shape(const Image& a, const Image& b) {
@@ -60,7 +68,7 @@ ErrorStats compute_error_stats(const Image& reference, const Image& test) {
     return s;
 }
 
-double percent_pixels_over(const Image& reference, const Image& test, double threshold) {
+double percent_pixels_over(const Image& reference, const Image& test, Tolerance tolerance) {
     check_same_shape(reference, test);
     const int n = reference.channels();
     const size_t pixels = reference.pixel_count();
@@ -68,7 +76,7 @@ double percent_pixels_over(const Image& reference, const Image& test, double thr
     size_t over = 0;
     for (size_t p = 0; p < pixels; ++p) {
         for (int c = 0; c < n; ++c) {
-            if (abs_difference(reference.pixels[p * n + c], test.pixels[p * n + c]) > threshold) {
+            if (differs(reference.pixels[p * n + c], test.pixels[p * n + c], tolerance)) {
                 ++over;
                 break;
             }

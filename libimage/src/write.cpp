@@ -44,8 +44,9 @@ WriteOptions checked_write_options(WriteOptions options) {
 
 namespace {
 
-// Drops alpha for formats that cannot store it and premultiplies it for
-// those that store associated alpha.
+// Drops alpha for formats that cannot store it (JPEG, Radiance HDR, PNM, ...:
+// RGB rather than an error) and premultiplies it for those that store
+// associated alpha.
 Image prepared_for(const Image& source, const WriteOptions& options, bool format_has_alpha) {
     if (source.channels() != 4) return source;
     if (!format_has_alpha) return select_channels(source, {0, 1, 2}, {"R", "G", "B"});
@@ -107,7 +108,8 @@ std::string encode_through_file(OIIO::ImageOutput& out, const OIIO::ImageSpec& s
 std::string encode_image(const Image& source, const WriteOptions& options) {
     auto out = OIIO::ImageOutput::create(options.format);
     if (!out) throw InputError("cannot write '" + options.format + "' images: " + OIIO::geterror());
-    const Image image = prepared_for(source, options, out->supports("alpha"));
+    // OIIO can write BMP's 32-bit alpha, but most readers ignore it: BMP stays RGB, as it always was.
+    const Image image = prepared_for(source, options, out->supports("alpha") && options.format != "bmp");
     const int n = image.channels();
 
     const bool is_float = options.format == "exr" || options.bits == 32;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "opencl_devices.h"
+#include "pocl_cache_dir.h"
 
 namespace orb::render {
 namespace {
@@ -14,6 +15,7 @@ const char* const kInstallPocl =
 
 std::vector<cl::Platform> platforms_or_throw()
 {
+    prepare_pocl_cache_dir();  // before PoCL loads, or it may offer no platform
     std::vector<cl::Platform> platforms;
     try {
         cl::Platform::get(&platforms);

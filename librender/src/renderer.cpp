@@ -6,6 +6,7 @@
 
 #include "device_film.h"
 #include "opencl_devices.h"
+#include "pass_arguments.h"
 #include "pass_tuner.h"
 #include "program_build.h"
 #include "program_source.h"
@@ -30,18 +31,6 @@ std::string nvidia_register_cap(const cl::Device& device)
 constexpr double kGpuPassSeconds = 0.05;
 constexpr double kCpuPassSeconds = 0.25;
 
-template <typename T>
-cl::Buffer read_only_buffer(const cl::Context& context, const std::vector<T>& data)
-{
-    // OpenCL has no empty buffers; a scene without spheres or lights still needs one.
-    static const T placeholder{};
-    const void* bytes = data.empty() ? static_cast<const void*>(&placeholder) : data.data();
-    const size_t size = std::max<size_t>(1, data.size()) * sizeof(T);
-    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, size, const_cast<void*>(bytes));
-}
-
-cl_float4 to_cl(const Float4& v) { return {{v[0], v[1], v[2], v[3]}}; }
-
 [[noreturn]] void rethrow_as_runtime_error(const cl::Error& error, const std::string& what)
 {
     throw std::runtime_error(what + ": " + describe_cl_error(error));
@@ -58,20 +47,18 @@ struct Renderer::Impl {
     cl::Program program;
     cl::Kernel kernel;
     SceneLayout scene;
-    CameraLayout camera;
-    cl::Buffer packets, records, lights;
+    SceneBuffers scene_buffers;
     std::unique_ptr<DeviceFilm> film;
+    device::RenderPassParams params{};  // all but params.pass is fixed for the render
     cl::NDRange local_size;
     cl::NDRange global_size;
     std::uint64_t spp = 0;
     bool centre_ray_pending = true;  // depth/id of the pixel-centre ray not yet on the film
     PassTuner tuner{kCpuPassSeconds};
-    cl_uint arg_sample_start = 0;  // kernel argument positions of the per-pass values
-    cl_uint arg_write_centre = 0;
 
     Impl(const Scene& input, const RenderConfig& cfg);
     void choose_work_sizes();
-    void set_fixed_arguments();
+    void fill_fixed_params(const Camera& camera);
 };
 
 Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
@@ -81,7 +68,7 @@ Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
                                     std::to_string(config.height));
     if (config.max_depth < 0) throw std::invalid_argument("max depth must not be negative");
     scene = layout_scene(input);
-    camera = layout_camera(input.camera, config.width, config.height);
+    fill_fixed_params(input.camera);
     info = choose_device(config.device);
     tuner = PassTuner(info.is_gpu ? kGpuPassSeconds : kCpuPassSeconds);
     try {
@@ -90,10 +77,14 @@ Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
         queue = cl::CommandQueue(context, device);
 
         // Small scenes live in constant memory (cached, broadcast to a whole
-        // warp on GPUs); larger ones in global memory.
+        // warp on GPUs); larger ones in global memory. In constant memory
+        // every scene table is one __constant argument of render_pass, and
+        // all of them together must fit the constant buffer size (which some
+        // drivers apply per buffer, others to the sum).
         const cl_ulong constant_limit = device.getInfo<CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE>();
         const cl_uint constant_args = device.getInfo<CL_DEVICE_MAX_CONSTANT_ARGS>();
-        const bool constant_scene = scene.bytes() + 64 <= constant_limit && constant_args >= 3;
+        const bool constant_scene =
+            scene_table_bytes(scene.tables) <= constant_limit && kSceneTableCount <= constant_args;
         // Unsafe math (reassociation, fast division) gave +8% on an H100 and
         // nothing measurable on PoCL; the analytic tests pass with it.
         std::string options = std::string("-cl-std=CL1.2 -cl-mad-enable -cl-unsafe-math-optimizations") +
@@ -106,13 +97,11 @@ Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
                       .program;
         kernel = cl::Kernel(program, "render_pass");
 
-        packets = read_only_buffer(context, scene.packets);
-        records = read_only_buffer(context, scene.records);
-        lights = read_only_buffer(context, scene.lights);
+        scene_buffers = upload_scene(context, scene.tables);
         film = std::make_unique<DeviceFilm>(context, config.width, config.height);
         film->clear(queue);
         choose_work_sizes();
-        set_fixed_arguments();
+        bind_buffers(kernel, *film, scene_buffers);
     } catch (const cl::Error& error) {
         rethrow_as_runtime_error(error, "OpenCL setup on " + info.name + " failed");
     }
@@ -137,30 +126,17 @@ void Renderer::Impl::choose_work_sizes()
                               round_up(static_cast<size_t>(config.height), ly));
 }
 
-void Renderer::Impl::set_fixed_arguments()
+void Renderer::Impl::fill_fixed_params(const Camera& camera)
 {
-    cl_uint arg = 0;
-    for (const cl::Buffer& buffer : film->buffers()) kernel.setArg(arg++, buffer);
-    kernel.setArg(arg++, packets);
-    kernel.setArg(arg++, static_cast<cl_int>(scene.packet_count));
-    kernel.setArg(arg++, static_cast<cl_int>(scene.sphere_count));
-    kernel.setArg(arg++, records);
-    kernel.setArg(arg++, lights);
-    kernel.setArg(arg++, static_cast<cl_int>(scene.lights.size()));
-    kernel.setArg(arg++, to_cl(camera.origin));
-    kernel.setArg(arg++, to_cl(camera.right));
-    kernel.setArg(arg++, to_cl(camera.up));
-    kernel.setArg(arg++, to_cl(camera.forward));
-    kernel.setArg(arg++, to_cl(camera.lens));
-    kernel.setArg(arg++, static_cast<cl_int>(config.width));
-    kernel.setArg(arg++, static_cast<cl_int>(config.height));
-    arg_sample_start = arg;  // sample start (lo, hi) and count change per pass
-    arg += 3;
-    kernel.setArg(arg++, static_cast<cl_uint>(config.seed & 0xffffffffu));
-    kernel.setArg(arg++, static_cast<cl_uint>(config.seed >> 32));
-    kernel.setArg(arg++, static_cast<cl_int>(config.max_depth));
-    kernel.setArg(arg++, static_cast<cl_int>(config.mode == IntegratorMode::Direct ? 1 : 0));
-    arg_write_centre = arg;  // per pass
+    params.camera = layout_camera(camera, config.width, config.height);
+    params.scene = scene.counts;
+    device::RenderSettings& settings = params.settings;
+    settings.width = config.width;
+    settings.height = config.height;
+    settings.max_depth = config.max_depth;
+    settings.mode = static_cast<int>(config.mode);
+    settings.seed_lo = static_cast<device::uint>(config.seed & 0xffffffffu);
+    settings.seed_hi = static_cast<device::uint>(config.seed >> 32);
 }
 
 Renderer::Renderer(const Scene& scene, const RenderConfig& config) : impl_(std::make_unique<Impl>(scene, config)) {}
@@ -178,10 +154,12 @@ void Renderer::render_pass(int samples)
     Impl& r = *impl_;
     const auto start = std::chrono::steady_clock::now();
     try {
-        r.kernel.setArg(r.arg_sample_start + 0, static_cast<cl_uint>(r.spp & 0xffffffffu));
-        r.kernel.setArg(r.arg_sample_start + 1, static_cast<cl_uint>(r.spp >> 32));
-        r.kernel.setArg(r.arg_sample_start + 2, static_cast<cl_int>(samples));
-        r.kernel.setArg(r.arg_write_centre, static_cast<cl_int>(r.centre_ray_pending ? 1 : 0));
+        device::PassRange& pass = r.params.pass;
+        pass.first_sample_lo = static_cast<device::uint>(r.spp & 0xffffffffu);
+        pass.first_sample_hi = static_cast<device::uint>(r.spp >> 32);
+        pass.sample_count = samples;
+        pass.write_centre_ray = r.centre_ray_pending ? 1 : 0;
+        bind_params(r.kernel, r.params);
         r.queue.enqueueNDRangeKernel(r.kernel, cl::NullRange, r.global_size, r.local_size);
         r.queue.finish();
     } catch (const cl::Error& error) {
@@ -218,8 +196,7 @@ void Renderer::load_film(const Film& film)
 std::uint64_t Renderer::device_memory_bytes() const
 {
     const Impl& r = *impl_;
-    const auto buffer_bytes = [](const cl::Buffer& b) { return static_cast<std::uint64_t>(b.getInfo<CL_MEM_SIZE>()); };
-    return r.film->bytes() + buffer_bytes(r.packets) + buffer_bytes(r.records) + buffer_bytes(r.lights);
+    return r.film->bytes() + scene_table_bytes(r.scene.tables);
 }
 
 }  // namespace orb::render

@@ -18,35 +18,41 @@ Vec3 cross(const Vec3& a, const Vec3& b)
 }
 double length(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-Float4 to_float4(const Vec3& a, double w) { return {f(a[0]), f(a[1]), f(a[2]), f(w)}; }
+device::float4 to_float4(const Vec3& a, double w) { return {f(a[0]), f(a[1]), f(a[2]), f(w)}; }
 
-KernelMaterial kernel_material(MaterialType type)
+// Lane `lane` of a packet's float4.
+float& lane_of(device::float4& v, std::size_t lane)
 {
-    switch (type) {
-    case MaterialType::Mirror: return KernelMaterial::Mirror;
-    case MaterialType::Dielectric: return KernelMaterial::Dielectric;
-    case MaterialType::Diffuse: break;
-    }
-    return KernelMaterial::Diffuse;
+    float* lanes[4] = {&v.x, &v.y, &v.z, &v.w};
+    return *lanes[lane];
+}
+
+device::MaterialRecord material_record(const Material& material)
+{
+    device::MaterialRecord record{};
+    record.color = to_float4(material.color, 0.0);
+    record.emission = to_float4(material.emission, 0.0);
+    record.ior = f(material.ior);
+    record.kind = static_cast<int>(material.type);
+    return record;
 }
 
 }  // namespace
 
-std::size_t SceneLayout::bytes() const
-{
-    return (packets.size() + records.size()) * sizeof(Float4) + lights.size() * sizeof(std::int32_t);
-}
-
 SceneLayout layout_scene(const Scene& scene)
 {
     SceneLayout layout;
-    layout.sphere_count = static_cast<int>(scene.spheres.size());
-    layout.packet_count = (layout.sphere_count + 3) / 4;
+    SceneTables& tables = layout.tables;
+    const std::size_t sphere_count = scene.spheres.size();
+    const std::size_t packet_count = (sphere_count + 3) / 4;
     // Unused lanes: radius^2 = -1 makes the discriminant negative, so they never hit.
-    layout.packets.assign(static_cast<size_t>(layout.packet_count) * 4, Float4{0.0f, 0.0f, 0.0f, -1.0f});
-    layout.records.reserve(scene.spheres.size() * 3);
+    const device::float4 empty_lanes{0.0f, 0.0f, 0.0f, -1.0f};
+    tables.packets.assign(packet_count, device::SpherePacket{{}, {}, {}, empty_lanes});
+    tables.spheres.reserve(sphere_count);
+    tables.materials.reserve(scene.materials.size());
+    for (const Material& material : scene.materials) tables.materials.push_back(material_record(material));
 
-    for (size_t i = 0; i < scene.spheres.size(); ++i) {
+    for (std::size_t i = 0; i < sphere_count; ++i) {
         const Sphere& sphere = scene.spheres[i];
         const std::string which = "sphere " + std::to_string(i) + (sphere.name.empty() ? "" : " ('" + sphere.name + "')");
         if (!(sphere.radius > 0.0) || !std::isfinite(sphere.radius))
@@ -55,24 +61,29 @@ SceneLayout layout_scene(const Scene& scene)
         if (sphere.material >= scene.materials.size())
             throw std::runtime_error(which + " uses material " + std::to_string(sphere.material) + " but the scene has " +
                                      std::to_string(scene.materials.size()) + " materials");
-        const Material& material = scene.materials[sphere.material];
 
-        const size_t packet = i / 4, lane = i % 4;
-        for (int axis = 0; axis < 3; ++axis) layout.packets[packet * 4 + axis][lane] = f(sphere.center[axis]);
-        layout.packets[packet * 4 + 3][lane] = f(sphere.radius * sphere.radius);
+        device::SpherePacket& packet = tables.packets[i / 4];
+        const std::size_t lane = i % 4;
+        lane_of(packet.centre_x, lane) = f(sphere.center[0]);
+        lane_of(packet.centre_y, lane) = f(sphere.center[1]);
+        lane_of(packet.centre_z, lane) = f(sphere.center[2]);
+        lane_of(packet.radius2, lane) = f(sphere.radius * sphere.radius);
 
-        layout.records.push_back(to_float4(sphere.center, sphere.radius));
-        layout.records.push_back(
-            to_float4(material.color, static_cast<double>(static_cast<int>(kernel_material(material.type)))));
-        layout.records.push_back(to_float4(material.emission, material.ior));
+        device::SphereRecord record{};
+        record.centre_radius = to_float4(sphere.center, sphere.radius);
+        record.material = static_cast<int>(sphere.material);
+        tables.spheres.push_back(record);
 
-        const Vec3& e = material.emission;
-        if (e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0) layout.lights.push_back(static_cast<std::int32_t>(i));
+        const Vec3& e = scene.materials[sphere.material].emission;
+        if (e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0) tables.lights.push_back({static_cast<int>(i)});
     }
+    layout.counts.packet_count = static_cast<int>(packet_count);
+    layout.counts.sphere_count = static_cast<int>(sphere_count);
+    layout.counts.light_count = static_cast<int>(tables.lights.size());
     return layout;
 }
 
-CameraLayout layout_camera(const Camera& camera, int width, int height)
+device::CameraParams layout_camera(const Camera& camera, int width, int height)
 {
     const Vec3 towards = sub(camera.target, camera.position);
     const double distance = length(towards);
@@ -96,14 +107,16 @@ CameraLayout layout_camera(const Camera& camera, int width, int height)
     const double half_height = std::tan(camera.vfov_deg * std::numbers::pi / 360.0);
     const double half_width = half_height * static_cast<double>(width) / static_cast<double>(height);
 
-    CameraLayout layout;
-    layout.origin = to_float4(camera.position, 0.0);
-    layout.right = to_float4(right, 0.0);
-    layout.up = to_float4(up, 0.0);
-    layout.forward = to_float4(forward, 0.0);
-    layout.lens = {f(half_width), f(half_height), f(std::max(0.0, camera.aperture) * 0.5),
-                   f(camera.focus_distance > 0.0 ? camera.focus_distance : distance)};
-    return layout;
+    device::CameraParams params{};
+    params.origin = to_float4(camera.position, 0.0);
+    params.right = to_float4(right, 0.0);
+    params.up = to_float4(up, 0.0);
+    params.forward = to_float4(forward, 0.0);
+    params.half_width = f(half_width);
+    params.half_height = f(half_height);
+    params.lens_radius = f(std::max(0.0, camera.aperture) * 0.5);
+    params.focus_distance = f(camera.focus_distance > 0.0 ? camera.focus_distance : distance);
+    return params;
 }
 
 }  // namespace orb::render

@@ -1,42 +1,36 @@
-// The scene and camera in the form the kernels read (kernels/scene.cl and
-// kernels/camera.cl describe the same layout from the device side).
+// The scene and camera as device records (kernels/include/orb/kernels/device_types.h).
 #pragma once
 
-#include <array>
-#include <cstdint>
+#include <cstddef>
 #include <vector>
 
+#include "orb/kernels/device_types.h"
 #include "orb/scene/scene.h"
 
 namespace orb::render {
 
-using Float4 = std::array<float, 4>;  // matches cl_float4's size and layout
-
-enum class KernelMaterial : int { Diffuse = 0, Mirror = 1, Dielectric = 2 };
+// One vector per scene table of render_pass, generated from the kernel's
+// argument list so that a new table appears here without an edit.
+struct SceneTables {
+#define ORB_SCENE_TABLES_FILM(name)
+#define ORB_SCENE_TABLES_TABLE(type, name) std::vector<device::type> name;
+#define ORB_SCENE_TABLES_PARAMS(type, name)
+    ORB_RENDER_PASS_ARGUMENTS(ORB_SCENE_TABLES_FILM, ORB_SCENE_TABLES_TABLE, ORB_SCENE_TABLES_PARAMS)
+#undef ORB_SCENE_TABLES_FILM
+#undef ORB_SCENE_TABLES_TABLE
+#undef ORB_SCENE_TABLES_PARAMS
+};
 
 struct SceneLayout {
-    std::vector<Float4> packets;        // 4 per group of four spheres: centre x, y, z, radius^2
-    std::vector<Float4> records;        // 3 per sphere: centre+radius, colour+type, emission+ior
-    std::vector<std::int32_t> lights;   // indices of emissive spheres
-    int packet_count = 0;
-    int sphere_count = 0;
-
-    std::size_t bytes() const;
+    SceneTables tables;
+    device::SceneCounts counts{};
 };
 
 // Throws std::runtime_error naming the sphere for input the kernels cannot
 // render (a material index out of range, a non-positive or non-finite radius).
 SceneLayout layout_scene(const Scene& scene);
 
-struct CameraLayout {
-    Float4 origin{};
-    Float4 right{};    // unit
-    Float4 up{};       // unit
-    Float4 forward{};  // unit
-    Float4 lens{};     // half width and half height of the image plane at unit distance, lens radius, focus distance
-};
-
 // Throws std::runtime_error for a camera without a direction.
-CameraLayout layout_camera(const Camera& camera, int width, int height);
+device::CameraParams layout_camera(const Camera& camera, int width, int height);
 
 }  // namespace orb::render

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "json_reader.h"
+#include "float_limits.h"
+#include "json_text.h"
 #include "orb/scene/error.h"
 
 namespace orb::detail {
@@ -28,6 +30,17 @@ const char* interpolation_name(Interpolation interpolation) {
         case Interpolation::CubicSpline: return "CUBICSPLINE";
     }
     return "LINEAR";
+}
+
+// Keyframe and rest values end up in the renderer's floats once posed, so
+// they keep to the scene's coordinate limit (the posed scene is checked
+// again by whoever poses it, since products of scales can still grow).
+template <std::size_t N>
+void require_magnitude(const JsonReader& r, const std::array<double, N>& values, const std::string& path) {
+    for (double d : values)
+        if (!std::isfinite(d)) r.fail(path, "expected finite numbers");
+    for (double d : values)
+        if (!within_magnitude(d)) r.fail(path, magnitude_rule() + kFloatReason + format_number(d));
 }
 
 std::size_t component_count(AnimationPath path) { return path == AnimationPath::Rotation ? 4 : 3; }
@@ -202,15 +215,13 @@ void validate_animation(const Animation& animation, std::size_t sphere_count, co
         const std::string path = at("animation.nodes", i);
         if (node.parent < -1 || (node.parent >= 0 && std::size_t(node.parent) >= i))
             r.fail(path + ".parent", "must be -1 or the index of an earlier node, got " + std::to_string(node.parent));
-        for (double d : node.matrix)
-            if (!std::isfinite(d)) r.fail(path + ".matrix", "expected finite numbers");
-        for (double d : node.translation)
-            if (!std::isfinite(d)) r.fail(path + ".translation", "expected finite numbers");
-        for (double d : node.scale)
-            if (!std::isfinite(d)) r.fail(path + ".scale", "expected finite numbers");
+        require_magnitude(r, node.matrix, path + ".matrix");
+        require_magnitude(r, node.translation, path + ".translation");
+        require_magnitude(r, node.scale, path + ".scale");
+        require_magnitude(r, node.rotation, path + ".rotation");
         double norm = 0;
         for (double d : node.rotation) norm += d * d;
-        if (!(norm > 0) || !std::isfinite(norm)) r.fail(path + ".rotation", "expected a non-zero finite quaternion");
+        if (!(norm > 0)) r.fail(path + ".rotation", "expected a non-zero finite quaternion");
         if (node.has_matrix && !node.channels.empty())
             r.fail(path + ".channels", "a node with a matrix cannot be animated");
         bool seen[3] = {false, false, false};
@@ -232,8 +243,7 @@ void validate_animation(const Animation& animation, std::size_t sphere_count, co
                                                      " values (" + std::to_string(per_key) + " per keyframe), got " +
                                                      std::to_string(channel.values.size()));
             for (std::size_t k = 0; k < channel.values.size(); ++k)
-                for (double d : channel.values[k])
-                    if (!std::isfinite(d)) r.fail(at(channel_path + ".values", k), "expected finite numbers");
+                require_magnitude(r, channel.values[k], at(channel_path + ".values", k));
         }
     }
     for (std::size_t i = 0; i < animation.spheres.size(); ++i) {
@@ -245,9 +255,9 @@ void validate_animation(const Animation& animation, std::size_t sphere_count, co
         if (b.node >= node_count)
             r.fail(path + ".node", "index " + std::to_string(b.node) + " is out of range (there are " +
                                        std::to_string(node_count) + " nodes)");
-        for (double d : b.center)
-            if (!std::isfinite(d)) r.fail(path + ".center", "expected finite numbers");
+        require_magnitude(r, b.center, path + ".center");
         if (!(b.radius > 0) || !std::isfinite(b.radius)) r.fail(path + ".radius", "must be > 0");
+        if (!positive_in_range(b.radius)) r.fail(path + ".radius", positive_rule() + kFloatReason + format_number(b.radius));
     }
     if (animation.camera_node >= 0 && std::size_t(animation.camera_node) >= node_count)
         r.fail("animation.camera.node", "index " + std::to_string(animation.camera_node) + " is out of range (there are " +

@@ -4,6 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include "orb/scene/error.h"
+#include "orb/scene/ply.h"
+#include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
 
@@ -22,6 +24,8 @@ std::string_view skip_bom_and_space(std::string_view bytes) {
 
 SceneFormat detect_scene_format(std::string_view bytes) {
     if (bytes.substr(0, 4) == "glTF") return SceneFormat::Glb;
+    if (has_ply_magic(bytes)) return SceneFormat::Ply;
+    if (has_scene_binary_magic(bytes)) return SceneFormat::OrbBinary;
     std::string_view text = skip_bom_and_space(bytes);
     if (text.empty()) return SceneFormat::Unknown;
     if (text.front() == '{') {
@@ -45,6 +49,8 @@ SceneFormat scene_format_from_name(const std::string& name) {
     if (name == "scn") return SceneFormat::Scn;
     if (name == "gltf") return SceneFormat::GltfJson;
     if (name == "glb") return SceneFormat::Glb;
+    if (name == "ply") return SceneFormat::Ply;
+    if (name == "orb-binary") return SceneFormat::OrbBinary;
     return SceneFormat::Unknown;
 }
 
@@ -54,6 +60,8 @@ const char* scene_format_name(SceneFormat format) {
         case SceneFormat::Scn: return "scn";
         case SceneFormat::GltfJson: return "gltf";
         case SceneFormat::Glb: return "glb";
+        case SceneFormat::Ply: return "ply";
+        case SceneFormat::OrbBinary: return "orb-binary";
         case SceneFormat::Unknown: break;
     }
     return "unknown";
@@ -71,9 +79,11 @@ ImportResult import_scene(std::string_view bytes, const std::string& source, con
             GltfImportResult result = import_gltf(bytes, source, base_dir, options.gltf);
             return {std::move(result.scene), std::move(result.warnings)};
         }
+        case SceneFormat::Ply: return {import_ply(bytes, source, options.ply), {}};
+        case SceneFormat::OrbBinary: return {load_scene_binary(bytes, source), {}};
         case SceneFormat::Unknown: break;
     }
-    throw InputError(source + ": empty input, expected a scene (Orb JSON, .scn, .gltf or .glb)");
+    throw InputError(source + ": empty input, expected a scene (Orb JSON, .scn, .gltf, .glb or .ply)");
 }
 
 }  // namespace orb

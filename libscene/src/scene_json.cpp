@@ -10,9 +10,11 @@
 #include <optional>
 
 #include "animation_json.h"
+#include "float_limits.h"
 #include "json_reader.h"
 #include "json_text.h"
 #include "orb/scene/error.h"
+#include "scene_json_spheres.h"
 
 namespace orb {
 namespace {
@@ -157,6 +159,15 @@ void check(bool ok, const std::string& source, const std::string& path, const st
 
 bool all_finite(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
+bool within_magnitude(const Vec3& v) {
+    return detail::within_magnitude(v[0]) && detail::within_magnitude(v[1]) && detail::within_magnitude(v[2]);
+}
+
+void check_coordinates(const Vec3& v, const std::string& source, const std::string& path) {
+    check(all_finite(v), source, path, "expected finite numbers");
+    check(within_magnitude(v), source, path, detail::magnitude_rule() + detail::kFloatReason + fmt(v));
+}
+
 ordered_json vec3_json(const Vec3& v) { return ordered_json::array({v[0], v[1], v[2]}); }
 
 const char* material_type_name(MaterialType type) {
@@ -172,9 +183,9 @@ const char* material_type_name(MaterialType type) {
 
 void validate_scene(const Scene& scene, const std::string& source) {
     const Camera& c = scene.camera;
-    check(all_finite(c.position), source, "camera.position", "expected finite numbers");
-    check(all_finite(c.target), source, "camera.target", "expected finite numbers");
-    check(all_finite(c.up), source, "camera.up", "expected finite numbers");
+    check_coordinates(c.position, source, "camera.position");
+    check_coordinates(c.target, source, "camera.target");
+    check_coordinates(c.up, source, "camera.up");
     const Vec3 forward{c.target[0] - c.position[0], c.target[1] - c.position[1], c.target[2] - c.position[2]};
     // hypot: lengths of huge but finite coordinates must not overflow to infinity.
     const double forward_length = std::hypot(forward[0], forward[1], forward[2]);
@@ -190,8 +201,12 @@ void validate_scene(const Scene& scene, const std::string& source) {
     check(std::isfinite(c.vfov_deg) && c.vfov_deg > 0 && c.vfov_deg < 180, source, "camera.vfov_deg",
           "must be in (0, 180), got " + fmt(c.vfov_deg));
     check(std::isfinite(c.aperture) && c.aperture >= 0, source, "camera.aperture", "must be >= 0, got " + fmt(c.aperture));
+    check(c.aperture <= kMaxSceneMagnitude, source, "camera.aperture",
+          "must be <= " + fmt(kMaxSceneMagnitude) + detail::kFloatReason + fmt(c.aperture));
     check(std::isfinite(c.focus_distance) && c.focus_distance > 0, source, "camera.focus_distance",
           "must be > 0, got " + fmt(c.focus_distance));
+    check(detail::positive_in_range(c.focus_distance), source, "camera.focus_distance",
+          detail::positive_rule() + detail::kFloatReason + fmt(c.focus_distance));
 
     const RenderSettings& r = scene.render;
     check(r.width >= 1 && r.width <= kMaxImageSide, source, "render.width", "must be in [1, " + std::to_string(kMaxImageSide) + "]");
@@ -208,14 +223,22 @@ void validate_scene(const Scene& scene, const std::string& source) {
                   "each component must be in [0, 1], got " + fmt(m.color));
             check(std::isfinite(m.emission[k]) && m.emission[k] >= 0, source, path + ".emission",
                   "each component must be finite and >= 0, got " + fmt(m.emission));
+            check(m.emission[k] <= kMaxEmission, source, path + ".emission",
+                  "each component must be <= " + fmt(kMaxEmission) + detail::kFloatReason + fmt(m.emission));
         }
         check(std::isfinite(m.ior) && m.ior > 0, source, path + ".ior", "must be > 0, got " + fmt(m.ior));
+        check(detail::positive_in_range(m.ior), source, path + ".ior",
+              detail::positive_rule() + detail::kFloatReason + fmt(m.ior));
     }
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
+        // Building the messages below costs more than the checks: skip them for a valid sphere.
+        if (all_finite(s.center) && std::isfinite(s.radius) && s.radius > 0 && s.material < scene.materials.size()) continue;
         const std::string path = "spheres[" + std::to_string(i) + "]";
-        check(all_finite(s.center), source, path + ".center", "expected finite numbers");
+        check_coordinates(s.center, source, path + ".center");
         check(std::isfinite(s.radius) && s.radius > 0, source, path + ".radius", "must be > 0, got " + fmt(s.radius));
+        check(detail::positive_in_range(s.radius), source, path + ".radius",
+              detail::positive_rule() + detail::kFloatReason + fmt(s.radius));
         check(s.material < scene.materials.size(), source, path + ".material",
               "index " + std::to_string(s.material) + " is out of range (there are " +
                   std::to_string(scene.materials.size()) + " materials)");
@@ -293,21 +316,22 @@ std::string write_scene_json(const Scene& scene) {
     }
     document["materials"] = std::move(materials);
 
-    ordered_json spheres = ordered_json::array();
-    for (const Sphere& s : scene.spheres) {
-        ordered_json sphere;
-        sphere["name"] = s.name;
-        sphere["center"] = vec3_json(s.center);
-        sphere["radius"] = s.radius;
-        sphere["material"] = s.material;
-        spheres.push_back(std::move(sphere));
-    }
-    document["spheres"] = std::move(spheres);
+    // The spheres are written directly (scene_json_spheres.h) in place of the
+    // empty array that format_json puts last: "  \"spheres\": []\n}".
+    document["spheres"] = ordered_json::array();
+    std::string text = detail::format_json(document);
+    text.resize(text.size() - 4);
+    text += detail::format_spheres_json(scene.spheres);
 
     ordered_json animation = detail::animation_to_json(scene.animation);
-    if (!animation.is_null()) document["animation"] = std::move(animation);
-
-    return detail::format_json(document) + "\n";
+    if (!animation.is_null()) {
+        ordered_json wrapper;  // formats as "{\n  \"animation\": ...\n}"
+        wrapper["animation"] = std::move(animation);
+        const std::string part = detail::format_json(wrapper);
+        text += ",\n";
+        text.append(part, 2, part.size() - 4);
+    }
+    return text + "\n}\n";
 }
 
 std::string scene_content_hash(const Scene& scene) {

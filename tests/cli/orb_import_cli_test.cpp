@@ -204,6 +204,24 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"trailing_garbage", "camera 0 0 9 0 0 0\nsize 0 !\n", "bad.scn:2:8: expected end of line"},
         BadInput{"binary_junk", "camera 0 0 9 0 0 0\nsize 0\n\x01\x02\x03", "bad.scn:3:1: expected plain ASCII text"},
         BadInput{"absurd_size", "camera 0 0 9 0 0 0\nsize 4000000000\n", "bad.scn:2:6: expected 4000000000 sphere lines"},
+        // Doubles the renderer's floats cannot hold, from each importer (docs/scene-format.md, "Limits").
+        BadInput{"scn_radius_beyond_float", "camera 0 0 9 0 0 0\nsize 1\nsphere 1e300 0 0 0 0 0 0 1 1 1 0\n",
+                 "bad.scn: spheres[0].radius: must be in [1e-18, 1e+18] (the renderer computes in 32-bit floats), got 1e+300"},
+        BadInput{"scn_emission_beyond_float",
+                 "camera 0 0 9 0 0 0\nsize 2\nsphere 1 0 0 0 0 0 0 1 1 1 0\nsphere 1 0 0 0 1e39 0 0 1 1 1 0\n",
+                 "bad.scn: materials[1].emission: each component must be <= 1000000000000 (the renderer computes in "
+                 "32-bit floats), got [1e+39, 0, 0]"},
+        BadInput{"json_center_beyond_float",
+                 R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0, 0, 9], "target": [0, 0, 0] },
+                      "materials": [ { "type": "diffuse" } ], "spheres": [ { "center": [0, 0, -1e19], "radius": 1, "material": 0 } ] })",
+                 "bad.scn: spheres[0].center: each component must be in [-1e+18, 1e+18] (the renderer computes in "
+                 "32-bit floats), got [0, 0, -1e+19]"},
+        BadInput{"gltf_camera_beyond_float",
+                 R"({ "asset": { "version": "2.0" }, "scene": 0, "scenes": [ { "nodes": [0] } ],
+                      "nodes": [ { "camera": 0, "translation": [0, 0, 1e300] } ],
+                      "cameras": [ { "type": "perspective", "perspective": { "yfov": 0.7, "znear": 0.1 } } ] })",
+                 "bad.scn: camera.position: each component must be in [-1e+18, 1e+18] (the renderer computes in "
+                 "32-bit floats), got [0, 0, 1e+300]"},
         BadInput{"empty", "", "bad.scn: empty input"},
         BadInput{"broken_json", "{ \"format\": ", "bad.scn:1:"}),
     [](const auto& info) { return std::string(info.param.name); });

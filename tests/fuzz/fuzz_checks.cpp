@@ -4,6 +4,8 @@
 #include <string>
 
 #include "orb/scene/error.h"
+#include "orb/scene/ply.h"
+#include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
 
@@ -34,6 +36,31 @@ void check_scene_json_input(std::string_view bytes) {
     const std::string text = write_scene_json(scene);
     if (load_scene_json(text, "rewritten.json") != scene)
         throw std::logic_error("load_scene_json(write_scene_json(scene)) != scene for:\n" + text);
+}
+
+void check_ply_input(std::string_view bytes) {
+    Scene scene;
+    try {
+        scene = import_ply(bytes, "fuzz.ply");
+    } catch (const InputError&) {
+        return;
+    }
+    validate_scene(scene, "fuzz.ply");
+    if (load_scene_json(write_scene_json(scene), "rewritten.json") != scene)
+        throw std::logic_error("a scene read from PLY does not survive Orb JSON");
+}
+
+void check_scene_binary_input(std::string_view bytes) {
+    Scene scene;
+    try {
+        scene = load_scene_binary(bytes, "fuzz.orb");
+    } catch (const InputError&) {
+        return;
+    }
+    if (load_scene_binary(write_scene_binary(scene), "rewritten.orb") != scene)
+        throw std::logic_error("load_scene_binary(write_scene_binary(scene)) != scene");
+    if (load_scene_json(write_scene_json(scene), "rewritten.json") != scene)
+        throw std::logic_error("a binary scene does not survive Orb JSON");
 }
 
 }  // namespace orb::fuzz

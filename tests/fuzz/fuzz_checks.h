@@ -19,4 +19,12 @@ void check_scn_input(std::string_view bytes);
 // load(write(scene)) == scene.
 void check_scene_json_input(std::string_view bytes);
 
+// import_ply either rejects the bytes or returns a valid scene with
+// load(write(scene)) == scene in Orb JSON.
+void check_ply_input(std::string_view bytes);
+
+// load_scene_binary either rejects the bytes or returns a scene that writes
+// back to the same scene through both the binary and the JSON form.
+void check_scene_binary_input(std::string_view bytes);
+
 }  // namespace orb::fuzz

@@ -99,7 +99,7 @@ TEST_F(DiffCli, ExitCodesForPassWarnAndFail) {
     EXPECT_EQ(report["verdict"], "pass");
     EXPECT_EQ(report["passes"][0]["metrics"]["psnr"], nullptr);  // infinite
 
-    // Default gate (like idiff): any difference fails.
+    // Default gate: any difference beyond float rounding fails.
     EXPECT_EQ(report_of(pair(), 1)["verdict"], "fail");
 
     report = report_of(pair() + " --fail-rmse 1 --warn-rmse 1e-6", 0);
@@ -142,6 +142,72 @@ TEST_F(DiffCli, ErrorsExitWithTwo) {
         EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
     }
+}
+
+TEST_F(DiffCli, MeaninglessGateOrPpdValuesAreUsageErrors) {
+    struct Case {
+        std::string option, value, message;
+    };
+    const std::string non_negative = "expected a finite number >= 0, got '";
+    const std::vector<Case> cases = {
+        {"--fail-rmse", "nan", non_negative + "nan'"},
+        {"--fail-relmse", "-1", non_negative + "-1'"},
+        {"--fail-flip", "inf", non_negative + "inf'"},
+        {"--fail-threshold", "-0.1", non_negative + "-0.1'"},
+        {"--warn-threshold", "NaN", non_negative + "NaN'"},
+        {"--warn-rmse", "-inf", non_negative + "-inf'"},
+        {"--fail-percent", "150", "expected a percentage in [0, 100], got '150'"},
+        {"--warn-percent", "nan", "expected a percentage in [0, 100], got 'nan'"},
+        {"--ppd", "1e9", "expected pixels per degree in [1, 1000], got '1e9'"},
+        {"--ppd", "0", "expected pixels per degree in [1, 1000], got '0'"},
+        {"--ppd", "nan", "expected pixels per degree in [1, 1000], got 'nan'"},
+    };
+    const std::string outputs = " --json " + quote(dir.path("report.json")) + " --diff-image " + quote(dir.path("heat.png"));
+    for (const Case& c : cases) {
+        const auto r = run(kDiff + " " + pair() + " " + c.option + " " + c.value + outputs);
+        EXPECT_EQ(r.exit_code, 2) << c.option << " " << c.value << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind("orb-diff: error: " + c.option + ": " + c.message + "\n", 0), 0u) << r.err;
+        EXPECT_TRUE(r.out.empty()) << r.out;
+        EXPECT_FALSE(fs::exists(dir.path("report.json")));
+        EXPECT_FALSE(fs::exists(dir.path("heat.png")));
+    }
+}
+
+TEST_F(DiffCli, DefaultGateForgivesFloatRoundingButNotARealChange) {
+    const Image reference = make_scene(64, 40, 5.0f);
+    write_exr(dir.path("ref.exr"), reference);
+    // Every value off by 3e-6 relative, as a resumed render's sums are.
+    Image rounded = reference;
+    for (float& v : rounded.pixels) v *= 1.0f + 3e-6f;
+    write_exr(dir.path("rounded.exr"), rounded);
+    const std::string rounding_pair = quote(dir.path("ref.exr")) + " " + quote(dir.path("rounded.exr"));
+    auto report = report_of(rounding_pair, 0);
+    EXPECT_EQ(report["verdict"], "pass");
+    EXPECT_EQ(report["thresholds"]["fail"]["threshold"], 1e-6);
+    EXPECT_EQ(report["thresholds"]["fail"]["relative_threshold"], 1e-4);
+    const auto summary = run(kDiff + " " + rounding_pair);
+    EXPECT_NE(summary.out.find(" 0% of pixels over 1e-06 + 0.0001*max(|a|,|b|), "), std::string::npos) << summary.out;
+    EXPECT_NE(summary.out.find("verdict: pass"), std::string::npos) << summary.out;
+    // An explicit threshold stays absolute: the same pair fails 1e-6.
+    report = report_of(rounding_pair + " --fail-threshold 1e-6", 1);
+    EXPECT_EQ(report["thresholds"]["fail"]["relative_threshold"], 0.0);
+
+    // One channel of one pixel off by 1e-3 relative: a real change.
+    Image changed = reference;
+    changed.at(10, 10, 1) *= 1.001f;
+    write_exr(dir.path("changed.exr"), changed);
+    report = report_of(quote(dir.path("ref.exr")) + " " + quote(dir.path("changed.exr")), 1);
+    EXPECT_EQ(report["verdict"], "fail");
+
+    // Near zero the absolute floor decides: 5e-7 passes, 3e-6 fails.
+    Image black(8, 8, {"R", "G", "B"}, 0.0f), speck = black, dust = black;
+    speck.at(3, 3, 0) = 5e-7f;
+    dust.at(3, 3, 0) = 3e-6f;
+    write_exr(dir.path("black.exr"), black);
+    write_exr(dir.path("speck.exr"), speck);
+    write_exr(dir.path("dust.exr"), dust);
+    report_of(quote(dir.path("black.exr")) + " " + quote(dir.path("speck.exr")), 0);
+    report_of(quote(dir.path("black.exr")) + " " + quote(dir.path("dust.exr")), 1);
 }
 
 TEST_F(DiffCli, ReadsOneImageFromStdin) {

@@ -91,6 +91,23 @@ TEST_F(TonemapCli, FormatsByExtension) {
     }
 }
 
+TEST_F(TonemapCli, FormatsWithoutAlphaGetRgb) {
+    const std::string with_alpha = dir.path("rgba.exr");
+    write_exr(with_alpha, make_multipass(16, 8));  // has an A channel
+    // The writers OIIO says cannot hold alpha, and BMP (whose alpha readers ignore).
+    for (const std::string name : {"a.hdr", "a.jpg", "a.ppm", "a.pnm", "a.bmp"}) {
+        const auto r = run(kTonemap + " " + quote(with_alpha) + " -o " + quote(dir.path(name)));
+        ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+        EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
+        EXPECT_EQ(read_image(dir.path(name)).channels(), 3) << name;
+    }
+    // Formats that hold alpha keep it.
+    for (const std::string name : {"a.png", "a.tif", "a.exr"}) {
+        ASSERT_EQ(run(kTonemap + " " + quote(with_alpha) + " -o " + quote(dir.path(name)) + " -q").exit_code, 0) << name;
+        EXPECT_EQ(read_image(dir.path(name)).channels(), 4) << name;
+    }
+}
+
 TEST_F(TonemapCli, StdinToStdoutGivesTheSamePixels) {
     ASSERT_EQ(run(kTonemap + " " + quote(input) + " -o " + quote(dir.path("file.png")) + " -q").exit_code, 0);
     const auto r = run("cat " + quote(input) + " | " + kTonemap + " - -o - --format png -q > " + quote(dir.path("pipe.png")));
@@ -163,6 +180,28 @@ TEST_F(TonemapCli, BadInputsFailCleanlyWithoutPartialOutput) {
     // No temporaries left behind.
     for (const auto& entry : fs::directory_iterator(dir.path("")))
         EXPECT_EQ(entry.path().filename().string().find(".out.png"), std::string::npos);
+}
+
+TEST_F(TonemapCli, MeaninglessExposureOrBitsAreUsageErrors) {
+    struct Case {
+        std::string option, value, message;
+    };
+    const std::vector<Case> cases = {
+        {"--exposure", "nan", "expected a number of stops in [-100, 100], got 'nan'"},
+        {"--exposure", "inf", "expected a number of stops in [-100, 100], got 'inf'"},
+        {"--exposure", "-inf", "expected a number of stops in [-100, 100], got '-inf'"},
+        {"--exposure", "1e6", "expected a number of stops in [-100, 100], got '1e6'"},
+        {"--bits", "12", "expected 8, 16 or 32, got '12'"},
+        {"--bits", "0", "expected 8, 16 or 32, got '0'"},
+    };
+    for (const Case& c : cases) {
+        const auto r = run(kTonemap + " " + quote(input) + " -o " + quote(dir.path("out.png")) + " " + c.option + " " + c.value);
+        EXPECT_EQ(r.exit_code, 2) << c.option << " " << c.value << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind("orb-tonemap: error: " + c.option + ": " + c.message + "\n", 0), 0u) << r.err;
+        EXPECT_FALSE(fs::exists(dir.path("out.png")));
+    }
+    for (const auto& entry : fs::directory_iterator(dir.path("")))
+        EXPECT_EQ(entry.path().filename().string(), "scene.exr");
 }
 
 TEST_F(TonemapCli, ListHonoursOcioAndConfigOverrides) {

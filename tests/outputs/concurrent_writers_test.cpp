@@ -19,15 +19,6 @@ using ::testing::HasSubstr;
 
 namespace {
 
-bool eventually(const std::function<bool()>& condition, double seconds) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < deadline) {
-        if (condition()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return condition();
-}
-
 // A long render writing `out` with a checkpoint every 0.2 s, so that the
 // file's appearance shows the render loop (and its signal handling) is on.
 std::vector<std::string> long_render(const std::string& scene, const std::string& out) {

@@ -54,11 +54,14 @@ private:
     std::string old_;
 };
 
+// Orb's cached binaries and any temporaries; PoCL keeps its own cache in the
+// pocl/ folder beside them (docs/orb-render.md), which is not counted.
 std::vector<fs::path> files_in(const fs::path& dir)
 {
     std::vector<fs::path> out;
     if (fs::exists(dir))
-        for (const auto& entry : fs::directory_iterator(dir)) out.push_back(entry.path());
+        for (const auto& entry : fs::directory_iterator(dir))
+            if (entry.is_regular_file()) out.push_back(entry.path());
     return out;
 }
 
@@ -126,7 +129,9 @@ TEST(KernelBuild, FailureCarriesTheBuildLog)
     const fs::path dir = fs::temp_directory_path() / ("orb-broken-kernels-" + std::to_string(::getpid()));
     fs::create_directories(dir);
     for (const kernels::EmbeddedKernel& k : kernels::embedded_kernels()) {
-        std::ofstream out(dir / std::string(k.file_name));
+        const fs::path file = dir / std::string(k.file_name);
+        fs::create_directories(file.parent_path());
+        std::ofstream out(file);
         out << k.source;
         if (k.file_name == "integrator.cl") out << "\nthis_is_not_opencl_c;\n";
     }

@@ -4,6 +4,7 @@
 
 #include <sys/types.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,8 @@ private:
 };
 
 std::string read_text(const std::string& path);
+
+// Polls `condition` every 20 ms until it holds or `seconds` pass; returns its last value.
+bool eventually(const std::function<bool()>& condition, double seconds);
 
 }  // namespace orb::test

@@ -72,10 +72,8 @@ TEST_F(RenderCli, TimeAtRendersTheSceneAsItStandsThen) {
 }
 
 TEST_F(RenderCli, KernelDirIsUsedAndABuildFailurePrintsTheLog) {
-    std::filesystem::create_directories(path("kernels"));
-    for (const auto& entry : std::filesystem::directory_iterator(ORB_KERNELS_DIR))
-        if (entry.path().extension() == ".cl")
-            std::filesystem::copy_file(entry.path(), path("kernels") + "/" + entry.path().filename().string());
+    // A copy of the build's share/orb/kernels, laid out as an installed tree's.
+    std::filesystem::copy(ORB_KERNELS_DIR, path("kernels"), std::filesystem::copy_options::recursive);
     const std::string scene = write_scene(small_scene());
     const auto good = render({scene, "-o", path("ok.exr"), "--spp", "1", "--kernel-dir", path("kernels"), "--no-cache"});
     ASSERT_EQ(good.exit_code, 0) << good.err;

@@ -11,20 +11,6 @@
 
 using namespace orb::test;
 
-namespace {
-
-// Waits until `condition` holds or `seconds` pass.
-bool eventually(const std::function<bool()>& condition, double seconds) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < deadline) {
-        if (condition()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return condition();
-}
-
-}  // namespace
-
 TEST_F(RenderCli, StopsExactlyAtSpp) {
     const auto run = render({write_scene(small_scene()), "-o", path("out.exr"), "--spp", "13"});
     ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -22,6 +22,12 @@ std::string with_bodies(const std::string& materials, const std::string& spheres
     return kHead + "\"materials\": [" + materials + "], \"spheres\": [" + spheres + "] }";
 }
 
+// One diffuse sphere, animated as `animation` says.
+std::string with_animation(const std::string& animation) {
+    return kHead + R"("materials": [{ "type": "diffuse" }], "spheres": [{ "center": [0,0,0], "radius": 1, "material": 0 }], "animation": )" +
+           animation + " }";
+}
+
 struct Case {
     const char* name;
     std::string text;
@@ -83,6 +89,33 @@ INSTANTIATE_TEST_SUITE_P(
              "s.json:1:157: a number overflows a double"},
         Case{"string_number", with_bodies(kDiffuse, R"({ "center": [0,"1",0], "radius": 1, "material": 0 })"),
              "spheres[0].center[1]: expected a number, got string \"1\""},
+        // Doubles that the renderer's 32-bit floats cannot hold (scene-format.md, "Limits").
+        Case{"radius_too_large", with_bodies(kDiffuse, R"({ "center": [0,0,0], "radius": 1e300, "material": 0 })"),
+             "spheres[0].radius: must be in [1e-18, 1e+18] (the renderer computes in 32-bit floats), got 1e+300"},
+        Case{"radius_too_small", with_bodies(kDiffuse, R"({ "center": [0,0,0], "radius": 1e-40, "material": 0 })"),
+             "spheres[0].radius: must be in [1e-18, 1e+18]"},
+        Case{"center_too_far", with_bodies(kDiffuse, R"({ "center": [0,2e18,0], "radius": 1, "material": 0 })"),
+             "spheres[0].center: each component must be in [-1e+18, 1e+18] (the renderer computes in 32-bit floats), got [0, 2e+18, 0]"},
+        Case{"emission_too_bright", with_bodies(R"({ "type": "diffuse", "emission": [1e39, 0, 0] })", ""),
+             "materials[0].emission: each component must be <= 1000000000000 (the renderer computes in 32-bit floats), got [1e+39, 0, 0]"},
+        Case{"ior_too_large", with_bodies(R"({ "type": "dielectric", "ior": 1e40 })", ""),
+             "materials[0].ior: must be in [1e-18, 1e+18]"},
+        Case{"camera_too_far", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,-1e20], "target": [0,0,0] }, "materials": [], "spheres": [] })",
+             "camera.position: each component must be in [-1e+18, 1e+18]"},
+        Case{"camera_up_huge", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,1], "target": [0,0,0], "up": [0,1e300,0] }, "materials": [], "spheres": [] })",
+             "camera.up: each component must be in [-1e+18, 1e+18]"},
+        Case{"aperture_huge", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,1], "target": [0,0,0], "aperture": 1e30 }, "materials": [], "spheres": [] })",
+             "camera.aperture: must be <= 1e+18"},
+        Case{"focus_distance_tiny", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,1], "target": [0,0,0], "focus_distance": 1e-300 }, "materials": [], "spheres": [] })",
+             "camera.focus_distance: must be in [1e-18, 1e+18]"},
+        Case{"keyframe_value_huge",
+             with_animation(R"({ "nodes": [ { "channels": [ { "path": "translation", "times": [0, 1], "values": [[0,0,0], [0,1e300,0]] } ] } ] })"),
+             "animation.nodes[0].channels[0].values[1]: each component must be in [-1e+18, 1e+18] (the renderer computes in 32-bit floats), got 1e+300"},
+        Case{"node_scale_huge", with_animation(R"({ "nodes": [ { "scale": [1, 1, -1e20] } ] })"),
+             "animation.nodes[0].scale: each component must be in [-1e+18, 1e+18]"},
+        Case{"binding_radius_huge",
+             with_animation(R"({ "nodes": [ {} ], "spheres": [ { "sphere": 0, "node": 0, "center": [0,0,0], "radius": 1e19 } ] })"),
+             "animation.spheres[0].radius: must be in [1e-18, 1e+18]"},
         Case{"sphere_unknown_key", with_bodies(kDiffuse, R"({ "center": [0,0,0], "radius": 1, "material": 0, "colour": 1 })"),
              "spheres[0].colour: unknown key"}),
     [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });

@@ -26,7 +26,7 @@ orb::Scene sample_scene() {
     s.materials.push_back({"lamp \"quoted\" \u00e9", orb::MaterialType::Diffuse, {0, 0, 0}, {12, 12, 12}, 1.5});
     s.spheres.push_back({"left wall", {1e5 + 1, 40.8, 81.6}, 1e5, 0});
     s.spheres.push_back({"ball", {27, 16.5, 47}, 16.5, 1});
-    s.spheres.push_back({"", {0.1 + 0.2, 1.0 / 3.0, -0.0}, 5e-324, 2});  // awkward doubles
+    s.spheres.push_back({"", {0.1 + 0.2, 1.0 / 3.0, -0.0}, 1.1 * 1e-18, 2});  // awkward doubles (the radius near its lower limit)
     return s;
 }
 

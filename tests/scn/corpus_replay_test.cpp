@@ -40,6 +40,12 @@ TEST(FuzzCorpus, SceneJsonInputsAreAcceptedOrCleanlyRejected) {
     replay("fuzz_scene_json", fuzz::check_scene_json_input);
 }
 
+TEST(FuzzCorpus, PlyInputsAreAcceptedOrCleanlyRejected) { replay("fuzz_ply", fuzz::check_ply_input); }
+
+TEST(FuzzCorpus, SceneBinaryInputsAreAcceptedOrCleanlyRejected) {
+    replay("fuzz_scene_binary", fuzz::check_scene_binary_input);
+}
+
 // The shared scenes are part of the seed corpus too; they must pass the same checks.
 TEST(FuzzCorpus, SharedScenesPassTheFuzzChecks) {
     for (const auto& entry : fs::directory_iterator(ORB_SCENES_DIR)) {

@@ -25,6 +25,15 @@ void check(const orb::image::PassComparison& c, const GateSet& gates, bool perce
 
 }  // namespace
 
+std::string describe_tolerance(orb::image::Tolerance tolerance) {
+    char buffer[96];
+    if (tolerance.relative == 0)
+        std::snprintf(buffer, sizeof buffer, "%.3g", tolerance.absolute);
+    else
+        std::snprintf(buffer, sizeof buffer, "%.3g + %.3g*max(|a|,|b|)", tolerance.absolute, tolerance.relative);
+    return buffer;
+}
+
 bool Gates::fail_percent_active() const {
     const bool any_fail_gate = fail.rmse || fail.relmse || fail.flip || fail.percent || fail.threshold;
     return fail.percent || fail.threshold || !any_fail_gate;

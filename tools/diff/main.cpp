@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "orb/cli/messages.h"
 #include "orb/cli/output_file.h"
 #include "orb/cli/output_overlap.h"
+#include "orb/cli/number_checks.h"
 #include "orb/cli/tool_main.h"
 #include "orb/image/color_options.h"
 #include "orb/image/compare.h"
@@ -41,17 +43,34 @@ struct Settings {
     double ppd = 0;
 };
 
+// FLIP's filters grow linearly with pixels per degree (libimage/src/flip.cpp:
+// 2*ceil(0.135*ppd)+1 taps for the colour CSF), so a huge --ppd runs for
+// minutes and allocates gigabytes. Below 1 ppd a pixel spans more than a
+// degree and the filters are a single tap; 1000 ppd is far beyond any screen
+// or print (the eye resolves about 120) and already costs 271 taps, 13 times
+// the default 67.
+constexpr double kMinPpd = 1, kMaxPpd = 1000;
+
 void add_gate_options(CLI::App& app, GateSet& g, const std::string& kind) {
+    using orb::cli::finite_number_in;
     const std::string verb = kind == "fail" ? "Fail" : "Warn";
-    app.add_option("--" + kind + "-rmse", g.rmse, verb + " if RMSE exceeds X")->option_text("X");
-    app.add_option("--" + kind + "-relmse", g.relmse, verb + " if relative MSE exceeds X")->option_text("X");
-    app.add_option("--" + kind + "-flip", g.flip, verb + " if mean FLIP exceeds X (colour passes)")->option_text("X");
+    const double inf = std::numeric_limits<double>::infinity();
+    const auto non_negative = finite_number_in(0, inf, "a finite number >= 0");
+    app.add_option("--" + kind + "-rmse", g.rmse, verb + " if RMSE exceeds X")->option_text("X")->check(non_negative);
+    app.add_option("--" + kind + "-relmse", g.relmse, verb + " if relative MSE exceeds X")
+        ->option_text("X")
+        ->check(non_negative);
+    app.add_option("--" + kind + "-flip", g.flip, verb + " if mean FLIP exceeds X (colour passes)")
+        ->option_text("X")
+        ->check(non_negative);
     app.add_option("--" + kind + "-percent", g.percent,
                    verb + " if more than P% of pixels differ by more than --" + kind + "-threshold")
-        ->option_text("P");
+        ->option_text("P")
+        ->check(finite_number_in(0, 100, "a percentage in [0, 100]"));
     app.add_option("--" + kind + "-threshold", g.threshold,
-                   "Per-channel difference that counts a pixel as different (default 1e-6)")
-        ->option_text("T");
+                   "Per-channel difference that counts a pixel as different (default: 1e-6 + 1e-4*max(|a|,|b|))")
+        ->option_text("T")
+        ->check(non_negative);
 }
 
 // OUT for one pass; OUT.<pass>.ext when several passes are compared.
@@ -117,7 +136,7 @@ int run(const Settings& s) {
         cs.view = resolve_display_view(config, request);
     }
     cs.ppd = s.ppd;
-    cs.thresholds = {s.gates.fail_threshold(), s.gates.warn_threshold()};
+    cs.thresholds = {s.gates.fail_tolerance(), s.gates.warn_tolerance()};
     cs.want_heatmap = !s.diff_image.empty();
 
     const std::vector<std::string> passes = passes_to_compare(s, a, b);
@@ -198,8 +217,10 @@ int main(int argc, char** argv) {
             app.add_option("--diff-image", s.diff_image, "Write an error heatmap (FLIP, magma colour map)")
                 ->option_text("OUT");
             app.add_option("--json", s.json, "Write a JSON report ('-' = stdout)")->option_text("FILE");
-            app.add_option("--ppd", s.ppd, "FLIP observer: pixels per degree (default 67, a 4K 0.7 m monitor at 0.7 m)")
-                ->option_text("PPD");
+            app.add_option("--ppd", s.ppd,
+                           "FLIP observer: pixels per degree, 1 to 1000 (default 67, a 4K 0.7 m monitor at 0.7 m)")
+                ->option_text("PPD")
+                ->check(orb::cli::finite_number_in(kMinPpd, kMaxPpd, "pixels per degree in [1, 1000]"));
             app.footer(
                 "Examples:\n"
                 "  orb-diff reference.exr render.exr --fail-flip 0.05 --warn-flip 0.02\n"
@@ -208,7 +229,7 @@ int main(int argc, char** argv) {
                 "  orb-diff a.exr b.exr --display sRGB --view Filmic --fail-flip 0.1\n"
                 "  orb-render scene.json -o - | orb-diff golden.exr - --fail-relmse 0.001\n"
                 "Metrics run over R,G,B (alpha is not compared). Without any --fail-* option, any\n"
-                "channel differing by more than 1e-6 fails (as with idiff).\n"
+                "channel differing by more than float rounding fails: |a-b| > 1e-6 + 1e-4*max(|a|,|b|).\n"
                 "Exit status: 0 pass (also warn, unless --strict), 1 fail, 2 error (missing, unreadable or\n"
                 "truncated image, different sizes, a pass missing in one image, bad usage).");
         },

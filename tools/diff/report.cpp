@@ -9,13 +9,14 @@ namespace {
 // JSON has no infinities: an identical pair's PSNR is reported as null.
 nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-nlohmann::json gate_set_json(const GateSet& g, bool percent_active, double percent, double threshold) {
+nlohmann::json gate_set_json(const GateSet& g, bool percent_active, double percent, orb::image::Tolerance tolerance) {
     auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
     return {{"rmse", opt(g.rmse)},
             {"relmse", opt(g.relmse)},
             {"flip", opt(g.flip)},
             {"percent", percent_active ? nlohmann::json(percent) : nlohmann::json(nullptr)},
-            {"threshold", threshold}};
+            {"threshold", tolerance.absolute},
+            {"relative_threshold", tolerance.relative}};
 }
 
 }  // namespace
@@ -26,9 +27,10 @@ std::string summary_line(const PassResult& r, const Gates& gates) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer,
                   "%s [%s]: mean abs %.6g, max abs %.6g at (%d, %d) %s, RMSE %.6g, PSNR %.2f dB, relMSE %.6g, "
-                  "%.4g%% of pixels over %.3g",
+                  "%.4g%% of pixels over %s",
                   c.pass.c_str(), c.space.c_str(), s.mean_abs_error, s.max_abs_error, s.max_x, s.max_y,
-                  s.max_channel.c_str(), s.rmse, s.psnr, s.relmse, c.percent_over.at(0), gates.fail_threshold());
+                  s.max_channel.c_str(), s.rmse, s.psnr, s.relmse, c.percent_over.at(0),
+                  describe_tolerance(gates.fail_tolerance()).c_str());
     std::string line = buffer;
     if (c.flip) {
         std::snprintf(buffer, sizeof buffer, ", %s %.6f", c.flip->hdr ? "HDR-FLIP" : "LDR-FLIP", c.flip->mean);
@@ -81,8 +83,8 @@ nlohmann::json pass_json(const PassResult& r, const Gates& gates) {
 }
 
 nlohmann::json gates_json(const Gates& g) {
-    return {{"fail", gate_set_json(g.fail, g.fail_percent_active(), g.fail_percent(), g.fail_threshold())},
-            {"warn", gate_set_json(g.warn, g.warn_percent_active(), g.warn_percent(), g.warn_threshold())}};
+    return {{"fail", gate_set_json(g.fail, g.fail_percent_active(), g.fail_percent(), g.fail_tolerance())},
+            {"warn", gate_set_json(g.warn, g.warn_percent_active(), g.warn_percent(), g.warn_tolerance())}};
 }
 
 }  // namespace orb::diff

@@ -1,5 +1,6 @@
-// orb-import: any scene Orb can read (Orb JSON, SmallptGPU .scn, glTF, GLB)
-// -> the canonical Orb JSON scene, or back to .scn (docs/orb-import.md).
+// orb-import: any scene Orb can read (Orb JSON, SmallptGPU .scn, glTF, GLB, PLY)
+// -> the canonical Orb JSON scene, its binary form (.orb), or back to .scn
+// (docs/orb-import.md).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,19 +13,25 @@
 #include "orb/cli/tool_main.h"
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
+#include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
 #include "output_format.h"
+#include "ply_options.h"
 
 namespace {
 
 constexpr const char* kDescription =
-    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb) to the canonical Orb JSON scene,\n"
-    "or write it back as SmallptGPU .scn. The input format is recognised by content.";
+    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb, PLY point cloud) to the canonical Orb JSON scene,\n"
+    "the binary Orb scene (.orb, for millions of spheres), or back to SmallptGPU .scn.\n"
+    "The input format is recognised by content.";
 
 constexpr const char* kExamples = R"(Examples:
   orb-import scenes/cornell.scn -o cornell.json      .scn -> Orb JSON
   orb-import model.glb > model.json                  glTF binary -> Orb JSON on stdout
+  orb-import cloud.ply --radius 0.01 -o cloud.json   PLY point cloud -> spheres, camera, lights
+  orb-import cloud.ply -o cloud.orb                  ... -> the binary scene (fast to load)
+  orb-import cloud.orb -o cloud.json                 binary scene -> Orb JSON, exactly
   orb-import cornell.json --to scn -o cornell.scn    Orb JSON -> .scn (warns about losses)
   orb-import model.gltf --to scn --strict -o m.scn   fail instead of losing anything
   cat scene.txt | orb-import - --from scn            read stdin, say what it is
@@ -64,11 +71,13 @@ int run(Arguments& args) {
     using orb::import_tool::OutputFormat;
     const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
     if (!args.from.empty()) args.import_options.format = orb::scene_format_from_name(args.from);
-    // A .gltf/.glb name means glTF even when the content is too broken to recognise,
+    // A .gltf/.glb (.ply) name means glTF (PLY) even when the content is too broken to recognise,
     // so that the glTF reader (not the .scn one) explains what is wrong.
     const std::string extension = std::filesystem::path(args.input).extension().string();
     if (args.from.empty() && (extension == ".gltf" || extension == ".glb"))
         args.import_options.format = orb::SceneFormat::GltfJson;
+    if (args.from.empty() && extension == ".ply") args.import_options.format = orb::SceneFormat::Ply;
+    if (args.from.empty() && extension == ".orb") args.import_options.format = orb::SceneFormat::OrbBinary;
     args.import_options.gltf.strict = args.strict;
 
     // The output is checked and prepared before anything is read or converted.
@@ -86,6 +95,8 @@ int run(Arguments& args) {
         orb::ScnWriteResult written = orb::write_scn(imported.scene);
         report_losses(written.lossy, args.strict, "writing .scn");
         text = std::move(written.text);
+    } else if (to == OutputFormat::OrbBinary) {
+        text = orb::write_scene_binary(imported.scene);
     } else {
         text = orb::write_scene_json(imported.scene);
     }
@@ -104,15 +115,17 @@ int main(int argc, char** argv) {
             app.add_option("-o,--output", args.output, "Where to write; - (the default) writes stdout")
                 ->option_text("FILE");
             app.add_option("--from", args.from, "Input format, instead of recognising it by content")
-                ->check(CLI::IsMember({"orb", "json", "scn", "gltf", "glb"}))
-                ->option_text("orb|scn|gltf|glb");
+                ->check(CLI::IsMember({"orb", "json", "scn", "gltf", "glb", "ply", "orb-binary"}))
+                ->option_text("orb|scn|gltf|glb|ply|orb-binary");
             app.add_option("--to", args.to,
-                           "Output format: orb (Orb JSON) or scn; default from the -o extension (.scn), else orb")
-                ->check(CLI::IsMember({"orb", "json", "scn"}))
-                ->option_text("orb|scn");
+                           "Output format: orb (Orb JSON), orb-binary or scn; default from the -o extension (.orb: "
+                           "orb-binary, .scn), else orb")
+                ->check(CLI::IsMember({"orb", "json", "scn", "orb-binary"}))
+                ->option_text("orb|orb-binary|scn");
             app.add_flag("--strict", args.strict,
                          "Fail (exit 1, no output) instead of warning when information would be lost");
             orb::import_tool::add_gltf_options(app, args.import_options.gltf);
+            orb::import_tool::add_ply_options(app, args.import_options.ply);
             app.footer(kExamples);
         },
         [&] { return run(args); });

@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
     RenderOptions options;
     return orb::cli::run_tool(
         argc, argv, "orb-render",
-        "Render a scene (Orb JSON, .scn or glTF) with OpenCL path tracing into a multi-pass OpenEXR.",
+        "Render a scene (Orb JSON or binary .orb, .scn, glTF, PLY) with OpenCL path tracing into a multi-pass OpenEXR.",
         [&](CLI::App& app) { add_render_options(app, options); },
         [&]() -> int {
             check_option_combinations(options);

@@ -1,9 +1,10 @@
 #include "render_options.h"
 
 #include <cctype>
+#include <charconv>
 #include <climits>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 #include "orb/cli/io.h"
@@ -37,6 +38,19 @@ const CLI::Validator kFiniteNumber(
     },
     "NUMBER");
 
+// A seed is any 64-bit value, written in decimal. CLI11 alone would wrap -1 to
+// 2^64-1 and clamp larger values, so distinct seeds would collide: only plain
+// digits that fit are accepted.
+const CLI::Validator kSeed(
+    [](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const char* end = text.data() + text.size();
+        const auto [stop, error] = std::from_chars(text.data(), end, value);
+        if (!text.empty() && error == std::errc{} && stop == end) return {};
+        return "expected a whole number in [0, 18446744073709551615], got '" + text + "'";
+    },
+    "0..2^64-1");
+
 const char* kExamples = R"(Examples:
   orb-render scenes/cornell.json -o cornell.exr
   orb-render scene.json -o out.exr --spp 1024 --checkpoint 10
@@ -64,7 +78,7 @@ void refuse_non_exr_output_name(const std::string& output) {
 }  // namespace
 
 void add_render_options(CLI::App& app, RenderOptions& o) {
-    app.add_option("SCENE", o.scene, "Scene file (Orb JSON, .scn, glTF) or - for stdin");
+    app.add_option("SCENE", o.scene, "Scene file (Orb JSON or binary .orb, .scn, glTF, PLY) or - for stdin");
     app.add_option("-o,--output", o.output, "Output EXR, or - for stdout");
     app.add_flag("--list-devices", o.list_devices, "List OpenCL devices and exit");
     app.add_option("--device", o.device, "Device index or name substring (default: fastest GPU, else CPU)");
@@ -74,7 +88,7 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")
         ->check(kPositiveSeconds);
     app.add_option("--resume", o.resume, "Continue the render stored in this orb-render EXR");
-    app.add_option("--seed", o.seed, "Random seed (default 0)");
+    app.add_option("--seed", o.seed, "Random seed, 0 ... 2^64-1 (default 0)")->check(kSeed);
     app.add_option("--mode", o.mode, "Light transport: global (path tracing) or direct")
         ->check(CLI::IsMember({"global", "direct"}));
     app.add_option("--max-depth", o.max_depth, "Maximum path depth (default: the scene's render.max_depth)")

@@ -34,6 +34,18 @@ Scene import_from(const std::string& path, std::string& label) {
     return std::move(imported.scene);
 }
 
+// Posing multiplies scales and adds offsets, so an animated scene within the
+// limits at rest can leave them at some moment: check what the device gets.
+Scene pose(const Scene& imported, double seconds, const std::string& label) {
+    Scene posed = scene_at_time(imported, seconds);
+    if (!imported.animation.empty()) {
+        std::ostringstream at;
+        at << label << " at " << seconds << " s";
+        validate_scene(posed, at.str());
+    }
+    return posed;
+}
+
 // A setting the resumed file fixes may be repeated on the command line, but
 // only with the same value.
 template <typename T>
@@ -54,7 +66,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 
     require_same(o.time_at, m.scene_time, "--time-at", "orb:sceneTime", path);
     plan.scene_time = m.scene_time;
-    plan.scene = scene_at_time(imported, plan.scene_time);
+    plan.scene = pose(imported, plan.scene_time, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     if (plan.scene_hash != m.scene_hash)
         throw InputError(path + ": was rendered from a different scene (orb:sceneHash " + m.scene_hash + ", from " +
@@ -96,7 +108,7 @@ RenderPlan make_render_plan(const RenderOptions& o) {
         return plan;
     }
     plan.scene_time = o.time_at.value_or(0.0);
-    plan.scene = scene_at_time(imported, plan.scene_time);
+    plan.scene = pose(imported, plan.scene_time, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     plan.config.width = o.width.value_or(plan.scene.render.width);
     plan.config.height = o.height.value_or(plan.scene.render.height);

@@ -10,6 +10,7 @@
 #include "orb/cli/messages.h"
 #include "orb/cli/output_file.h"
 #include "orb/cli/output_overlap.h"
+#include "orb/cli/number_checks.h"
 #include "orb/cli/tool_main.h"
 #include "orb/image/color_options.h"
 #include "orb/image/contact_sheet.h"
@@ -117,11 +118,16 @@ int main(int argc, char** argv) {
             app.add_option("--pass", s.pass,
                            "Pass to show: beauty, direct, indirect, emission, albedo, normal, depth, variance, id, or any layer name")
                 ->option_text("NAME");
-            app.add_option("--exposure", s.exposure, "Exposure adjustment in stops, applied in scene-linear")->option_text("STOPS");
+            // +-100 stops keeps the gain 2^STOPS a normal float (7.9e-31 ... 1.3e30).
+            app.add_option("--exposure", s.exposure, "Exposure adjustment in stops (-100 ... 100), applied in scene-linear")
+                ->option_text("STOPS")
+                ->check(orb::cli::finite_number_in(-100, 100, "a number of stops in [-100, 100]"));
             add_color_options(app, s.color);
             app.add_option("--format", s.format, "Output format: png, jpg, tif, exr, ... (default: from the output's extension)")
                 ->option_text("FMT");
-            app.add_option("--bits", s.bits, "Bits per channel: 8 or 16 (PNG, TIFF), 16 or 32 (EXR)")->option_text("N");
+            app.add_option("--bits", s.bits, "Bits per channel: 8 or 16 (PNG, TIFF), 16 or 32 (EXR)")
+                ->option_text("N")
+                ->check(orb::cli::one_of({8, 16, 32}));
             app.add_flag("--no-dither", s.no_dither, "Round instead of dithering when quantising to 8 bits");
             app.add_option("--frames", s.frames, "Frame range for pattern inputs/outputs, e.g. 1-240")->option_text("A-B");
             app.add_flag("--contact-sheet", s.contact_sheet, "Lay out all passes of the input in one labelled image");

@@ -27,7 +27,7 @@ struct CompareSettings {
     DisplayView view;               // display, view, look: already resolved (input_space is ignored)
     std::string input_space;        // --input-space for float images ("" = scene_linear)
     double ppd = 0;                 // FLIP pixels per degree (0 = default)
-    std::vector<double> thresholds; // for "% of pixels over threshold"
+    std::vector<Tolerance> thresholds; // for "% of pixels over threshold"
     bool want_heatmap = false;
 };
 

@@ -25,7 +25,17 @@ constexpr double kRelMseEpsilon = 0.01;
 
 ErrorStats compute_error_stats(const Image& reference, const Image& test);
 
-// Percentage of pixels where any channel differs by more than `threshold`.
-double percent_pixels_over(const Image& reference, const Image& test, double threshold);
+// When two values count as different: |t - r| > absolute + relative * max(|r|, |t|).
+// A NaN against anything, or an infinity against a finite value, always does.
+struct Tolerance {
+    double absolute = 0;
+    double relative = 0;
+};
+
+// Percentage of pixels where any channel differs by more than `tolerance`.
+double percent_pixels_over(const Image& reference, const Image& test, Tolerance tolerance);
+inline double percent_pixels_over(const Image& reference, const Image& test, double threshold) {
+    return percent_pixels_over(reference, test, Tolerance{threshold, 0.0});
+}
 
 }  // namespace orb::image

@@ -6,13 +6,16 @@
 #include <memory>
 #include <string>
 
+#include "orb/kernels/device_types.h"
 #include "orb/render/device.h"
 #include "orb/render/film.h"
 #include "orb/scene/scene.h"
 
 namespace orb::render {
 
-enum class IntegratorMode { Global, Direct };
+// Global (path tracing) or Direct (the paper's local illumination): the
+// kernels' enum, from kernels/include/orb/kernels/device_types.h.
+using IntegratorMode = device::IntegratorMode;
 
 struct RenderConfig {
     int width = 640;

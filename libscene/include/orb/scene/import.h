@@ -6,19 +6,21 @@
 #include <vector>
 
 #include "orb/scene/gltf.h"
+#include "orb/scene/ply.h"
 #include "orb/scene/scene.h"
 
 namespace orb {
 
-enum class SceneFormat { Unknown, OrbJson, Scn, GltfJson, Glb };
+enum class SceneFormat { Unknown, OrbJson, Scn, GltfJson, Glb, Ply, OrbBinary };
 
 SceneFormat detect_scene_format(std::string_view bytes);
-SceneFormat scene_format_from_name(const std::string& name);  // "orb","json","scn","gltf","glb"
+SceneFormat scene_format_from_name(const std::string& name);  // "orb","json","scn","gltf","glb","ply","orb-binary"
 const char* scene_format_name(SceneFormat format);
 
 struct ImportOptions {
     SceneFormat format = SceneFormat::Unknown;  // Unknown: detect by content
     GltfImportOptions gltf;
+    PlyImportOptions ply;
 };
 
 struct ImportResult {

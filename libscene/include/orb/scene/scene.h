@@ -8,13 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "orb/kernels/device_types.h"
 #include "orb/scene/animation.h"
 
 namespace orb {
 
 using Vec3 = std::array<double, 3>;
 
-enum class MaterialType { Diffuse, Mirror, Dielectric };
+// Diffuse, Mirror, Dielectric: the kinds the kernels implement, defined once
+// for the host and the kernels in kernels/include/orb/kernels/device_types.h.
+using MaterialType = device::MaterialKind;
 
 struct Material {
     std::string name;

@@ -16,6 +16,18 @@ inline constexpr int kMaxImageSide = 65536;
 inline constexpr int kMaxSpp = 1 << 24;
 inline constexpr int kMaxDepth = 1024;
 
+// What the renderer's 32-bit floats can hold (docs/scene-format.md, "Limits").
+// Coordinates and lengths up to 1e18 keep every square and product of the
+// ray-sphere test (at most 3·(2e18)² ≈ 1.2e37) below float's 3.4e38 and hit
+// distances below the kernel's 1e30 "no hit"; positive quantities at least
+// 1e-18 keep their squares (1e-36) normal floats rather than zero.
+inline constexpr double kMaxSceneMagnitude = 1e18;
+inline constexpr double kMinScenePositive = 1e-18;
+// Emitted radiance up to 1e12 (several times the sun's) keeps a pixel's sum
+// of squared radiance finite in float over kMaxSpp samples even when a path
+// gathers light at every one of kMaxDepth bounces: (2·1024·1e12)²·2^24 ≈ 7e37.
+inline constexpr double kMaxEmission = 1e12;
+
 // Parses and validates; throws InputError naming `source` and the JSON path
 // of the first problem ("scene.json: spheres[3].radius: must be > 0, got -2").
 Scene load_scene_json(std::string_view text, const std::string& source);

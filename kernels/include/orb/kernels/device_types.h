@@ -1,0 +1,233 @@
+/* Everything the OpenCL device reads, defined once for both sides: the record
+ * layouts of the scene tables, the parameter struct of render_pass, the enums
+ * they carry, and render_pass's argument list.
+ *
+ * The host compiles this file as C++20 (namespace orb::device). The OpenCL C
+ * 1.2 program starts with it: kernels/CMakeLists.txt lists it first among the
+ * kernel files, which are concatenated into one program (embedded, from
+ * --kernel-dir, or from <prefix>/share/orb/kernels, which mirrors kernels/).
+ * It therefore includes nothing on the OpenCL side.
+ *
+ * Rules that keep the host's and the device's layouts identical:
+ *  - Fields are int, uint, float (4 bytes, 4-aligned on both sides) or float4
+ *    (16 bytes, 16-aligned on both sides). No float3 (16 bytes in OpenCL C but
+ *    12 in a naive host struct), no bool, size_t, pointers or 64-bit integers
+ *    (4-aligned on some 32-bit hosts, 8 on the device).
+ *  - Padding is written out as named fields, so there is none implicit, and
+ *    a struct holding a float4 is a multiple of 16 bytes (so arrays of it
+ *    stay aligned on both sides).
+ *  - Every size and offset is listed in ORB_DEVICE_LAYOUT (at the end of this
+ *    file): the host static_asserts them, and tests/render/device_layout_test.cpp
+ *    has the device compiler report the same figures.
+ *
+ * docs/rendering.md ("Host and device layout") says how to add a field or a
+ * buffer. */
+#ifndef ORB_KERNELS_DEVICE_TYPES_H
+#define ORB_KERNELS_DEVICE_TYPES_H
+
+#ifdef __OPENCL_VERSION__
+
+/* OpenCL C: the built-in types. An enum's members are prefixed with its name,
+ * since C has no scoped enums: MaterialKind_Diffuse. */
+#define ORB_ENUM(name) enum name
+#define ORB_ENUMERATOR(name, member, value) name##_##member = value
+
+#else
+
+#include <cstddef>
+#include <cstdint>
+
+namespace orb::device {
+
+/* The host spells the OpenCL C types the same way inside orb::device, so the
+ * struct definitions below are one text for both compilers. */
+using uint = std::uint32_t;
+struct alignas(16) float4 {
+    float x, y, z, w;
+};
+static_assert(sizeof(int) == 4 && sizeof(float) == 4, "OpenCL C's int and float are 4 bytes");
+static_assert(sizeof(float4) == 16 && alignof(float4) == 16, "OpenCL C's float4 is 16 bytes, 16-aligned");
+
+/* C++: a scoped enum, MaterialKind::Diffuse, stored as the device's int. */
+#define ORB_ENUM(name) enum class name : int
+#define ORB_ENUMERATOR(name, member, value) member = value
+
+#endif
+
+/* ---- Enums (struct fields hold them as int) ---- */
+
+/* How a material scatters light (kernels/bsdf.cl). Also the scene model's
+ * material type: libscene's orb::MaterialType is this enum. */
+ORB_ENUM(MaterialKind){
+    ORB_ENUMERATOR(MaterialKind, Diffuse, 0),
+    ORB_ENUMERATOR(MaterialKind, Mirror, 1),
+    ORB_ENUMERATOR(MaterialKind, Dielectric, 2),
+};
+
+/* What the integrator estimates (docs/rendering.md); librender's public
+ * orb::render::IntegratorMode is this enum. */
+ORB_ENUM(IntegratorMode){
+    ORB_ENUMERATOR(IntegratorMode, Global, 0),  /* path tracing */
+    ORB_ENUMERATOR(IntegratorMode, Direct, 1),  /* the paper's local illumination */
+};
+
+/* ---- Scene tables: read-only buffers, __constant or __global ---- */
+
+/* Four spheres in structure-of-arrays form, for the intersection loop: CPUs
+ * test all four lanes with one vector instruction per float4. Sphere i is
+ * lane i % 4 of packet i / 4. Lanes past the last sphere hold radius2 = -1,
+ * which makes the discriminant negative, so they never hit. GPUs read the
+ * same packets one lane at a time (ORB_INTERSECT_SCALAR). */
+typedef struct SpherePacket {
+    float4 centre_x;
+    float4 centre_y;
+    float4 centre_z;
+    float4 radius2; /* radius squared */
+} SpherePacket;
+
+/* One sphere as shading reads it, once per hit. */
+typedef struct SphereRecord {
+    float4 centre_radius; /* xyz: centre, w: radius (one 16-byte load for both) */
+    int material;         /* index into the materials table */
+    int pad0, pad1, pad2;
+} SphereRecord;
+
+typedef struct MaterialRecord {
+    float4 color;    /* xyz: reflectance or tint in [0, 1]; w: 0 */
+    float4 emission; /* xyz: emitted radiance; w: 0. Non-zero makes every sphere using it a light */
+    float ior;       /* index of refraction, for dielectrics */
+    int kind;        /* a MaterialKind */
+    int pad0, pad1;
+} MaterialRecord;
+
+/* An emissive sphere, for next-event estimation. */
+typedef struct LightRecord {
+    int sphere; /* index into the spheres table */
+} LightRecord;
+
+/* ---- The parameter struct of render_pass, passed by value ---- */
+
+/* Pinhole or thin lens: an orthonormal frame and the half extents of the
+ * image plane at unit distance, tan(vfov / 2) * aspect and tan(vfov / 2). */
+typedef struct CameraParams {
+    float4 origin;  /* xyz; w: 0 */
+    float4 right;   /* unit; w: 0 */
+    float4 up;      /* unit; w: 0 */
+    float4 forward; /* unit, towards the target; w: 0 */
+    float half_width;
+    float half_height;
+    float lens_radius; /* 0 for a pinhole */
+    float focus_distance;
+} CameraParams;
+
+/* Lengths of the scene tables (a table with no records still holds one
+ * placeholder, since OpenCL has no empty buffers). */
+typedef struct SceneCounts {
+    int packet_count;
+    int sphere_count;
+    int light_count;
+    int pad0;
+} SceneCounts;
+
+/* Fixed for a whole render. */
+typedef struct RenderSettings {
+    int width;
+    int height;
+    int max_depth; /* scattering events per path (docs/rendering.md) */
+    int mode;      /* an IntegratorMode */
+    uint seed_lo;  /* the 64-bit seed, split: no 64-bit fields (see above) */
+    uint seed_hi;
+    int pad0, pad1;
+} RenderSettings;
+
+/* Changes with every pass: the samples [first_sample, first_sample + sample_count). */
+typedef struct PassRange {
+    uint first_sample_lo;
+    uint first_sample_hi;
+    int sample_count;
+    int write_centre_ray; /* 1 on the first pass: depth and object id of the pixel-centre ray */
+} PassRange;
+
+typedef struct RenderPassParams {
+    CameraParams camera;
+    SceneCounts scene;
+    RenderSettings settings;
+    PassRange pass;
+} RenderPassParams;
+
+/* ---- render_pass's arguments, in order ----
+ * The kernel's signature (kernels/integrator.cl), the host's argument indices,
+ * its set of scene buffers and its count of __constant arguments
+ * (librender/src/pass_arguments.h) are all generated from this one list:
+ *   FILM(name)          __global float* film sums, in the order of
+ *                       librender's DeviceFilm::buffers()
+ *   TABLE(type, name)   a read-only scene table of `type` records, in the
+ *                       address space ORB_SCENE_SPACE (__constant or __global)
+ *   PARAMS(type, name)  the parameter struct, by value; last, since it ends
+ *                       the signature without a comma */
+#define ORB_RENDER_PASS_ARGUMENTS(FILM, TABLE, PARAMS) \
+    FILM(film_radiance)                                \
+    FILM(film_radiance_sq)                             \
+    FILM(film_direct)                                  \
+    FILM(film_indirect)                                \
+    FILM(film_emission)                                \
+    FILM(film_albedo)                                  \
+    FILM(film_normal)                                  \
+    FILM(film_alpha)                                   \
+    FILM(film_depth)                                   \
+    FILM(film_object_id)                               \
+    TABLE(SpherePacket, packets)                       \
+    TABLE(SphereRecord, spheres)                       \
+    TABLE(MaterialRecord, materials)                   \
+    TABLE(LightRecord, lights)                         \
+    PARAMS(RenderPassParams, params)
+
+#ifndef __OPENCL_VERSION__
+
+/* ---- Host checks: the layouts above, byte for byte ----
+ * Every struct's size and every field's offset, listed once: the host
+ * static_asserts them here, and tests/render/device_layout_test.cpp has the
+ * device compiler report the same figures for the same list. */
+#define ORB_DEVICE_LAYOUT(SIZE, FIELD)                                                                      \
+    SIZE(SpherePacket, 64)                                                                                 \
+    FIELD(SpherePacket, centre_x, 0) FIELD(SpherePacket, centre_y, 16) FIELD(SpherePacket, centre_z, 32)   \
+    FIELD(SpherePacket, radius2, 48)                                                                       \
+    SIZE(SphereRecord, 32)                                                                                 \
+    FIELD(SphereRecord, centre_radius, 0) FIELD(SphereRecord, material, 16)                                \
+    SIZE(MaterialRecord, 48)                                                                               \
+    FIELD(MaterialRecord, color, 0) FIELD(MaterialRecord, emission, 16) FIELD(MaterialRecord, ior, 32)     \
+    FIELD(MaterialRecord, kind, 36)                                                                        \
+    SIZE(LightRecord, 4) /* an int array: the one table without a float4 */                                \
+    FIELD(LightRecord, sphere, 0)                                                                          \
+    SIZE(CameraParams, 80)                                                                                 \
+    FIELD(CameraParams, origin, 0) FIELD(CameraParams, right, 16) FIELD(CameraParams, up, 32)              \
+    FIELD(CameraParams, forward, 48) FIELD(CameraParams, half_width, 64)                                   \
+    FIELD(CameraParams, half_height, 68) FIELD(CameraParams, lens_radius, 72)                              \
+    FIELD(CameraParams, focus_distance, 76)                                                                \
+    SIZE(SceneCounts, 16)                                                                                  \
+    FIELD(SceneCounts, packet_count, 0) FIELD(SceneCounts, sphere_count, 4)                                \
+    FIELD(SceneCounts, light_count, 8)                                                                     \
+    SIZE(RenderSettings, 32)                                                                               \
+    FIELD(RenderSettings, width, 0) FIELD(RenderSettings, height, 4) FIELD(RenderSettings, max_depth, 8)   \
+    FIELD(RenderSettings, mode, 12) FIELD(RenderSettings, seed_lo, 16) FIELD(RenderSettings, seed_hi, 20)  \
+    SIZE(PassRange, 16)                                                                                    \
+    FIELD(PassRange, first_sample_lo, 0) FIELD(PassRange, first_sample_hi, 4)                              \
+    FIELD(PassRange, sample_count, 8) FIELD(PassRange, write_centre_ray, 12)                               \
+    SIZE(RenderPassParams, 144)                                                                            \
+    FIELD(RenderPassParams, camera, 0) FIELD(RenderPassParams, scene, 80)                                  \
+    FIELD(RenderPassParams, settings, 96) FIELD(RenderPassParams, pass, 128)
+
+#define ORB_CHECK_SIZE(type, size) static_assert(sizeof(type) == (size), "sizeof " #type);
+#define ORB_CHECK_FIELD(type, field, offset) static_assert(offsetof(type, field) == (offset), #type "." #field);
+ORB_DEVICE_LAYOUT(ORB_CHECK_SIZE, ORB_CHECK_FIELD)
+#undef ORB_CHECK_SIZE
+#undef ORB_CHECK_FIELD
+
+}  // namespace orb::device
+
+#endif
+
+#undef ORB_ENUM
+#undef ORB_ENUMERATOR
+
+#endif /* ORB_KERNELS_DEVICE_TYPES_H */

@@ -1,0 +1,168 @@
+// The scene around a point cloud. The numbers here are documented in
+// docs/orb-import.md ("PLY point clouds"); change them together.
+#include "ply_scene.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <unordered_map>
+
+#include "json_text.h"
+#include "orb/scene/error.h"
+
+namespace orb::ply {
+namespace {
+
+struct Bounds {
+    Vec3 lo{}, hi{};
+    Vec3 center() const { return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}; }
+    double diagonal() const { return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]); }
+};
+
+Bounds bounds_of_spheres(const std::vector<Sphere>& spheres) {
+    Bounds b;
+    for (std::size_t i = 0; i < spheres.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const double low = spheres[i].center[c] - spheres[i].radius, high = spheres[i].center[c] + spheres[i].radius;
+            b.lo[c] = i == 0 ? low : std::min(b.lo[c], low);
+            b.hi[c] = i == 0 ? high : std::max(b.hi[c], high);
+        }
+    }
+    return b;
+}
+
+// PLY colours are display values (what point-cloud viewers show as is), so
+// they are sRGB-encoded; the scene holds linear Rec.709 reflectance.
+double srgb_to_linear(double encoded) {
+    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+struct ColorHash {
+    std::size_t operator()(const Vec3& c) const {
+        std::uint64_t h = 1469598103934665603ull;
+        for (double v : c) h = (h ^ std::bit_cast<std::uint64_t>(v)) * 1099511628211ull;
+        return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+};
+
+std::string color_name(const Vec3& encoded) {
+    char name[32];
+    std::snprintf(name, sizeof name, "point #%02x%02x%02x", static_cast<int>(std::lround(encoded[0] * 255)),
+                  static_cast<int>(std::lround(encoded[1] * 255)), static_cast<int>(std::lround(encoded[2] * 255)));
+    return name;
+}
+
+Vec3 normalized(Vec3 v) {
+    const double length = std::hypot(v[0], v[1], v[2]);
+    return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+// Looks at the bounding sphere from above the +z side (30 degrees up), far
+// enough that the sphere fits the narrower field of view with a 10% margin.
+void frame_cloud(Scene& scene, const Vec3& center, double radius, const std::string& source) {
+    constexpr double kElevation = 30.0 * std::numbers::pi / 180.0;
+    const Vec3 direction{0.0, std::sin(kElevation), std::cos(kElevation)};
+    const double half_v = scene.camera.vfov_deg * std::numbers::pi / 360.0;
+    const double aspect = double(scene.render.width) / double(scene.render.height);
+    const double half_h = std::atan(std::tan(half_v) * aspect);
+    const double distance = 1.1 * radius / std::sin(std::min(half_v, half_h));
+    for (int c = 0; c < 3; ++c) scene.camera.position[c] = center[c] + direction[c] * distance;
+    // Far from the origin relative to its size, the offset vanishes in rounding.
+    const Vec3& p = scene.camera.position;
+    if (std::hypot(p[0] - center[0], p[1] - center[1], p[2] - center[2]) < 0.5 * distance)
+        throw InputError(source + ": the cloud lies too far from the origin for its size (radius " +
+                         detail::format_number(radius) + " around " + detail::format_number(center[0]) + ", " +
+                         detail::format_number(center[1]) + ", " + detail::format_number(center[2]) +
+                         "): no camera can be placed in double precision; move it or pass a larger --radius");
+    scene.camera.target = center;
+    scene.camera.up = {0, 1, 0};
+    scene.camera.focus_distance = distance;
+}
+
+// Two emissive spheres of the cloud's bounding radius R, 4R from its centre
+// (outside the camera's view): a key light from the upper left giving an
+// irradiance of 0.8·π at the centre and a fill light from the right giving
+// 0.3·π. A sphere of radiance L seen at sin θ = 1/4 gives E = π·L/16.
+// They are the last two spheres and materials.
+void add_default_lights(Scene& scene, const Vec3& center, double radius) {
+    struct Light {
+        const char* name;
+        Vec3 direction;
+        double radiance;
+    };
+    const Light lights[] = {{"key light", {-1, 2, 1}, 0.8 * 16}, {"fill light", {1, 0.5, 0.5}, 0.3 * 16}};
+    for (const Light& light : lights) {
+        Material material;
+        material.name = light.name;
+        material.color = {0, 0, 0};
+        material.emission = {light.radiance, light.radiance, light.radiance};
+        scene.materials.push_back(material);
+        // Unnamed like the points (the material names it): a cloud's binary
+        // form then needs no name section at all.
+        Sphere sphere;
+        const Vec3 d = normalized(light.direction);
+        for (int c = 0; c < 3; ++c) sphere.center[c] = center[c] + d[c] * 4 * radius;
+        sphere.radius = radius;
+        sphere.material = static_cast<std::uint32_t>(scene.materials.size() - 1);
+        scene.spheres.push_back(sphere);
+    }
+}
+
+}  // namespace
+
+double default_point_radius(const std::vector<Vec3>& centers) {
+    if (centers.empty()) return 1.0;
+    Bounds b{centers[0], centers[0]};
+    for (const Vec3& p : centers)
+        for (int c = 0; c < 3; ++c) {
+            b.lo[c] = std::min(b.lo[c], p[c]);
+            b.hi[c] = std::max(b.hi[c], p[c]);
+        }
+    const double diagonal = b.diagonal();
+    if (!(diagonal > 0) || !std::isfinite(diagonal)) return 1.0;
+    const double spacing = diagonal / (std::sqrt(3.0) * std::cbrt(static_cast<double>(centers.size())));
+    return spacing / 2;
+}
+
+Scene cloud_scene(VertexColumns columns, const PlyImportOptions& options, const std::string& source) {
+    Scene scene;
+    const double radius = options.radius > 0 ? options.radius : default_point_radius(columns.centers);
+    const std::size_t count = columns.centers.size();
+
+    std::unordered_map<Vec3, std::uint32_t, ColorHash> material_of_color;
+    if (columns.colors.empty()) {
+        Material grey;
+        grey.name = "point";
+        grey.color = {0.8, 0.8, 0.8};  // the scene format's default colour
+        scene.materials.push_back(grey);
+    }
+    scene.spheres.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        Sphere& sphere = scene.spheres[i];
+        sphere.center = columns.centers[i];
+        sphere.radius = columns.radii.empty() ? radius : columns.radii[i];
+        if (columns.colors.empty()) continue;
+        const Vec3& encoded = columns.colors[i];
+        auto [found, inserted] = material_of_color.try_emplace(encoded, static_cast<std::uint32_t>(scene.materials.size()));
+        if (inserted) {
+            Material material;
+            material.name = color_name(encoded);
+            material.color = {srgb_to_linear(encoded[0]), srgb_to_linear(encoded[1]), srgb_to_linear(encoded[2])};
+            scene.materials.push_back(std::move(material));
+        }
+        sphere.material = found->second;
+    }
+    columns = {};  // the sphere list is the only copy from here on
+
+    const Bounds bounds = bounds_of_spheres(scene.spheres);
+    const Vec3 center = bounds.center();
+    // Half the diagonal bounds every sphere; the smallest radius keeps a lone point framed.
+    const double bounding_radius = std::max(bounds.diagonal() / 2, radius);
+    frame_cloud(scene, center, bounding_radius, source);
+    add_default_lights(scene, center, bounding_radius);
+    return scene;
+}
+
+}  // namespace orb::ply

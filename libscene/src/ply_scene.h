@@ -1,0 +1,20 @@
+// Turns the vertex columns of a PLY cloud into a scene that renders as is:
+// spheres, shared materials, an automatic camera and two default lights.
+#pragma once
+
+#include <string>
+
+#include "orb/scene/ply.h"
+#include "ply_read.h"
+
+namespace orb::ply {
+
+// Radius for points without one: half the spacing the points would have on
+// a regular grid filling a cube with the cloud's bounding-box diagonal
+// (1 when all points coincide). docs/orb-import.md documents the formula.
+double default_point_radius(const std::vector<Vec3>& centers);
+
+// Throws InputError naming `source` when no camera can frame the cloud.
+Scene cloud_scene(VertexColumns columns, const PlyImportOptions& options, const std::string& source);
+
+}  // namespace orb::ply

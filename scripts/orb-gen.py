@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""orb-gen: benchmark scenes of random spheres, as a PLY point cloud or a binary Orb scene.
+
+    scripts/orb-gen.py --preset 1m -o random-1m.orb      1,000,000 spheres, seed 1
+    scripts/orb-gen.py --count 5000 --seed 7 -o r.ply    any count, any seed
+
+Spheres are placed uniformly in a box 100 wide, 50 high and 100 deep resting on
+a floor at y = 0, with radii of about a third of the mean spacing, coloured from
+a palette of 64 colours. The .orb form also holds the floor (a sphere of radius
+1e5), three emissive spheres above the box and a camera; the PLY form holds the
+points only, and orb-import adds its automatic camera and lights
+(docs/orb-import.md). The same count and seed always give the same file.
+Standard library only. Documented in scenes/README.md.
+"""
+import argparse
+import array
+import json
+import math
+import random
+import struct
+import sys
+
+PRESETS = {"10": 10, "1k": 1_000, "100k": 100_000, "1m": 1_000_000, "10m": 10_000_000}
+BOX = ((-50.0, 50.0), (0.0, 50.0), (-50.0, 50.0))
+PALETTE_SIZE = 64
+MAGIC = b"\x89ORB\r\n\x1a\n"  # docs/scene-format.md, "Binary form"
+
+
+def palette(rng):
+    """64 fixed colours as sRGB bytes (for PLY) and linear reflectance (for .orb)."""
+    colours = []
+    for _ in range(PALETTE_SIZE):
+        srgb = [rng.randrange(40, 240) for _ in range(3)]
+        colours.append(srgb)
+    return colours
+
+
+def srgb_to_linear(byte):
+    c = byte / 255.0
+    return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+
+def random_spheres(count, seed):
+    """Centres (flat x,y,z list), radii and palette indices, reproducible from the seed."""
+    rng = random.Random(seed)
+    colours = palette(rng)
+    volume = 1.0
+    for low, high in BOX:
+        volume *= high - low
+    radius = 0.35 * (volume / max(count, 1)) ** (1.0 / 3.0)
+    centers = array.array("d")
+    radii = array.array("d")
+    indices = array.array("I")
+    (x0, x1), (y0, y1), (z0, z1) = BOX
+    uniform = rng.random
+    for _ in range(count):
+        r = radius * (0.5 + uniform())
+        centers.extend((x0 + (x1 - x0) * uniform(), y0 + r + (y1 - y0 - r) * uniform(), z0 + (z1 - z0) * uniform()))
+        radii.append(r)
+        indices.append(rng.randrange(PALETTE_SIZE))
+    return colours, centers, radii, indices
+
+
+def write_ply(out, colours, centers, radii, indices):
+    count = len(radii)
+    header = (
+        "ply\nformat binary_little_endian 1.0\ncomment orb-gen random spheres\n"
+        f"element vertex {count}\nproperty float x\nproperty float y\nproperty float z\nproperty float radius\n"
+        "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n"
+    )
+    out.write(header.encode("ascii"))
+    row = struct.Struct("<ffffBBB")
+    chunk = bytearray()
+    for i in range(count):
+        c = colours[indices[i]]
+        chunk += row.pack(centers[3 * i], centers[3 * i + 1], centers[3 * i + 2], radii[i], c[0], c[1], c[2])
+        if len(chunk) > 1 << 22:
+            out.write(chunk)
+            chunk = bytearray()
+    out.write(chunk)
+
+
+def scene_header(colours, count):
+    """Everything but the spheres' arrays: the canonical JSON scene without spheres."""
+    materials = [
+        {"name": "colour %d" % i, "type": "diffuse", "color": [srgb_to_linear(v) for v in c],
+         "emission": [0, 0, 0], "ior": 1.5}
+        for i, c in enumerate(colours)
+    ]
+    materials.append({"name": "floor", "type": "diffuse", "color": [0.5, 0.5, 0.5], "emission": [0, 0, 0], "ior": 1.5})
+    materials.append({"name": "lamp", "type": "diffuse", "color": [0, 0, 0], "emission": [6, 6, 6], "ior": 1.5})
+    scene = {
+        "format": "orb-scene", "version": 1,
+        "camera": {"position": [0, 70, 170], "target": [0, 15, 0], "up": [0, 1, 0],
+                   "vfov_deg": 42.87978100351012, "aperture": 0, "focus_distance": 1},
+        "render": {"width": 640, "height": 480, "spp": 64, "max_depth": 6},
+        "materials": materials, "spheres": [],
+    }
+    return {"format": "orb-scene-binary", "version": 1, "sphere_count": count,
+            "sphere_names": False, "scene": scene}
+
+
+def write_orb(out, colours, centers, radii, indices):
+    floor_material = PALETTE_SIZE
+    lamp_material = PALETTE_SIZE + 1
+    # The floor and three lamps follow the random spheres.
+    extra = [((0.0, -1e5, 0.0), 1e5, floor_material)]
+    for x in (-60.0, 0.0, 60.0):
+        extra.append(((x, 110.0, 20.0), 15.0, lamp_material))
+    centers = array.array("d", centers)
+    radii = array.array("d", radii)
+    indices = array.array("I", indices)
+    for center, radius, material in extra:
+        centers.extend(center)
+        radii.append(radius)
+        indices.append(material)
+    header = json.dumps(scene_header(colours, len(radii)), separators=(",", ":")).encode("utf-8")
+    preamble = MAGIC + struct.pack("<II", 1, len(header))
+    out.write(preamble + header + b"\0" * ((8 - (len(preamble) + len(header)) % 8) % 8))
+    if sys.byteorder != "little":
+        for column in (centers, radii, indices):
+            column.byteswap()
+    assert indices.itemsize == 4
+    for column in (centers, radii, indices):
+        out.write(column.tobytes())
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    size = parser.add_mutually_exclusive_group(required=True)
+    size.add_argument("--preset", choices=PRESETS, help="10, 1k, 100k, 1m or 10m spheres")
+    size.add_argument("--count", type=int, help="number of random spheres")
+    parser.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
+    parser.add_argument("--format", choices=("ply", "orb"), help="default: from the -o extension")
+    parser.add_argument("-o", "--output", required=True, help="file to write (.ply or .orb)")
+    args = parser.parse_args()
+    count = PRESETS[args.preset] if args.preset else args.count
+    if count < 0:
+        parser.error("--count must be >= 0")
+    fmt = args.format or ("ply" if args.output.endswith(".ply") else "orb" if args.output.endswith(".orb") else None)
+    if fmt is None:
+        parser.error("name the output .ply or .orb, or pass --format")
+    colours, centers, radii, indices = random_spheres(count, args.seed)
+    # Written to a temporary name and renamed, so an interrupted run leaves no half file.
+    temporary = args.output + ".orb-gen-partial"
+    with open(temporary, "wb") as out:
+        (write_ply if fmt == "ply" else write_orb)(out, colours, centers, radii, indices)
+    import os
+    os.replace(temporary, args.output)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,127 @@
+// orb-import on PLY point clouds, as a real executable: recognised by
+// content, --from ply, --radius, and one clear error per malformed file with
+// exit status 1 and no output left behind.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "orb/scene/ply.h"
+#include "orb/scene/scene_json.h"
+#include "run_process.h"
+
+namespace orb {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ProcessResult;
+using ::testing::HasSubstr;
+using ::testing::IsEmpty;
+
+const std::string kCloud =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\nproperty list uchar int "
+    "vertex_indices\nend_header\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 255 0 0\n3 0 1 2\n";
+
+class OrbImportPlyCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string dir = (fs::temp_directory_path() / "orb-import-ply-XXXXXX").string();
+        ASSERT_NE(mkdtemp(dir.data()), nullptr);
+        dir_ = dir;
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(dir_, ec);
+    }
+    ProcessResult run(const std::vector<std::string>& args, const std::string& stdin_bytes = "") {
+        return test::run_process(ORB_IMPORT_EXE, args, stdin_bytes, dir_.string());
+    }
+    void write(const std::string& name, const std::string& bytes) { std::ofstream(dir_ / name, std::ios::binary) << bytes; }
+    std::vector<std::string> files() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+    fs::path dir_;
+};
+
+TEST_F(OrbImportPlyCli, PlyFileToOrbJson) {
+    write("cloud.ply", kCloud);
+    const ProcessResult r = run({"cloud.ply", "--radius", "0.25"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_THAT(r.err, IsEmpty());
+    const Scene scene = load_scene_json(r.out, "stdout");
+    EXPECT_EQ(scene, import_ply(kCloud, "cloud.ply", {.radius = 0.25}));
+    EXPECT_EQ(scene.spheres.size(), 3u + 2u);
+    EXPECT_EQ(scene.materials.size(), 2u + 2u);  // red, green, two lights
+    EXPECT_EQ(scene.spheres[0].radius, 0.25);
+}
+
+TEST_F(OrbImportPlyCli, StdinIsRecognisedByContentAndFromPlyWorks) {
+    const ProcessResult detected = run({"-"}, kCloud);
+    ASSERT_EQ(detected.exit_code, 0) << detected.err;
+    const ProcessResult named = run({"-", "--from", "ply"}, kCloud);
+    EXPECT_EQ(named.out, detected.out);
+}
+
+TEST_F(OrbImportPlyCli, ANonPositiveRadiusIsAUsageError) {
+    write("cloud.ply", kCloud);
+    EXPECT_EQ(run({"cloud.ply", "--radius", "-1"}).exit_code, 2);
+    EXPECT_EQ(run({"cloud.ply", "--radius", "0"}).exit_code, 2);
+}
+
+struct BadPly {
+    const char* name;
+    std::string bytes;
+    std::string message;
+};
+
+void PrintTo(const BadPly& bad, std::ostream* os) { *os << bad.name; }
+
+class OrbImportBadPly : public OrbImportPlyCli, public ::testing::WithParamInterface<BadPly> {};
+
+TEST_P(OrbImportBadPly, OneMessageExit1AndNoOutput) {
+    write("bad.ply", GetParam().bytes);
+    const ProcessResult r = run({"bad.ply", "-o", "out.json"});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.err, "orb-import: error: " + GetParam().message + "\n");
+    EXPECT_THAT(r.out, IsEmpty());
+    EXPECT_EQ(files(), std::vector<std::string>{"bad.ply"});  // no output, no temporaries
+}
+
+const std::string kXyz = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryErrorClass, OrbImportBadPly,
+    ::testing::Values(
+        // A .ply name picks the PLY reader even when the magic is wrong.
+        BadPly{"bad_magic", "PLY\nformat ascii 1.0\n", "bad.ply:1: not a PLY file (it must start with the line \"ply\")"},
+        BadPly{"bad_header_line", "ply\nformat ascii 1.0\nelement vertex\n", "bad.ply:3: expected \"element NAME COUNT\""},
+        BadPly{"unknown_type", "ply\nformat ascii 1.0\nelement vertex 1\nproperty half x\nend_header\n",
+               "bad.ply:4: unknown property type 'half' (expected char, uchar, short, ushort, int, uint, float, double "
+               "or int8 ... float64)"},
+        BadPly{"missing_y", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float z\nend_header\n",
+               "bad.ply:3: element 'vertex' has no 'y' property (x, y and z are required)"},
+        BadPly{"truncated", kXyz + "end_header\n1 2 3\n4\n", "bad.ply: vertex 1 property 'y': the data ends early (the file is truncated)"},
+        BadPly{"count_larger_than_file",
+               "ply\nformat binary_big_endian 1.0\nelement vertex 4000000000\nproperty double x\nproperty double y\n"
+               "property double z\nend_header\n0123456789abcdef01234567",
+               "bad.ply:3: element 'vertex' declares 4000000000 rows of at least 24 bytes, more than the 24 bytes of "
+               "data left in the file"},
+        BadPly{"count_overflows", "ply\nformat ascii 1.0\nelement vertex 18446744073709551616\nend_header\n",
+               "bad.ply:3: element 'vertex' count 18446744073709551616 overflows"},
+        BadPly{"nan", kXyz + "end_header\n1 2 3\n4 nan 6\n", "bad.ply: vertex 1 property 'y': must be finite, got nan"},
+        BadPly{"inf", kXyz + "end_header\n1 2 -inf\n4 5 6\n", "bad.ply: vertex 0 property 'z': must be finite, got -inf"},
+        BadPly{"negative_radius", kXyz + "property double radius\nend_header\n1 2 3 0.5\n4 5 6 -0.5\n",
+               "bad.ply: vertex 1 property 'radius': must be > 0, got -0.5"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace orb

@@ -1,0 +1,114 @@
+// The scene around a cloud: shared materials, radii, the automatic camera
+// that sees every point, and lights that light it without being seen.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "orb/scene/ply.h"
+#include "ply_builder.h"
+
+namespace orb {
+namespace {
+
+using test::make_ply;
+using test::PlyTestElement;
+
+PlyTestElement xyz_cloud(const std::vector<Vec3>& points) {
+    PlyTestElement vertex{"vertex", {{"double", "x", ""}, {"double", "y", ""}, {"double", "z", ""}}, {}};
+    for (const Vec3& p : points) vertex.rows.push_back({p[0], p[1], p[2]});
+    return vertex;
+}
+
+std::size_t emissive_count(const Scene& scene) {
+    std::size_t count = 0;
+    for (const Sphere& s : scene.spheres)
+        if (scene.materials[s.material].emission != Vec3{0, 0, 0}) ++count;
+    return count;
+}
+
+TEST(PlyScene, EqualColoursShareOneMaterial) {
+    PlyTestElement vertex{"vertex",
+                          {{"float", "x", ""}, {"float", "y", ""}, {"float", "z", ""},
+                           {"uchar", "red", ""}, {"uchar", "green", ""}, {"uchar", "blue", ""}},
+                          {}};
+    for (int i = 0; i < 5000; ++i) vertex.rows.push_back({double(i % 71), double(i % 13), double(i / 71), double(i % 256), 7, 9});
+    const Scene scene = import_ply(make_ply("binary_little_endian", {vertex}), "c.ply");
+    EXPECT_EQ(scene.materials.size(), 256u + 2u);  // 256 colours and the two lights
+    for (int i = 0; i < 5000; ++i) {
+        const Sphere& s = scene.spheres[static_cast<std::size_t>(i)];
+        EXPECT_EQ(s.material, scene.spheres[static_cast<std::size_t>(i % 256)].material);
+    }
+}
+
+TEST(PlyScene, PointsWithoutColourAreTheDefaultGrey) {
+    const Scene scene = import_ply(make_ply("ascii", {xyz_cloud({{0, 0, 0}, {1, 1, 1}})}), "g.ply");
+    EXPECT_EQ(scene.materials.at(scene.spheres[0].material).color, (Vec3{0.8, 0.8, 0.8}));
+    EXPECT_EQ(scene.spheres[0].material, scene.spheres[1].material);
+    EXPECT_EQ(emissive_count(scene), 2u);
+    EXPECT_EQ(scene.render, RenderSettings{});
+    EXPECT_EQ(scene.camera.vfov_deg, Camera{}.vfov_deg);
+}
+
+TEST(PlyScene, RadiusOptionAndTheDerivedDefault) {
+    // 1000 points on a 10x10x10 grid of spacing 1: the derived radius is half the spacing.
+    std::vector<Vec3> grid;
+    for (int i = 0; i < 1000; ++i) grid.push_back({double(i % 10), double(i / 10 % 10), double(i / 100)});
+    const std::string bytes = make_ply("binary_little_endian", {xyz_cloud(grid)});
+    const double derived = import_ply(bytes, "grid.ply").spheres[0].radius;
+    EXPECT_NEAR(derived, 0.45, 1e-12);  // diagonal 9*sqrt(3) over sqrt(3)*cbrt(1000) = 0.9, halved
+    EXPECT_EQ(import_ply(bytes, "grid.ply", {.radius = 0.125}).spheres[999].radius, 0.125);
+    // A lone point has no spacing: radius 1.
+    EXPECT_EQ(import_ply(make_ply("ascii", {xyz_cloud({{5, 5, 5}})}), "one.ply").spheres[0].radius, 1.0);
+}
+
+// Signed distances of a sphere to the four side planes of the camera's view
+// frustum (positive inside); the sphere is wholly visible when each >= radius.
+std::vector<double> frustum_distances(const Scene& scene, const Vec3& center) {
+    const Camera& c = scene.camera;
+    auto sub = [](Vec3 a, Vec3 b) { return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+    auto dot = [](Vec3 a, Vec3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    auto cross = [](Vec3 a, Vec3 b) {
+        return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    auto unit = [&](Vec3 v) {
+        const double l = std::sqrt(dot(v, v));
+        return Vec3{v[0] / l, v[1] / l, v[2] / l};
+    };
+    const Vec3 forward = unit(sub(c.target, c.position));
+    const Vec3 right = unit(cross(forward, c.up));
+    const Vec3 up = cross(right, forward);
+    const double half_v = c.vfov_deg * std::numbers::pi / 360;
+    const double half_h = std::atan(std::tan(half_v) * scene.render.width / scene.render.height);
+    const Vec3 p = sub(center, c.position);
+    const double along = dot(p, forward), x = dot(p, right), y = dot(p, up);
+    return {along * std::sin(half_h) - x * std::cos(half_h), along * std::sin(half_h) + x * std::cos(half_h),
+            along * std::sin(half_v) - y * std::cos(half_v), along * std::sin(half_v) + y * std::cos(half_v)};
+}
+
+TEST(PlyScene, TheAutomaticCameraSeesEveryPointAndNoLight) {
+    std::vector<Vec3> points;
+    for (int i = 0; i < 400; ++i)
+        points.push_back({100 + 30 * std::sin(i * 0.37), -20 + 5 * std::cos(i * 1.3), 7 * std::sin(i * 0.11) * (i % 7)});
+    points.push_back({160, -40, 80});  // outliers stretch the bounds
+    points.push_back({40, 10, -70});
+    for (const std::string& encoding : {std::string("ascii"), std::string("binary_big_endian")}) {
+        const Scene scene = import_ply(make_ply(encoding, {xyz_cloud(points)}), "cloud.ply", {.radius = 2});
+        for (const Sphere& s : scene.spheres) {
+            const bool light = scene.materials[s.material].emission != Vec3{0, 0, 0};
+            const std::vector<double> d = frustum_distances(scene, s.center);
+            if (!light) {
+                for (double plane : d) EXPECT_GE(plane, s.radius) << "point at " << s.center[0] << " " << s.center[1];
+            } else {
+                bool outside = false;
+                for (double plane : d) outside = outside || plane < -s.radius;
+                EXPECT_TRUE(outside) << scene.materials[s.material].name << " is in view";
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace orb

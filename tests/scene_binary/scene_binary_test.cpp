@@ -1,0 +1,55 @@
+// The binary form keeps every number, name and section of a scene exactly.
+#include <gtest/gtest.h>
+
+#include "binary_test_scene.h"
+#include "orb/scene/import.h"
+#include "orb/scene/scene_binary.h"
+#include "orb/scene/scene_json.h"
+
+namespace orb {
+namespace {
+
+TEST(SceneBinary, RoundTripIsExact) {
+    const Scene scene = test::every_feature_scene();
+    EXPECT_EQ(load_scene_binary(write_scene_binary(scene), "s.orb"), scene);
+}
+
+TEST(SceneBinary, JsonToBinaryToJsonIsByteForByteTheSame) {
+    const std::string json = write_scene_json(test::every_feature_scene());
+    const Scene from_json = load_scene_json(json, "s.json");
+    const Scene through_binary = load_scene_binary(write_scene_binary(from_json), "s.orb");
+    EXPECT_EQ(write_scene_json(through_binary), json);
+}
+
+TEST(SceneBinary, UnnamedSpheresStoreNoNames) {
+    Scene scene = test::every_feature_scene();
+    for (Sphere& s : scene.spheres) s.name.clear();
+    const std::string bytes = write_scene_binary(scene);
+    EXPECT_NE(bytes.find("\"sphere_names\":false"), std::string::npos);
+    EXPECT_EQ(load_scene_binary(bytes, "s.orb"), scene);
+    // Centres, radii and material indices: 36 bytes a sphere, nothing more.
+    const std::size_t header = bytes.size() - 36 * scene.spheres.size();
+    EXPECT_EQ(header % 8, 0u);
+}
+
+TEST(SceneBinary, EmptySceneAndSpecialNumbersRoundTrip) {
+    Scene scene;
+    scene.camera.target = {0, 0, -1};
+    EXPECT_EQ(load_scene_binary(write_scene_binary(scene), "e.orb"), scene);
+    scene.materials.push_back({});
+    scene.spheres.push_back({"", {-0.0, 5e-324, 1.7976931348623157e308}, 4.9e-324, 0});
+    const Scene back = load_scene_binary(write_scene_binary(scene), "e.orb");
+    EXPECT_EQ(back, scene);
+    EXPECT_TRUE(std::signbit(back.spheres[0].center[0]));
+}
+
+TEST(SceneBinary, FormatIsRecognisedByItsMagic) {
+    const std::string bytes = write_scene_binary(test::every_feature_scene());
+    EXPECT_TRUE(bytes.starts_with(std::string("\x89ORB\r\n\x1a\n", 8)));
+    EXPECT_EQ(detect_scene_format(bytes), SceneFormat::OrbBinary);
+    EXPECT_EQ(scene_format_from_name("orb-binary"), SceneFormat::OrbBinary);
+    EXPECT_EQ(import_scene(bytes, "s.orb", ".").scene, test::every_feature_scene());
+}
+
+}  // namespace
+}  // namespace orb
