@@ -173,6 +173,8 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     scene.packet_count = params.scene.packet_count;
     scene.sphere_count = params.scene.sphere_count;
     scene.light_count = params.scene.light_count;
+    scene.outside_packet_count = params.scene.outside_packet_count;
+    scene.bvh_node_count = params.scene.bvh_node_count;
 
     const CameraParams cam = params.camera;
     const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);
@@ -235,6 +237,7 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
         camera_ray(&pinhole, (float)x + 0.5f, (float)y + 0.5f, width, height, 0.0f, 0.0f, &o, &d);
         const Hit hit = intersect_scene(&scene, o, d, -1);
         film_depth[pixel] = hit.id < 0 ? INFINITY : hit.t;
-        film_object_id[pixel] = (float)hit.id;
+        // The tables are in BVH order; the id pass names the scene's sphere.
+        film_object_id[pixel] = hit.id < 0 ? -1.0f : (float)scene.spheres[hit.id].scene_index;
     }
 }

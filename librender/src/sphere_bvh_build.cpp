@@ -113,11 +113,16 @@ Box FloatBox::widened() const {
     return b;
 }
 
+// The sphere's box, widened so that it also holds the sphere as the device
+// stores it (float centre, float radius squared: each off by a float ulp or
+// so of the largest coordinate involved).
 Box sphere_box(const Sphere& s) {
+    const double largest = std::max({std::abs(s.center[0]), std::abs(s.center[1]), std::abs(s.center[2])}) + s.radius;
+    const double pad = largest * 0x1p-20;
     Box b;
     for (int a = 0; a < 3; ++a) {
-        b.lo[a] = s.center[a] - s.radius;
-        b.hi[a] = s.center[a] + s.radius;
+        b.lo[a] = s.center[a] - s.radius - pad;
+        b.hi[a] = s.center[a] + s.radius + pad;
     }
     return b;
 }
