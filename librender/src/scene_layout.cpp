@@ -1,5 +1,6 @@
 #include "scene_layout.h"
 
+#include "alias_table.h"
 #include "sphere_bvh.h"
 
 #include <algorithm>
@@ -117,9 +118,25 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh)
                                     uint_bits_in_w({node.hi[0], node.hi[1], node.hi[2]}, node.count)});
     }
 
+    // Lights are picked by power, Phi = pi * area * radiance, with the mean of
+    // the three channels as radiance (constants cancel in the shares).
+    std::vector<double> power;
     for (std::size_t i = 0; i < sphere_count; ++i) {
-        const Vec3& e = scene.materials[scene.spheres[i].material].emission;
-        if (e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0) tables.lights.push_back({slot_of[i]});
+        const Sphere& sphere = scene.spheres[i];
+        const Vec3& e = scene.materials[sphere.material].emission;
+        if (!(e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0)) continue;
+        tables.lights.push_back({slot_of[i], 0.0f, 1.0f, 0});
+        power.push_back(sphere.radius * sphere.radius * (e[0] + e[1] + e[2]));
+    }
+    if (!power.empty()) {
+        const AliasTable pick = build_alias_table(power);
+        for (std::size_t k = 0; k < tables.lights.size(); ++k) {
+            device::LightRecord& light = tables.lights[k];
+            light.probability = pick.probability[k];
+            light.alias_threshold = pick.slots[k].threshold;
+            light.alias = static_cast<int>(pick.slots[k].alias);
+            tables.spheres[static_cast<std::size_t>(light.sphere)].light_probability = light.probability;
+        }
     }
     layout.counts.packet_count = static_cast<int>(packet_count);
     layout.counts.sphere_count = static_cast<int>(packet_count * 4);

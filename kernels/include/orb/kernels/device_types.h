@@ -90,7 +90,8 @@ typedef struct SphereRecord {
     float4 centre_radius; /* xyz: centre, w: radius (one 16-byte load for both) */
     int material;         /* index into the materials table */
     int scene_index;      /* the sphere's index in the scene (the id pass); the tables are in BVH order */
-    int pad0, pad1;
+    float light_probability; /* the chance that next-event estimation picks this sphere; 0 unless emissive */
+    int pad0;
 } SphereRecord;
 
 /* A node of the sphere BVH (librender/src/sphere_bvh.h): its box, and in the
@@ -112,9 +113,15 @@ typedef struct MaterialRecord {
     int pad0, pad1;
 } MaterialRecord;
 
-/* An emissive sphere, for next-event estimation. */
+/* An emissive sphere, for next-event estimation, and one slot of the alias
+ * table that picks lights by power (librender/src/alias_table.h): a number
+ * u in [0, 1) chooses slot k = floor(u n); its remainder picks this slot's
+ * light when below alias_threshold, else light `alias`. */
 typedef struct LightRecord {
-    int sphere; /* index into the spheres table */
+    int sphere;            /* index into the spheres table */
+    float probability;     /* chance of picking this light: its share of the lights' power */
+    float alias_threshold; /* see above */
+    int alias;             /* index into the lights table */
 } LightRecord;
 
 /* ---- The parameter struct of render_pass, passed by value ---- */
@@ -209,14 +216,15 @@ typedef struct RenderPassParams {
     FIELD(SpherePacket, radius2, 48)                                                                       \
     SIZE(SphereRecord, 32)                                                                                 \
     FIELD(SphereRecord, centre_radius, 0) FIELD(SphereRecord, material, 16)                                \
-    FIELD(SphereRecord, scene_index, 20)                                                                   \
+    FIELD(SphereRecord, scene_index, 20) FIELD(SphereRecord, light_probability, 24)                        \
     SIZE(BvhNodeRecord, 32)                                                                                \
     FIELD(BvhNodeRecord, lo_first, 0) FIELD(BvhNodeRecord, hi_count, 16)                                   \
     SIZE(MaterialRecord, 48)                                                                               \
     FIELD(MaterialRecord, color, 0) FIELD(MaterialRecord, emission, 16) FIELD(MaterialRecord, ior, 32)     \
     FIELD(MaterialRecord, kind, 36)                                                                        \
-    SIZE(LightRecord, 4) /* an int array: the one table without a float4 */                                \
-    FIELD(LightRecord, sphere, 0)                                                                          \
+    SIZE(LightRecord, 16)                                                                                  \
+    FIELD(LightRecord, sphere, 0) FIELD(LightRecord, probability, 4)                                       \
+    FIELD(LightRecord, alias_threshold, 8) FIELD(LightRecord, alias, 12)                                   \
     SIZE(CameraParams, 80)                                                                                 \
     FIELD(CameraParams, origin, 0) FIELD(CameraParams, right, 16) FIELD(CameraParams, up, 32)              \
     FIELD(CameraParams, forward, 48) FIELD(CameraParams, half_width, 64)                                   \
