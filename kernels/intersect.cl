@@ -256,6 +256,9 @@ inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d,
 // no particular order), which in a dense cloud is usually within a few nodes.
 inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, int light)
 {
+    // Without a tree (a handful of spheres) the closest hit over the few
+    // packets is as quick as an early exit, and costs no distance to the light.
+    if (scene->bvh_node_count == 0) return intersect_scene(scene, o, d, self).id == light;
     const float t_light = sphere_distance(scene, light, o, d, self);
     if (t_light >= ORB_NO_HIT) return false;
     for (int p = 0; p < scene->outside_packet_count; ++p)
