@@ -91,12 +91,12 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
     }
 
     const int light_count = scene->light_count;
-    // Global mode picks one light uniformly per vertex; direct mode samples every light.
-    const float pick_pdf = mode == IntegratorMode_Direct ? 1.0f : 1.0f / (float)max(light_count, 1);
 
     if (m.emission.x + m.emission.y + m.emission.z > 0.0f) {
         float weight = 1.0f;  // after the camera or a specular event only this strategy exists
         if (path->from_diffuse) {
+            // Global mode picks one light per vertex by power; direct mode samples every light.
+            const float pick_pdf = mode == IntegratorMode_Direct ? 1.0f : scene->spheres[hit.id].light_probability;
             const float light_pdf =
                 pick_pdf * light_direction_pdf(path->from_point, path->from_self, hit.id, m.centre, m.radius);
             weight = power_heuristic(path->from_pdf, light_pdf);
@@ -121,13 +121,21 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
                                      path->beta * estimate_direct_light(scene, scene->lights[i].sphere, 1.0f, p, n, hit.id,
                                                                         m.color, r.u0, r.u1));
         } else if (light_count > 0) {
-            // One uniform number picks the light and, rescaled, samples it.
+            // One uniform number picks the light by power (the alias table)
+            // and, rescaled to [0, 1) again, samples it.
             const float scaled = r.u0 * (float)light_count;
-            const int pick = min((int)scaled, light_count - 1);
-            const float u = fmin(scaled - (float)pick, 0x1.fffffep-1f);
+            const int slot = min((int)scaled, light_count - 1);
+            const float rest = scaled - (float)slot;
+            SCENE_MEM const LightRecord* entry = &scene->lights[slot];
+            const bool own = rest < entry->alias_threshold;
+            const int pick = own ? slot : entry->alias;
+            const float u = fmin(own ? rest / entry->alias_threshold
+                                     : (rest - entry->alias_threshold) / (1.0f - entry->alias_threshold),
+                                 0x1.fffffep-1f);
+            SCENE_MEM const LightRecord* light = &scene->lights[pick];
             add_by_diffuse_count(out, vertices,
-                                 path->beta * estimate_direct_light(scene, scene->lights[pick].sphere, pick_pdf, p, n, hit.id,
-                                                                    m.color, u, r.u1));
+                                 path->beta * estimate_direct_light(scene, light->sphere, light->probability, p, n,
+                                                                    hit.id, m.color, u, r.u1));
         }
     }
 
@@ -173,6 +181,8 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     scene.packet_count = params.scene.packet_count;
     scene.sphere_count = params.scene.sphere_count;
     scene.light_count = params.scene.light_count;
+    scene.outside_packet_count = params.scene.outside_packet_count;
+    scene.bvh_node_count = params.scene.bvh_node_count;
 
     const CameraParams cam = params.camera;
     const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);
@@ -235,6 +245,7 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
         camera_ray(&pinhole, (float)x + 0.5f, (float)y + 0.5f, width, height, 0.0f, 0.0f, &o, &d);
         const Hit hit = intersect_scene(&scene, o, d, -1);
         film_depth[pixel] = hit.id < 0 ? INFINITY : hit.t;
-        film_object_id[pixel] = (float)hit.id;
+        // The tables are in BVH order; the id pass names the scene's sphere.
+        film_object_id[pixel] = hit.id < 0 ? -1.0f : (float)scene.spheres[hit.id].scene_index;
     }
 }

@@ -1,5 +1,6 @@
-// Ray-sphere intersection over the whole scene: a linear loop over packets of
-// four spheres (a BVH can replace this file without touching shading).
+// Ray-sphere intersection: the spheres outside the BVH (huge ones, or all of
+// a small scene) in a linear loop over packets of four, then the BVH
+// (librender/src/sphere_bvh.h), whose leaves are one packet each.
 //
 // Robustness without epsilons:
 //  * The discriminant is formed as r^2 - |oc - (oc.d) d|^2 (squared distance
@@ -9,85 +10,279 @@
 //  * A ray leaving the surface of sphere `self` never re-hits that surface at
 //    its start: for `self` only the far root counts, and only when the ray
 //    heads into the sphere (oc.d < 0). Other spheres need no offset.
+//  * BVH boxes are built to contain each sphere as stored here (float centre,
+//    float radius squared), so the box test never culls a hit the sphere test
+//    would find.
 
 #define ORB_NO_HIT 1e30f
+// No root-to-leaf path of the BVH is longer (kBvhMaxDepth, sphere_bvh.h).
+#define ORB_BVH_STACK 64
 
 typedef struct {
     float t;  // distance along the (unit) ray direction
-    int id;   // sphere index, -1 for a miss
+    int id;   // sphere slot (index into the spheres table), -1 for a miss
 } Hit;
+
+inline float packet_lane(SCENE_MEM const float4* v, int lane) { return ((SCENE_MEM const float*)v)[lane]; }
 
 #ifndef ORB_INTERSECT_SCALAR
 // Four spheres per step in SIMD lanes: CPUs execute the float4 arithmetic as
 // one vector instruction each.
-inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
+typedef struct {
+    float4 t;
+    int4 id;
+} BestHit;
+
+inline void best_init(BestHit* best)
 {
-    float4 best_t = (float4)(ORB_NO_HIT);
-    int4 best_id = (int4)(-1);
-    const int4 lane = (int4)(0, 1, 2, 3);
-    const int4 self4 = (int4)(self);
-    for (int p = 0; p < scene->packet_count; ++p) {
-        SCENE_MEM const SpherePacket* packet = &scene->packets[p];
-        const float4 ocx = (float4)(o.x) - packet->centre_x;
-        const float4 ocy = (float4)(o.y) - packet->centre_y;
-        const float4 ocz = (float4)(o.z) - packet->centre_z;
-        const float4 radius2 = packet->radius2;
-        const float4 b = ocx * d.x + ocy * d.y + ocz * d.z;
-        const float4 fx = ocx - b * d.x;
-        const float4 fy = ocy - b * d.y;
-        const float4 fz = ocz - b * d.z;
-        const float4 disc = radius2 - (fx * fx + fy * fy + fz * fz);
-        const float4 s = sqrt(fmax(disc, (float4)(0.0f)));
-        const float4 t_near = -b - s;
-        const float4 t_far = -b + s;
-        const int4 id = lane + (int4)(4 * p);
-        const int4 is_self = id == self4;
-        const float4 t = select(t_near, t_far, is_self | (t_near <= (float4)(0.0f)));
-        const int4 valid = (disc >= (float4)(0.0f)) & (t > (float4)(0.0f)) & (t < best_t) &
-                           ~(is_self & (b >= (float4)(0.0f)));
-        best_t = select(best_t, t, valid);
-        best_id = select(best_id, id, valid);
-    }
-    const float2 m2 = fmin(best_t.xy, best_t.zw);
+    best->t = (float4)(ORB_NO_HIT);
+    best->id = (int4)(-1);
+}
+
+inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self)
+{
+    const float4 ocx = (float4)(o.x) - packet->centre_x;
+    const float4 ocy = (float4)(o.y) - packet->centre_y;
+    const float4 ocz = (float4)(o.z) - packet->centre_z;
+    const float4 radius2 = packet->radius2;
+    const float4 b = ocx * d.x + ocy * d.y + ocz * d.z;
+    const float4 fx = ocx - b * d.x;
+    const float4 fy = ocy - b * d.y;
+    const float4 fz = ocz - b * d.z;
+    const float4 disc = radius2 - (fx * fx + fy * fy + fz * fz);
+    const float4 s = sqrt(fmax(disc, (float4)(0.0f)));
+    const float4 t_near = -b - s;
+    const float4 t_far = -b + s;
+    const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
+    const int4 is_self = id == (int4)(self);
+    const float4 t = select(t_near, t_far, is_self | (t_near <= (float4)(0.0f)));
+    const int4 valid = (disc >= (float4)(0.0f)) & (t > (float4)(0.0f)) & (t < best->t) &
+                       ~(is_self & (b >= (float4)(0.0f)));
+    best->t = select(best->t, t, valid);
+    best->id = select(best->id, id, valid);
+}
+
+// Whether a sphere of the packet other than `light` is hit before t_max.
+inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self, int light,
+                          float t_max)
+{
+    const float4 ocx = (float4)(o.x) - packet->centre_x;
+    const float4 ocy = (float4)(o.y) - packet->centre_y;
+    const float4 ocz = (float4)(o.z) - packet->centre_z;
+    const float4 b = ocx * d.x + ocy * d.y + ocz * d.z;
+    const float4 fx = ocx - b * d.x;
+    const float4 fy = ocy - b * d.y;
+    const float4 fz = ocz - b * d.z;
+    const float4 disc = packet->radius2 - (fx * fx + fy * fy + fz * fz);
+    const float4 s = sqrt(fmax(disc, (float4)(0.0f)));
+    const float4 t_near = -b - s;
+    const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
+    const int4 is_self = id == (int4)(self);
+    const float4 t = select(t_near, -b + s, is_self | (t_near <= (float4)(0.0f)));
+    const int4 blocks = (disc >= (float4)(0.0f)) & (t > (float4)(0.0f)) & (t < (float4)(t_max)) &
+                        ~(is_self & (b >= (float4)(0.0f))) & (id != (int4)(light));
+    return any(blocks);
+}
+
+inline float best_distance(const BestHit* best)
+{
+    const float2 m2 = fmin(best->t.xy, best->t.zw);
+    return fmin(m2.x, m2.y);
+}
+
+inline Hit best_hit(const BestHit* best)
+{
     Hit hit;
-    hit.t = fmin(m2.x, m2.y);
-    hit.id = best_t.x == hit.t ? best_id.x
-           : best_t.y == hit.t ? best_id.y
-           : best_t.z == hit.t ? best_id.z
-                               : best_id.w;
+    hit.t = best_distance(best);
+    hit.id = best->t.x == hit.t ? best->id.x
+           : best->t.y == hit.t ? best->id.y
+           : best->t.z == hit.t ? best->id.z
+                                : best->id.w;
     return hit;
 }
 #else
 // One sphere per step, for GPUs: a GPU thread executes float4 arithmetic one
 // lane at a time, so packets would only add the padding lanes' work. Reads
-// the same packets (lane i & 3 of packet i >> 2); same roots and rules as
-// the packet version.
-inline float packet_lane(SCENE_MEM const float4* v, int lane) { return ((SCENE_MEM const float*)v)[lane]; }
+// the same packets lane by lane; same roots and rules as the packet version.
+typedef Hit BestHit;
 
-inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
+inline void best_init(BestHit* best)
 {
-    Hit hit;
-    hit.t = ORB_NO_HIT;
-    hit.id = -1;
-    for (int i = 0; i < scene->sphere_count; ++i) {
-        SCENE_MEM const SpherePacket* packet = &scene->packets[i >> 2];
-        const int lane = i & 3;
+    best->t = ORB_NO_HIT;
+    best->id = -1;
+}
+
+inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self)
+{
+    for (int lane = 0; lane < 4; ++lane) {
+        const float radius2 = packet_lane(&packet->radius2, lane);
+        if (radius2 < 0.0f) break;  // padding lanes come last
         const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
                                        packet_lane(&packet->centre_z, lane));
         const float b = dot(oc, d);
         const float3 f = oc - b * d;
-        const float disc = packet_lane(&packet->radius2, lane) - dot(f, f);
+        const float disc = radius2 - dot(f, f);
         if (disc < 0.0f) continue;
         const float s = sqrt(disc);
         const float t_near = -b - s;
-        const bool is_self = i == self;
+        const int id = first_id + lane;
+        const bool is_self = id == self;
         if (is_self && b >= 0.0f) continue;
         const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
-        if (t > 0.0f && t < hit.t) {
-            hit.t = t;
-            hit.id = i;
+        if (t > 0.0f && t < best->t) {
+            best->t = t;
+            best->id = id;
         }
     }
-    return hit;
 }
+
+inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self, int light,
+                          float t_max)
+{
+    for (int lane = 0; lane < 4; ++lane) {
+        const float radius2 = packet_lane(&packet->radius2, lane);
+        if (radius2 < 0.0f) break;  // padding lanes come last
+        const int id = first_id + lane;
+        if (id == light) continue;
+        const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
+                                       packet_lane(&packet->centre_z, lane));
+        const float b = dot(oc, d);
+        const float3 f = oc - b * d;
+        const float disc = radius2 - dot(f, f);
+        if (disc < 0.0f) continue;
+        const float s = sqrt(disc);
+        const float t_near = -b - s;
+        const bool is_self = id == self;
+        if (is_self && b >= 0.0f) continue;
+        const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
+        if (t > 0.0f && t < t_max) return true;
+    }
+    return false;
+}
+
+inline float best_distance(const BestHit* best) { return best->t; }
+
+inline Hit best_hit(const BestHit* best) { return *best; }
 #endif
+
+// Where the ray enters the box, or ORB_NO_HIT if it misses it before t_max.
+inline float box_entry(SCENE_MEM const BvhNodeRecord* node, float3 o, float3 inv_d, float t_max)
+{
+    const float3 t0 = (node->lo_first.xyz - o) * inv_d;
+    const float3 t1 = (node->hi_count.xyz - o) * inv_d;
+    const float3 near = fmin(t0, t1), far = fmax(t0, t1);
+    const float enter = fmax(fmax(near.x, near.y), fmax(near.z, 0.0f));
+    const float leave = fmin(fmin(far.x, far.y), fmin(far.z, t_max));
+    return enter <= leave ? enter : ORB_NO_HIT;
+}
+
+inline float3 safe_inverse(float3 d)
+{
+    // Direction components of (almost) zero get a huge finite inverse, so no
+    // 0 * inf (NaN) enters the slab test.
+    return (float3)(1.0f) / select(d, copysign((float3)(1e-20f), d), isless(fabs(d), (float3)(1e-20f)));
+}
+
+// Closest hit along the ray, ordered front to back: the nearer child first,
+// the farther one on the stack with its entry distance, dropped when a hit
+// closer than that entry has been found by then.
+inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
+{
+    const float3 inv_d = safe_inverse(d);
+    uint stack_node[ORB_BVH_STACK];
+    float stack_entry[ORB_BVH_STACK];
+    int top = 0;
+    uint node = 0;
+    for (;;) {
+        SCENE_MEM const BvhNodeRecord* n = &scene->bvh_nodes[node];
+        const uint first = as_uint(n->lo_first.w);
+        if (as_uint(n->hi_count.w) > 0) {
+            test_packet(best, &scene->packets[first], (int)(4 * first), o, d, self);
+        } else {
+            const float t_max = best_distance(best);
+            const float t_left = box_entry(&scene->bvh_nodes[first], o, inv_d, t_max);
+            const float t_right = box_entry(&scene->bvh_nodes[first + 1], o, inv_d, t_max);
+            if (t_left < ORB_NO_HIT && t_right < ORB_NO_HIT) {
+                const bool left_first = t_left <= t_right;
+                stack_node[top] = left_first ? first + 1 : first;
+                stack_entry[top] = left_first ? t_right : t_left;
+                ++top;
+                node = left_first ? first : first + 1;
+                continue;
+            }
+            if (t_left < ORB_NO_HIT || t_right < ORB_NO_HIT) {
+                node = t_left < ORB_NO_HIT ? first : first + 1;
+                continue;
+            }
+        }
+        // Next: the nearest deferred node that can still hold a closer hit.
+        while (top > 0 && stack_entry[top - 1] >= best_distance(best)) --top;
+        if (top == 0) break;
+        node = stack_node[--top];
+    }
+}
+
+inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
+{
+    BestHit best;
+    best_init(&best);
+    for (int p = 0; p < scene->outside_packet_count; ++p) test_packet(&best, &scene->packets[p], 4 * p, o, d, self);
+    if (scene->bvh_node_count > 0) traverse_bvh(&best, scene, o, d, self);
+    return best_hit(&best);
+}
+
+// Distance along the ray to sphere slot `id` by the same test as above, or
+// ORB_NO_HIT when the ray misses it.
+inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d, int self)
+{
+    SCENE_MEM const SpherePacket* packet = &scene->packets[id >> 2];
+    const int lane = id & 3;
+    const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
+                                   packet_lane(&packet->centre_z, lane));
+    const float b = dot(oc, d);
+    const float3 f = oc - b * d;
+    const float disc = packet_lane(&packet->radius2, lane) - dot(f, f);
+    if (disc < 0.0f) return ORB_NO_HIT;
+    const float s = sqrt(disc);
+    const bool is_self = id == self;
+    if (is_self && b >= 0.0f) return ORB_NO_HIT;
+    const float t_near = -b - s;
+    const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
+    return t > 0.0f ? t : ORB_NO_HIT;
+}
+
+// Shadow rays: whether sphere `light` is the first thing along the ray. Any
+// other sphere hit before it ends the search at once (any-hit traversal, in
+// no particular order), which in a dense cloud is usually within a few nodes.
+inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, int light)
+{
+    // Without a tree (a handful of spheres) the closest hit over the few
+    // packets is as quick as an early exit, and costs no distance to the light.
+    if (scene->bvh_node_count == 0) return intersect_scene(scene, o, d, self).id == light;
+    const float t_light = sphere_distance(scene, light, o, d, self);
+    if (t_light >= ORB_NO_HIT) return false;
+    for (int p = 0; p < scene->outside_packet_count; ++p)
+        if (packet_blocks(&scene->packets[p], 4 * p, o, d, self, light, t_light)) return false;
+    if (scene->bvh_node_count == 0) return true;
+    const float3 inv_d = safe_inverse(d);
+    uint stack[ORB_BVH_STACK];
+    int top = 0;
+    uint node = 0;
+    for (;;) {
+        SCENE_MEM const BvhNodeRecord* n = &scene->bvh_nodes[node];
+        const uint first = as_uint(n->lo_first.w);
+        if (as_uint(n->hi_count.w) > 0) {
+            if (packet_blocks(&scene->packets[first], (int)(4 * first), o, d, self, light, t_light)) return false;
+        } else {
+            const bool left = box_entry(&scene->bvh_nodes[first], o, inv_d, t_light) < ORB_NO_HIT;
+            const bool right = box_entry(&scene->bvh_nodes[first + 1], o, inv_d, t_light) < ORB_NO_HIT;
+            if (left && right) stack[top++] = first + 1;
+            if (left || right) {
+                node = left ? first : first + 1;
+                continue;
+            }
+        }
+        if (top == 0) return true;
+        node = stack[--top];
+    }
+}

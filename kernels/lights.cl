@@ -48,7 +48,8 @@ inline float3 sample_light_direction(float3 p, int self, int light_id, float3 ce
 // Next-event estimate at a diffuse point p (normal n facing the viewer) from
 // one light chosen with probability `pick_pdf`, weighted against BSDF sampling
 // by the power heuristic. Visibility: the first thing the shadow ray hits
-// must be the light itself, so no distance epsilon is needed.
+// must be the light itself (nothing else before the light's own distance
+// along the ray, found by the same sphere test), so no epsilon is needed.
 inline float3 estimate_direct_light(const SceneView* scene, int light_id, float pick_pdf, float3 p, float3 n,
                                     int self, float3 albedo, float u, float v)
 {
@@ -57,8 +58,7 @@ inline float3 estimate_direct_light(const SceneView* scene, int light_id, float 
     const float3 wi = sample_light_direction(p, self, light_id, light.centre, light.radius, u, v, &direction_pdf);
     const float cos_theta = dot(n, wi);
     if (cos_theta <= 0.0f) return (float3)(0.0f);
-    const Hit hit = intersect_scene(scene, p, wi, self);
-    if (hit.id != light_id) return (float3)(0.0f);
+    if (!light_visible(scene, p, wi, self, light_id)) return (float3)(0.0f);
     const float light_pdf = pick_pdf * direction_pdf;
     const float bsdf_pdf = cos_theta * ORB_INV_PI;
     const float weight = power_heuristic(light_pdf, bsdf_pdf);

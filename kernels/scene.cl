@@ -17,6 +17,8 @@ typedef struct {
     int packet_count;
     int sphere_count;
     int light_count;
+    int outside_packet_count;
+    int bvh_node_count;
 } SceneView;
 
 // A hit sphere with its material, unpacked for shading.

@@ -67,7 +67,7 @@ Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
         throw std::invalid_argument("image size must be positive, got " + std::to_string(config.width) + "x" +
                                     std::to_string(config.height));
     if (config.max_depth < 0) throw std::invalid_argument("max depth must not be negative");
-    scene = layout_scene(input);
+    scene = layout_scene(input, config.use_bvh);
     fill_fixed_params(input.camera);
     info = choose_device(config.device);
     tuner = PassTuner(info.is_gpu ? kGpuPassSeconds : kCpuPassSeconds);

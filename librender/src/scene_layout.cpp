@@ -1,6 +1,12 @@
 #include "scene_layout.h"
 
+#include "alias_table.h"
+#include "sphere_bvh.h"
+
 #include <algorithm>
+#include <array>
+#include <bit>
+#include <limits>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -39,47 +45,104 @@ device::MaterialRecord material_record(const Material& material)
 
 }  // namespace
 
-SceneLayout layout_scene(const Scene& scene)
+namespace {
+
+void check_sphere(const Scene& scene, std::size_t i) {
+    const Sphere& sphere = scene.spheres[i];
+    const std::string which = "sphere " + std::to_string(i) + (sphere.name.empty() ? "" : " ('" + sphere.name + "')");
+    if (!(sphere.radius > 0.0) || !std::isfinite(sphere.radius))
+        throw std::runtime_error(which + " has radius " + std::to_string(sphere.radius) +
+                                 "; a positive, finite radius is required");
+    if (sphere.material >= scene.materials.size())
+        throw std::runtime_error(which + " uses material " + std::to_string(sphere.material) + " but the scene has " +
+                                 std::to_string(scene.materials.size()) + " materials");
+}
+
+device::float4 uint_bits_in_w(const std::array<float, 3>& xyz, std::uint32_t w) {
+    return {xyz[0], xyz[1], xyz[2], std::bit_cast<float>(w)};
+}
+
+}  // namespace
+
+SceneLayout layout_scene(const Scene& scene, bool use_bvh)
 {
     SceneLayout layout;
     SceneTables& tables = layout.tables;
     const std::size_t sphere_count = scene.spheres.size();
-    const std::size_t packet_count = (sphere_count + 3) / 4;
+    for (std::size_t i = 0; i < sphere_count; ++i) check_sphere(scene, i);
+
+    BvhSettings settings;
+    if (!use_bvh) settings.min_spheres_for_tree = std::numeric_limits<std::size_t>::max();
+    const SphereBvh bvh = build_sphere_bvh(scene.spheres, settings);
+
+    // Slots: the outside spheres packed four to a packet, then one packet per leaf.
+    const std::size_t outside_packets = (bvh.outside.size() + 3) / 4;
+    std::size_t leaves = 0;
+    for (const BvhNode& node : bvh.nodes) leaves += node.count > 0;
+    const std::size_t packet_count = std::max<std::size_t>(outside_packets + leaves, sphere_count ? 1 : 0);
     // Unused lanes: radius^2 = -1 makes the discriminant negative, so they never hit.
     const device::float4 empty_lanes{0.0f, 0.0f, 0.0f, -1.0f};
     tables.packets.assign(packet_count, device::SpherePacket{{}, {}, {}, empty_lanes});
-    tables.spheres.reserve(sphere_count);
+    device::SphereRecord unused{};
+    unused.scene_index = -1;
+    tables.spheres.assign(packet_count * 4, unused);
     tables.materials.reserve(scene.materials.size());
     for (const Material& material : scene.materials) tables.materials.push_back(material_record(material));
 
-    for (std::size_t i = 0; i < sphere_count; ++i) {
-        const Sphere& sphere = scene.spheres[i];
-        const std::string which = "sphere " + std::to_string(i) + (sphere.name.empty() ? "" : " ('" + sphere.name + "')");
-        if (!(sphere.radius > 0.0) || !std::isfinite(sphere.radius))
-            throw std::runtime_error(which + " has radius " + std::to_string(sphere.radius) +
-                                     "; a positive, finite radius is required");
-        if (sphere.material >= scene.materials.size())
-            throw std::runtime_error(which + " uses material " + std::to_string(sphere.material) + " but the scene has " +
-                                     std::to_string(scene.materials.size()) + " materials");
-
-        device::SpherePacket& packet = tables.packets[i / 4];
-        const std::size_t lane = i % 4;
+    std::vector<int> slot_of(sphere_count, -1);
+    auto place = [&](std::uint32_t scene_index, std::size_t slot) {
+        const Sphere& sphere = scene.spheres[scene_index];
+        device::SpherePacket& packet = tables.packets[slot / 4];
+        const std::size_t lane = slot % 4;
         lane_of(packet.centre_x, lane) = f(sphere.center[0]);
         lane_of(packet.centre_y, lane) = f(sphere.center[1]);
         lane_of(packet.centre_z, lane) = f(sphere.center[2]);
         lane_of(packet.radius2, lane) = f(sphere.radius * sphere.radius);
-
-        device::SphereRecord record{};
+        device::SphereRecord& record = tables.spheres[slot];
         record.centre_radius = to_float4(sphere.center, sphere.radius);
         record.material = static_cast<int>(sphere.material);
-        tables.spheres.push_back(record);
+        record.scene_index = static_cast<int>(scene_index);
+        slot_of[scene_index] = static_cast<int>(slot);
+    };
+    for (std::size_t k = 0; k < bvh.outside.size(); ++k) place(bvh.outside[k], k);
 
+    tables.bvh_nodes.reserve(bvh.nodes.size());
+    std::size_t next_leaf_packet = outside_packets;
+    for (const BvhNode& node : bvh.nodes) {
+        std::uint32_t first = node.first;
+        if (node.count > 0) {
+            first = static_cast<std::uint32_t>(next_leaf_packet++);
+            for (std::uint32_t lane = 0; lane < node.count; ++lane) place(bvh.order[node.first + lane], first * 4 + lane);
+        }
+        tables.bvh_nodes.push_back({uint_bits_in_w({node.lo[0], node.lo[1], node.lo[2]}, first),
+                                    uint_bits_in_w({node.hi[0], node.hi[1], node.hi[2]}, node.count)});
+    }
+
+    // Lights are picked by power, Phi = pi * area * radiance, with the mean of
+    // the three channels as radiance (constants cancel in the shares).
+    std::vector<double> power;
+    for (std::size_t i = 0; i < sphere_count; ++i) {
+        const Sphere& sphere = scene.spheres[i];
         const Vec3& e = scene.materials[sphere.material].emission;
-        if (e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0) tables.lights.push_back({static_cast<int>(i)});
+        if (!(e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0)) continue;
+        tables.lights.push_back({slot_of[i], 0.0f, 1.0f, 0});
+        power.push_back(sphere.radius * sphere.radius * (e[0] + e[1] + e[2]));
+    }
+    if (!power.empty()) {
+        const AliasTable pick = build_alias_table(power);
+        for (std::size_t k = 0; k < tables.lights.size(); ++k) {
+            device::LightRecord& light = tables.lights[k];
+            light.probability = pick.probability[k];
+            light.alias_threshold = pick.slots[k].threshold;
+            light.alias = static_cast<int>(pick.slots[k].alias);
+            tables.spheres[static_cast<std::size_t>(light.sphere)].light_probability = light.probability;
+        }
     }
     layout.counts.packet_count = static_cast<int>(packet_count);
-    layout.counts.sphere_count = static_cast<int>(sphere_count);
+    layout.counts.sphere_count = static_cast<int>(packet_count * 4);
     layout.counts.light_count = static_cast<int>(tables.lights.size());
+    layout.counts.outside_packet_count = static_cast<int>(outside_packets);
+    layout.counts.bvh_node_count = static_cast<int>(tables.bvh_nodes.size());
     return layout;
 }
 

@@ -26,9 +26,14 @@ struct SceneLayout {
     device::SceneCounts counts{};
 };
 
+// The device tables in BVH order: the spheres outside the tree first (every
+// ray tests them), then one packet per BVH leaf. A scene too small for a tree
+// (and every scene with use_bvh false) keeps the scene's own order, all
+// spheres outside. SphereRecord::scene_index maps back for the id pass.
+//
 // Throws std::runtime_error naming the sphere for input the kernels cannot
 // render (a material index out of range, a non-positive or non-finite radius).
-SceneLayout layout_scene(const Scene& scene);
+SceneLayout layout_scene(const Scene& scene, bool use_bvh = true);
 
 // Throws std::runtime_error for a camera without a direction.
 device::CameraParams layout_camera(const Camera& camera, int width, int height);

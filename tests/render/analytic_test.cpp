@@ -193,6 +193,54 @@ INSTANTIATE_TEST_SUITE_P(Lights, PlaneUnderSphereLight,
                                            PlaneCase{2.0, 2.5, IntegratorMode::Global},
                                            PlaneCase{1.0, 4.0, IntegratorMode::Direct}));
 
+// Many lights of different power, picked per vertex by power (the alias
+// table): the plane's radiance is the sum of every light's closed form. 25
+// small lights 1.5 apart at height 4 (in the BVH; the plane stays outside it),
+// their radiances spread over 50x so the picking probabilities differ; no
+// light hides another from the patch the camera sees.
+class PlaneUnderManyLights : public ::testing::TestWithParam<IntegratorMode> {};
+
+TEST_P(PlaneUnderManyLights, SumOfEveryLightsClosedForm)
+{
+    const Vec3 albedo{0.8, 0.6, 0.4};
+    Scene scene;
+    const int plane = add_sphere(scene, {0, -1e4, 0}, 1e4, add_material(scene, MaterialType::Diffuse, albedo));
+    struct Light {
+        Vec3 centre;
+        double radius;
+        Vec3 le;
+    };
+    std::vector<Light> lights;
+    for (int i = 0; i < 25; ++i) {
+        const double strength = 1.0 + 49.0 * ((i * 7) % 25) / 24.0;
+        Light light{{1.5 * (i % 5 - 2), 4.0, 1.5 * (i / 5 - 2)}, 0.1 + 0.1 * ((i * 3) % 5) / 4.0,
+                    {strength, 0.5 * strength, 0.25 * strength}};
+        add_sphere(scene, light.centre, light.radius, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, light.le));
+        lights.push_back(light);
+    }
+    scene.camera = looking_at({0, 1, 3}, {0, 0, 0}, 2.0);
+
+    const int size = 16;
+    const Film film = render(scene, small_config(size, size, 23, 6, GetParam()), {256, 256});
+    const std::vector<std::size_t> pixels = interior_pixels_of(film, plane);
+    ASSERT_EQ(pixels.size(), 14u * 14u);
+    Vec3 expected{0, 0, 0};
+    for (std::size_t p : pixels) {
+        const Vec3 point = plane_point_of_pixel(scene.camera, size, size, static_cast<int>(p % size),
+                                                static_cast<int>(p / size));
+        for (const Light& light : lights) {
+            const double dx = light.centre[0] - point[0], dy = light.centre[1], dz = light.centre[2] - point[2];
+            const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+            const double geometry = (light.radius / d) * (light.radius / d) * (dy / d) / static_cast<double>(pixels.size());
+            for (int c = 0; c < 3; ++c) expected[c] += albedo[c] * light.le[c] * geometry;
+        }
+    }
+    expect_mean_radiance(film, pixels, expected, "plane under 25 lights");
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, PlaneUnderManyLights,
+                         ::testing::Values(IntegratorMode::Global, IntegratorMode::Direct));
+
 // Specular chains: a white mirror ball and a clear glass ball inside an
 // emitting enclosure show exactly the enclosure's radiance (Fresnel
 // reflection and transmission together conserve energy), all of it in the

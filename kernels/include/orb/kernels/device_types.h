@@ -89,8 +89,21 @@ typedef struct SpherePacket {
 typedef struct SphereRecord {
     float4 centre_radius; /* xyz: centre, w: radius (one 16-byte load for both) */
     int material;         /* index into the materials table */
-    int pad0, pad1, pad2;
+    int scene_index;      /* the sphere's index in the scene (the id pass); the tables are in BVH order */
+    float light_probability; /* the chance that next-event estimation picks this sphere; 0 unless emissive */
+    int pad0;
 } SphereRecord;
+
+/* A node of the sphere BVH (librender/src/sphere_bvh.h): its box, and in the
+ * w components the bits of two uints (as_uint on the device):
+ *   lo_first.w: interior: index of the left child (the right one follows it);
+ *               leaf: the packet holding its spheres
+ *   hi_count.w: 0 for an interior node; a leaf's sphere count, 1..4
+ * Two 16-byte loads per node. */
+typedef struct BvhNodeRecord {
+    float4 lo_first;
+    float4 hi_count;
+} BvhNodeRecord;
 
 typedef struct MaterialRecord {
     float4 color;    /* xyz: reflectance or tint in [0, 1]; w: 0 */
@@ -100,9 +113,15 @@ typedef struct MaterialRecord {
     int pad0, pad1;
 } MaterialRecord;
 
-/* An emissive sphere, for next-event estimation. */
+/* An emissive sphere, for next-event estimation, and one slot of the alias
+ * table that picks lights by power (librender/src/alias_table.h): a number
+ * u in [0, 1) chooses slot k = floor(u n); its remainder picks this slot's
+ * light when below alias_threshold, else light `alias`. */
 typedef struct LightRecord {
-    int sphere; /* index into the spheres table */
+    int sphere;            /* index into the spheres table */
+    float probability;     /* chance of picking this light: its share of the lights' power */
+    float alias_threshold; /* see above */
+    int alias;             /* index into the lights table */
 } LightRecord;
 
 /* ---- The parameter struct of render_pass, passed by value ---- */
@@ -124,9 +143,11 @@ typedef struct CameraParams {
  * placeholder, since OpenCL has no empty buffers). */
 typedef struct SceneCounts {
     int packet_count;
-    int sphere_count;
+    int sphere_count;   /* sphere slots: packet_count * 4, padding lanes included */
     int light_count;
-    int pad0;
+    int outside_packet_count; /* packets [0, this) hold the spheres outside the BVH: every ray tests them */
+    int bvh_node_count;       /* 0: no tree, every sphere is outside it */
+    int pad0, pad1, pad2;
 } SceneCounts;
 
 /* Fixed for a whole render. */
@@ -177,6 +198,7 @@ typedef struct RenderPassParams {
     FILM(film_depth)                                   \
     FILM(film_object_id)                               \
     TABLE(SpherePacket, packets)                       \
+    TABLE(BvhNodeRecord, bvh_nodes)                    \
     TABLE(SphereRecord, spheres)                       \
     TABLE(MaterialRecord, materials)                   \
     TABLE(LightRecord, lights)                         \
@@ -194,28 +216,33 @@ typedef struct RenderPassParams {
     FIELD(SpherePacket, radius2, 48)                                                                       \
     SIZE(SphereRecord, 32)                                                                                 \
     FIELD(SphereRecord, centre_radius, 0) FIELD(SphereRecord, material, 16)                                \
+    FIELD(SphereRecord, scene_index, 20) FIELD(SphereRecord, light_probability, 24)                        \
+    SIZE(BvhNodeRecord, 32)                                                                                \
+    FIELD(BvhNodeRecord, lo_first, 0) FIELD(BvhNodeRecord, hi_count, 16)                                   \
     SIZE(MaterialRecord, 48)                                                                               \
     FIELD(MaterialRecord, color, 0) FIELD(MaterialRecord, emission, 16) FIELD(MaterialRecord, ior, 32)     \
     FIELD(MaterialRecord, kind, 36)                                                                        \
-    SIZE(LightRecord, 4) /* an int array: the one table without a float4 */                                \
-    FIELD(LightRecord, sphere, 0)                                                                          \
+    SIZE(LightRecord, 16)                                                                                  \
+    FIELD(LightRecord, sphere, 0) FIELD(LightRecord, probability, 4)                                       \
+    FIELD(LightRecord, alias_threshold, 8) FIELD(LightRecord, alias, 12)                                   \
     SIZE(CameraParams, 80)                                                                                 \
     FIELD(CameraParams, origin, 0) FIELD(CameraParams, right, 16) FIELD(CameraParams, up, 32)              \
     FIELD(CameraParams, forward, 48) FIELD(CameraParams, half_width, 64)                                   \
     FIELD(CameraParams, half_height, 68) FIELD(CameraParams, lens_radius, 72)                              \
     FIELD(CameraParams, focus_distance, 76)                                                                \
-    SIZE(SceneCounts, 16)                                                                                  \
+    SIZE(SceneCounts, 32)                                                                                  \
     FIELD(SceneCounts, packet_count, 0) FIELD(SceneCounts, sphere_count, 4)                                \
-    FIELD(SceneCounts, light_count, 8)                                                                     \
+    FIELD(SceneCounts, light_count, 8) FIELD(SceneCounts, outside_packet_count, 12)                        \
+    FIELD(SceneCounts, bvh_node_count, 16)                                                                 \
     SIZE(RenderSettings, 32)                                                                               \
     FIELD(RenderSettings, width, 0) FIELD(RenderSettings, height, 4) FIELD(RenderSettings, max_depth, 8)   \
     FIELD(RenderSettings, mode, 12) FIELD(RenderSettings, seed_lo, 16) FIELD(RenderSettings, seed_hi, 20)  \
     SIZE(PassRange, 16)                                                                                    \
     FIELD(PassRange, first_sample_lo, 0) FIELD(PassRange, first_sample_hi, 4)                              \
     FIELD(PassRange, sample_count, 8) FIELD(PassRange, write_centre_ray, 12)                               \
-    SIZE(RenderPassParams, 144)                                                                            \
+    SIZE(RenderPassParams, 160)                                                                            \
     FIELD(RenderPassParams, camera, 0) FIELD(RenderPassParams, scene, 80)                                  \
-    FIELD(RenderPassParams, settings, 96) FIELD(RenderPassParams, pass, 128)
+    FIELD(RenderPassParams, settings, 112) FIELD(RenderPassParams, pass, 144)
 
 #define ORB_CHECK_SIZE(type, size) static_assert(sizeof(type) == (size), "sizeof " #type);
 #define ORB_CHECK_FIELD(type, field, offset) static_assert(offsetof(type, field) == (offset), #type "." #field);

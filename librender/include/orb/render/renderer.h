@@ -26,6 +26,7 @@ struct RenderConfig {
     std::string device;       // selector for choose_device()
     std::string kernel_dir;   // development override of the embedded kernels ("" = embedded; env ORB_KERNEL_DIR too)
     bool use_binary_cache = true;  // $XDG_CACHE_HOME/orb (or ~/.cache/orb)
+    bool use_bvh = true;  // false: every ray tests every sphere (for tests and comparisons; same image)
 };
 
 class Renderer {

@@ -1,0 +1,74 @@
+// The BVH changes how spheres are found, never what is found: the same seed
+// renders the same image with the tree and with every ray testing every
+// sphere, on scenes with spheres in the tree, huge spheres outside it, every
+// material and many lights.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "render_test_support.h"
+
+using namespace orb;
+using namespace orb::render;
+using namespace orb::render::test;
+
+namespace {
+
+// A floor of radius 1e4 (kept outside the tree), a cloud of small spheres of
+// every material, and a dozen small lights among them, seen from above.
+Scene cloud_scene(int spheres, std::uint32_t seed) {
+    Scene scene;
+    scene.camera.position = {0.0, 6.0, 14.0};
+    scene.camera.target = {0.0, 1.0, 0.0};
+    scene.camera.up = {0.0, 1.0, 0.0};
+    scene.camera.vfov_deg = 40.0;
+    const auto white = add_material(scene, MaterialType::Diffuse, {0.7, 0.7, 0.7});
+    const auto red = add_material(scene, MaterialType::Diffuse, {0.8, 0.2, 0.2});
+    const auto mirror = add_material(scene, MaterialType::Mirror, {0.9, 0.9, 0.9});
+    const auto glass = add_material(scene, MaterialType::Dielectric, {1.0, 1.0, 1.0}, {0, 0, 0}, 1.5);
+    const auto lamp = add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {6.0, 5.5, 5.0});
+    add_sphere(scene, {0.0, -1e4, 0.0}, 1e4, white);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> x(-5.0, 5.0), y(0.2, 4.0), r(0.1, 0.45);
+    const std::uint32_t kinds[] = {white, red, mirror, glass};
+    for (int i = 0; i < spheres; ++i)
+        add_sphere(scene, {x(rng), y(rng), x(rng)}, r(rng), i % 25 == 0 ? lamp : kinds[i % 4]);
+    return scene;
+}
+
+void expect_identical(const std::vector<float>& a, const std::vector<float>& b, const char* channel) {
+    ASSERT_EQ(a.size(), b.size()) << channel;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) differing += a[i] != b[i] && !(std::isinf(a[i]) && a[i] == b[i]);
+    EXPECT_EQ(differing, 0u) << channel << ": " << differing << " of " << a.size() << " values differ";
+}
+
+}  // namespace
+
+TEST(BvhRender, SameImageWithAndWithoutTheTree) {
+    const Scene scene = cloud_scene(300, 5);
+    for (IntegratorMode mode : {IntegratorMode::Global, IntegratorMode::Direct}) {
+        RenderConfig with = small_config(48, 36, 11, 6, mode), without = with;
+        without.use_bvh = false;
+        const Film a = test::render(scene, with, {4}), b = test::render(scene, without, {4});
+        expect_identical(a.radiance, b.radiance, "radiance");
+        expect_identical(a.direct, b.direct, "direct");
+        expect_identical(a.indirect, b.indirect, "indirect");
+        expect_identical(a.albedo, b.albedo, "albedo");
+        expect_identical(a.alpha, b.alpha, "alpha");
+        expect_identical(a.depth, b.depth, "depth");
+        expect_identical(a.object_id, b.object_id, "object id");  // scene indices, not table slots
+    }
+}
+
+TEST(BvhRender, TheIdPassNamesSceneSpheresInBvhOrder) {
+    const Scene scene = cloud_scene(200, 9);
+    const Film film = test::render(scene, small_config(64, 48), {1});
+    std::size_t inside_cloud = 0;
+    for (float id : film.object_id) {
+        ASSERT_GE(id, -1.0f);
+        ASSERT_LT(id, static_cast<float>(scene.spheres.size()));
+        inside_cloud += id >= 1.0f;
+    }
+    EXPECT_GT(inside_cloud, film.object_id.size() / 20);  // the cloud is in view
+}
