@@ -606,7 +606,9 @@ private:
             if (!(c >= 0) || !std::isfinite(c)) diagnostics_.fail(label + ": color must be finite and >= 0");
         if (!(light.intensity >= 0) || !std::isfinite(light.intensity))
             diagnostics_.fail(label + ": intensity must be finite and >= 0");
-        const Vec3 power{color[0] * light.intensity, color[1] * light.intensity, color[2] * light.intensity};
+        // Radiant intensity (W/sr) for point/spot lights, irradiance (W/m^2) for directional ones.
+        const double radiant = light.intensity * watts_per_lumen(options_.light_units);
+        const Vec3 power{color[0] * radiant, color[1] * radiant, color[2] * radiant};
         const Matrix4& world = world_[std::size_t(node)];
 
         if (light.type == "directional") {

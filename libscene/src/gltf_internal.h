@@ -123,6 +123,11 @@ void convert_camera(const tinygltf::Camera& camera, const std::string& name, con
 // Frames the bounds of the spheres from +z looking down -z.
 void automatic_camera(Scene& scene);
 
+// Luminous efficacy that turns lumens into watts: 683 lm/W, the SI
+// definition of the candela and Blender's PBR_WATTS_TO_LUMENS.
+constexpr double kLumensPerWatt = 683.0;
+// Factor from glTF light units (cd, lux) to Orb's radiant units (W/sr, W/m^2).
+double watts_per_lumen(LightUnits units);
 // Radiance of a sphere of radius `radius` whose radiant intensity in every
 // direction is `intensity` (per colour channel): L = I / (pi r^2).
 Vec3 point_light_radiance(const Vec3& intensity, double radius);

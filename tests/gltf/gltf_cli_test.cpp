@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <numbers>
 
 #include "gltf_test_util.h"
 #include "orb/scene/scene_json.h"
@@ -71,6 +72,16 @@ TEST(GltfCli, FlagsReachTheImporter) {
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(sphere_named(load_scene_json(run.out, "out"), "Bulb").radius, 0.25);
 
+    for (const char* units : {"radiometric", "photometric"}) {
+        run = run_import(quote(generated("point_light.gltf")) + " --light-radius 0.25 --light-units " + units, out);
+        ASSERT_EQ(run.status, 0) << run.err;
+        const Scene scene = load_scene_json(run.out, "out");
+        const double radiant = std::string(units) == "radiometric" ? 100.0 : 100.0 / 683;
+        EXPECT_NEAR(scene.materials.at(sphere_named(scene, "Bulb").material).emission[0],
+                    radiant / (std::numbers::pi * 0.0625), 1e-9 * radiant)
+            << units;
+    }
+
     run = run_import(quote(generated("points.gltf")) + " --point-radius 0.3", out);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(sphere_named(load_scene_json(run.out, "out"), "Plain.point0").radius, 0.3);
@@ -106,6 +117,8 @@ TEST(GltfCli, ErrorsAndUsage) {
     run = run_import(quote(generated("nested.gltf")) + " --non-spheres maybe", out);
     EXPECT_EQ(run.status, 2) << run.err;
     run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance -1", out);
+    EXPECT_EQ(run.status, 2) << run.err;
+    run = run_import(quote(generated("nested.gltf")) + " --light-units lumens", out);
     EXPECT_EQ(run.status, 2) << run.err;
 }
 

@@ -47,6 +47,15 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
                  "Turn directional lights into a distant, large emissive sphere giving the same illuminance "
                  "(default: leave them out with a warning)")
         ->group(group);
+    const std::map<std::string, LightUnits> light_units{{"photometric", LightUnits::Photometric},
+                                                        {"radiometric", LightUnits::Radiometric}};
+    app.add_option("--light-units", options.light_units,
+                   "KHR_lights_punctual intensities: photometric (cd and lux through 683 lm/W, as Blender does) or "
+                   "radiometric (1 cd = 1 W/sr, 1 lux = 1 W/m^2)")
+        ->transform(CLI::CheckedTransformer(light_units, CLI::ignore_case))
+        ->option_text("photometric|radiometric")
+        ->default_str("photometric")
+        ->group(group);
 }
 
 }  // namespace orb::import_tool

@@ -16,6 +16,12 @@ enum class NonSpherePolicy {
     Error,  // refuse the file
 };
 
+// How KHR_lights_punctual intensities become Orb radiance (docs/gltf.md, "Lights").
+enum class LightUnits {
+    Photometric,  // candela and lux through 683 lm/W, as Blender's glTF importer does
+    Radiometric,  // 1 cd taken as 1 W/sr and 1 lux as 1 W/m^2 (Orb before issue 10)
+};
+
 struct GltfImportOptions {
     bool strict = false;  // warnings that lose information become errors
 
@@ -34,6 +40,7 @@ struct GltfImportOptions {
     double light_radius = 0.0;
     // Directional lights become a distant large emitter (else: a warning).
     bool directional_lights = false;
+    LightUnits light_units = LightUnits::Photometric;
 };
 
 struct GltfImportResult {
