@@ -26,6 +26,11 @@ void Diagnostics::lossy(const std::string& message) {
     warn(message);
 }
 
+void Diagnostics::lossy_for_asset(const std::string& message) {
+    if (strict_) fail(message + " (an error because of --strict)");
+    warn(source_ + ": " + message);
+}
+
 std::optional<double> number_at(const tinygltf::Value& object, const std::string& key) {
     if (!object.IsObject() || !object.Has(key)) return std::nullopt;
     const tinygltf::Value& v = object.Get(key);
@@ -49,13 +54,6 @@ namespace {
 
 // Extensions whose absence would make the geometry unreadable.
 const std::set<std::string> kUnreadableExtensions{"KHR_draco_mesh_compression", "EXT_meshopt_compression"};
-// Extensions that the importer reads (the rest are approximated or ignored).
-const std::set<std::string> kSupportedExtensions{
-    "KHR_lights_punctual",      "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_transmission", "KHR_mesh_quantization",         "EXT_mesh_gpu_instancing",
-    "KHR_implicit_shapes",      "KHR_physics_rigid_bodies",        "KHR_texture_transform",
-    "KHR_texture_basisu",       "EXT_texture_webp",                "KHR_materials_unlit"};
-
 // More spheres than this is refused up front rather than exhausting memory
 // (instances x points can multiply a small file into billions).
 constexpr std::size_t kMaxSpheres = std::size_t(1) << 24;
@@ -145,7 +143,7 @@ public:
         choose_camera();
         report_non_spheres();
         report_scales();
-        materials_.report_textures();
+        report_ignored();
         if (scene_.spheres.empty()) diagnostics_.warn("the scene has no sphere content");
         return std::move(scene_);
     }
@@ -157,8 +155,7 @@ private:
         for (const std::string& name : model_.extensionsRequired) {
             if (kUnreadableExtensions.count(name))
                 diagnostics_.fail("the asset requires " + name + ", which Orb cannot decode");
-            if (!kSupportedExtensions.count(name))
-                diagnostics_.lossy("the asset requires extension " + name + ", which Orb ignores");
+            // Other required extensions that Orb does not read are named by report_ignored().
         }
     }
 
@@ -636,8 +633,9 @@ private:
         }
         if (light.type != "point" && light.type != "spot")
             diagnostics_.fail(label + ": unknown type '" + light.type + "'");
-        if (light.type == "spot") diagnostics_.lossy(label + " is a spot light; its cone is not modelled (it shines every way)");
-        if (light.range > 0) diagnostics_.warn(label + ": range is ignored (light falls off with the inverse square)");
+        // Spot lights shine every way; range is ignored (light falls off with the inverse square).
+        if (light.type == "spot") ignored_.add_spot_cone();
+        if (light.range > 0) ignored_.add_range();
         const double radius = options_.light_radius > 0 ? options_.light_radius : kDefaultLightRadiusFraction * diagonal;
         // The radius is in world units whatever the node's scale.
         const double scale = detail::largest_axis_scale(world);
@@ -708,6 +706,12 @@ private:
         diagnostics_.lossy("not spheres, left out (--non-spheres bound|error to change): " + list);
     }
 
+    void report_ignored() {
+        for (int material : materials_.used()) ignored_.add_material(model_.materials[std::size_t(material)]);
+        const std::string summary = ignored_.summary(model_);
+        if (!summary.empty()) diagnostics_.lossy_for_asset(summary);
+    }
+
     void report_scales() {
         if (non_uniform_.empty()) return;
         std::string list;
@@ -731,6 +735,7 @@ private:
     std::vector<std::pair<int, int>> cameras_;
     std::set<std::string> non_spheres_;
     std::set<std::string> non_uniform_;
+    IgnoredFeatures ignored_;
 };
 
 }  // namespace

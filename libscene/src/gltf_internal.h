@@ -7,6 +7,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,8 @@ public:
     void warn(const std::string& message);
     // A warning that loses information: an error under --strict.
     void lossy(const std::string& message);
+    // The same for a summary of the whole asset, whose warning names the file.
+    void lossy_for_asset(const std::string& message);
     const std::string& source() const { return source_; }
     std::vector<std::string> take_warnings() { return std::move(warnings_); }
 
@@ -39,6 +42,31 @@ private:
     std::string source_;
     bool strict_;
     std::vector<std::string> warnings_;
+};
+
+// ---- what Orb drops (gltf_ignored.cpp) ----
+
+// Counts what the imported content uses that Orb does not render, for one
+// warning per asset ("ignored: 3 base-colour textures, ...").
+class IgnoredFeatures {
+public:
+    // A glTF material that imported content uses: its textures and the
+    // material extensions Orb does not read.
+    void add_material(const tinygltf::Material& material);
+    void add_spot_cone() { ++spot_cones_; }
+    void add_range() { ++ranges_; }
+    // "ignored: ..." naming everything counted plus the asset's extensions
+    // that Orb does not read; empty when nothing is dropped.
+    std::string summary(const tinygltf::Model& model) const;
+
+private:
+    // baseColor, metallicRoughness, normal, occlusion, emissive: references.
+    static constexpr std::size_t kCoreTextureKinds = 5;
+    std::array<std::size_t, kCoreTextureKinds> core_textures_{};
+    std::map<std::string, std::size_t> extension_textures_;   // "kind texture|extension" -> references
+    std::map<std::string, std::size_t> material_extensions_;  // name -> materials
+    std::size_t spot_cones_ = 0;
+    std::size_t ranges_ = 0;
 };
 
 // ---- accessors (gltf_accessor.cpp) ----
@@ -94,8 +122,8 @@ public:
     std::uint32_t get(int index, const AnimVec3& color_scale = {1.0, 1.0, 1.0}, bool vertex_colors = false);
     // A black emitter of radiance `emission` (lights).
     std::uint32_t emitter(const std::string& name, const Vec3& emission);
-    // One warning for all textured materials; call once at the end.
-    void report_textures();
+    // glTF material indices that imported content uses.
+    const std::set<int>& used() const { return used_; }
 
 private:
     std::uint32_t add(Material material);
@@ -103,7 +131,7 @@ private:
     Scene& scene_;
     Diagnostics& diagnostics_;
     std::map<std::string, std::uint32_t> by_key_;
-    std::vector<std::string> textured_;
+    std::set<int> used_;
 };
 
 // ---- extension values (gltf_import.cpp) ----

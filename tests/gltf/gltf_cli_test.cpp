@@ -114,6 +114,18 @@ TEST(GltfCli, ErrorsAndUsage) {
     run = run_import(quote(generated("non_uniform.gltf")) + " --strict", out);
     EXPECT_EQ(run.status, 1) << run.err;
 
+    // Everything dropped, in one warning naming the file; --strict refuses it.
+    run = run_import(quote(generated("ignored.glb")), out);
+    EXPECT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.err.find(generated("ignored.glb") + ": ignored: 2 base-colour textures"), std::string::npos)
+        << run.err;
+    fs::remove(out);
+    run = run_import(quote(generated("ignored.glb")) + " --strict", out);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_NE(run.err.find("orb-import: error: " + generated("ignored.glb") + ": ignored:"), std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(out));
+
     run = run_import(quote(generated("nested.gltf")) + " --non-spheres maybe", out);
     EXPECT_EQ(run.status, 2) << run.err;
     run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance -1", out);

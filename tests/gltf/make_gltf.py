@@ -263,6 +263,40 @@ def materials(out):
     a.write_all(out, "materials")
 
 
+def ignored(out):
+    """Everything Orb drops, once each kind, for the one "ignored: ..." warning.
+    Material 3 is used by nothing, so its occlusion texture is not counted."""
+    a = Asset()
+    pts, idx = uv_sphere(1.0, segments=16, rings=8)
+    a.gltf["images"] = [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg=="}]
+    a.gltf["textures"] = [{"source": 0}]
+    a.gltf["materials"] = [
+        {"name": "Velvet", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}, "normalTexture": {"index": 0},
+         "extensions": {"KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1]}}},
+        {"name": "Car", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}},
+         "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1}}},
+        {"name": "Glass", "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1},
+                                         "KHR_materials_transmission": {"transmissionFactor": 1,
+                                                                        "transmissionTexture": {"index": 0}}}},
+        {"name": "Unused", "occlusionTexture": {"index": 0}},
+    ]
+    for ext in ("KHR_materials_sheen", "KHR_materials_clearcoat", "KHR_materials_transmission", "KHR_lights_punctual",
+                "KHR_texture_transform", "EXT_lights_image_based"):
+        a.extension_used(ext)
+    a.gltf["extensionsRequired"] = ["EXT_lights_image_based"]
+    for m in range(3):
+        mesh = a.mesh("Ball%d" % m, pts, idx, material=m)
+        a.node(name=a.gltf["materials"][m]["name"], translation=[3 * m, 0, 0], mesh=mesh)
+    a.node(name="Velvet2", translation=[9, 0, 0], mesh=0)
+    a.gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"name": "SpotA", "type": "spot", "intensity": 5, "range": 10, "spot": {"outerConeAngle": 0.5}},
+        {"name": "SpotB", "type": "spot", "intensity": 5, "spot": {}},
+    ]}}
+    a.node(name="SpotNodeA", translation=[0, 5, 0], extensions={"KHR_lights_punctual": {"light": 0}})
+    a.node(name="SpotNodeB", translation=[0, -5, 0], extensions={"KHR_lights_punctual": {"light": 1}})
+    a.write_all(out, "ignored")
+
+
 def cameras(out):
     a = Asset()
     a.mesh("Ball", *uv_sphere(1.0))
@@ -388,7 +422,7 @@ def sandbox(out):
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
-    for make in (nested, instanced, points, non_sphere, materials, cameras, lights, animation, implicit_shapes,
+    for make in (nested, instanced, points, non_sphere, materials, ignored, cameras, lights, animation, implicit_shapes,
                  non_uniform, scenes, sandbox):
         make(out)
     with open(os.path.join(out, "stamp"), "w") as f:
