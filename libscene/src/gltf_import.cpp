@@ -371,7 +371,6 @@ private:
             std::vector<std::array<std::uint32_t, 3>> triangles;
             std::vector<AnimVec3> colors;
             int material = -1;
-            bool triangles_mode = true;
         };
         std::vector<Surface> surfaces;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
@@ -411,7 +410,6 @@ private:
             // Keep only the vertices the primitive uses, renumbered.
             Surface surface;
             surface.material = primitive.material;
-            surface.triangles_mode = mode >= TINYGLTF_MODE_TRIANGLES;
             std::vector<std::uint32_t> remap(positions.size(), std::numeric_limits<std::uint32_t>::max());
             std::vector<std::uint32_t> local_indices;
             local_indices.reserve(indices.size());
@@ -423,50 +421,67 @@ private:
                 }
                 local_indices.push_back(remap[i]);
             }
-            if (surface.triangles_mode) surface.triangles = triangles_of(mode, local_indices);
+            if (mode >= TINYGLTF_MODE_TRIANGLES) surface.triangles = triangles_of(mode, local_indices);
             if (!surface.points.empty()) surfaces.push_back(std::move(surface));
         }
 
-        // The whole mesh as one sphere (e.g. hemispheres in two materials)...
+        // Lines (and triangle primitives without a whole triangle) are never spheres.
+        auto not_a_sphere = [&](const std::vector<AnimVec3>& points, const MeshSphere& look) {
+            content.has_non_spheres = true;
+            if (options_.non_spheres == NonSpherePolicy::Error)
+                diagnostics_.fail(mesh_name + " is not a sphere (--non-spheres error)");
+            if (options_.non_spheres != NonSpherePolicy::Bound) return;
+            MeshSphere bound = look;
+            bound.shape = bounding_sphere(points);
+            content.spheres.push_back(bound);
+        };
+        // All triangles of the mesh together, split into connected parts: one
+        // sphere may span primitives (e.g. hemispheres in two materials) and
+        // one primitive may hold several spheres.
         Surface all;
-        for (const Surface& s : surfaces) {
-            if (!s.triangles_mode) {
-                all.triangles.clear();
-                break;
+        std::vector<std::size_t> owner;  // surface of each point of `all`
+        bool any_colors = false;
+        for (std::size_t i = 0; i < surfaces.size(); ++i) {
+            const Surface& s = surfaces[i];
+            if (s.triangles.empty()) {
+                not_a_sphere(s.points, {{}, s.material, mean_color(s.colors), !s.colors.empty()});
+                continue;
             }
             const auto offset = std::uint32_t(all.points.size());
             all.points.insert(all.points.end(), s.points.begin(), s.points.end());
+            owner.insert(owner.end(), s.points.size(), i);
             for (auto t : s.triangles) all.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
             // Vertices without COLOR_0 count as white in the mean.
             if (s.colors.empty()) all.colors.insert(all.colors.end(), s.points.size(), AnimVec3{1, 1, 1});
             else all.colors.insert(all.colors.end(), s.colors.begin(), s.colors.end());
+            any_colors = any_colors || !s.colors.empty();
         }
-        bool any_colors = false;
-        for (const Surface& s : surfaces) any_colors = any_colors || !s.colors.empty();
-        std::optional<FittedSphere> whole;
-        if (surfaces.size() > 1) whole = fit_sphere(all.points, all.triangles, options_.sphere_tolerance);
-        if (whole) {
-            content.spheres.push_back(
-                {*whole, surfaces.front().material, any_colors ? mean_color(all.colors) : AnimVec3{1, 1, 1}, any_colors});
-            for (const Surface& s : surfaces)
-                if (s.material != surfaces.front().material) {
+        for (const SurfacePart& part : connected_parts(all.points, all.triangles)) {
+            // The part takes the material of its first primitive.
+            std::set<std::size_t> owners;
+            AnimVec3 color_sum{0, 0, 0};
+            for (std::uint32_t v : part.source_vertices) {
+                owners.insert(owner[v]);
+                for (int c = 0; c < 3; ++c) color_sum[c] += all.colors[v][c];
+            }
+            const Surface& first = surfaces[*owners.begin()];
+            AnimVec3 color{1, 1, 1};
+            if (any_colors)
+                for (int c = 0; c < 3; ++c) color[c] = color_sum[c] / double(part.source_vertices.size());
+            const MeshSphere look{{}, first.material, color, any_colors};
+            std::optional<FittedSphere> fit = fit_sphere(part.points, part.triangles, options_.sphere_tolerance);
+            if (!fit) {
+                not_a_sphere(part.points, look);
+                continue;
+            }
+            for (std::size_t o : owners)
+                if (surfaces[o].material != first.material) {
                     diagnostics_.warn(mesh_name + " is one sphere in several materials; the first material is used");
                     break;
                 }
-        } else {
-            // ...or each primitive on its own.
-            for (const Surface& s : surfaces) {
-                std::optional<FittedSphere> fit =
-                    s.triangles_mode ? fit_sphere(s.points, s.triangles, options_.sphere_tolerance) : std::nullopt;
-                if (!fit) {
-                    content.has_non_spheres = true;
-                    if (options_.non_spheres == NonSpherePolicy::Error)
-                        diagnostics_.fail(mesh_name + " is not a sphere (--non-spheres error)");
-                    if (options_.non_spheres != NonSpherePolicy::Bound) continue;
-                    fit = bounding_sphere(s.points);
-                }
-                content.spheres.push_back({*fit, s.material, mean_color(s.colors), !s.colors.empty()});
-            }
+            MeshSphere sphere = look;
+            sphere.shape = *fit;
+            content.spheres.push_back(sphere);
         }
         return mesh_cache_.emplace(mesh_index, std::move(content)).first->second;
     }

@@ -99,9 +99,30 @@ struct FittedSphere {
 };
 
 // The sphere that all `points` lie on within `tolerance` (relative to the
-// radius), if the triangles also cover it like a tessellated sphere does.
+// radius), if the triangles also cover it like a tessellated sphere does:
+// closely (no coarse faces) and all the way round (closed, or wrapping the
+// full solid angle), so that bands and hemispheres are not spheres.
 std::optional<FittedSphere> fit_sphere(const std::vector<AnimVec3>& points,
                                        const std::vector<std::array<std::uint32_t, 3>>& triangles, double tolerance);
+
+// One connected piece of a triangle surface, after welding vertices that
+// share a position (within 1e-6 of the surface's size).
+struct SurfacePart {
+    std::vector<AnimVec3> points;                         // welded vertices
+    std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into points
+    std::vector<std::uint32_t> source_vertices;           // the input vertices that belong to this part
+};
+
+// The connected parts of `triangles` (indices into `points`), in the order
+// of their first triangles (gltf_parts.cpp).
+std::vector<SurfacePart> connected_parts(const std::vector<AnimVec3>& points,
+                                         const std::vector<std::array<std::uint32_t, 3>>& triangles);
+// Every edge of a non-degenerate triangle is shared by exactly two of them.
+bool is_closed(const std::vector<std::array<std::uint32_t, 3>>& triangles);
+// Sum of the solid angles that the triangles subtend from `center`: 4 pi
+// when they wrap all the way round it.
+double solid_angle_seen_from(const AnimVec3& center, const std::vector<AnimVec3>& points,
+                             const std::vector<std::array<std::uint32_t, 3>>& triangles);
 
 // Centre of the bounding box and the largest distance from it to a point.
 FittedSphere bounding_sphere(const std::vector<AnimVec3>& points);

@@ -140,6 +140,33 @@ def uv_sphere(radius=1.0, center=(0.0, 0.0, 0.0), segments=32, rings=16):
     return pts, idx
 
 
+def sphere_zone(theta_from, theta_to, radius=1.0, segments=32, rings=16):
+    """Part of a UV sphere between polar angles theta_from and theta_to
+    (radians from +y), open along its cut edges; a pole is included when
+    the zone reaches it."""
+    pts, idx = [], []
+    first_ring = 0
+    if theta_from == 0:
+        pts.append((0.0, radius, 0.0))
+        first_ring = 1
+    ring_thetas = [theta_from + (theta_to - theta_from) * r / rings for r in range(first_ring, rings + 1)]
+    base = len(pts)
+    for theta in ring_thetas:
+        for s in range(segments):
+            phi = 2 * math.pi * s / segments
+            pts.append((radius * math.sin(theta) * math.cos(phi), radius * math.cos(theta),
+                        radius * math.sin(theta) * math.sin(phi)))
+    ring = lambda r, s: base + r * segments + s % segments
+    if first_ring:
+        for s in range(segments):
+            idx += [0, ring(0, s + 1), ring(0, s)]
+    for r in range(len(ring_thetas) - 1):
+        for s in range(segments):
+            a, b, c, d = ring(r, s), ring(r, s + 1), ring(r + 1, s), ring(r + 1, s + 1)
+            idx += [a, b, d, a, d, c]
+    return pts, idx
+
+
 def ico_sphere(radius=1.0, subdivisions=2):
     t = (1 + math.sqrt(5)) / 2
     verts = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
@@ -217,6 +244,32 @@ def points(out):
     a.node(name="Cloud", translation=[0, 0, 1], scale=[2, 2, 2], mesh=m1)
     a.node(name="Plain", translation=[10, 0, 0], mesh=m2)
     a.write_all(out, "points")
+
+
+def parts(out):
+    """Spheres sharing one primitive, and open surfaces that lie on a sphere.
+    Row: 3 UV spheres of radius 1 at x = 0, 3, 6 in one indexed primitive.
+    Soup: the same row with every triangle's corners written out separately
+    (as an exporter splitting every seam does), so only welding joins them.
+    Band (+-45 degrees of latitude), Hemisphere and Cap (the sphere without
+    a 36-degree polar cap) lie on a sphere of radius 1 but are open."""
+    a = Asset()
+    pts, idx = [], []
+    for k in range(3):
+        p, i = uv_sphere(1.0, (3.0 * k, 0.0, 0.0))
+        idx += [j + len(pts) for j in i]
+        pts += p
+    row = a.mesh("Row", pts, idx)
+    soup = a.mesh("Soup", [pts[j] for j in idx])
+    band = a.mesh("Band", *sphere_zone(math.pi / 4, 3 * math.pi / 4))
+    hemisphere = a.mesh("Hemisphere", *sphere_zone(0, math.pi / 2))
+    cap = a.mesh("Cap", *sphere_zone(0, 0.8 * math.pi))
+    a.node(name="Row", mesh=row)
+    a.node(name="Soup", translation=[0, 5, 0], mesh=soup)
+    a.node(name="Band", translation=[0, -5, 0], mesh=band)
+    a.node(name="Hemisphere", translation=[5, -5, 0], mesh=hemisphere)
+    a.node(name="Cap", translation=[10, -5, 0], mesh=cap)
+    a.write_all(out, "parts")
 
 
 def non_sphere(out):
@@ -422,7 +475,7 @@ def sandbox(out):
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
-    for make in (nested, instanced, points, non_sphere, materials, ignored, cameras, lights, animation, implicit_shapes,
+    for make in (nested, instanced, points, parts, non_sphere, materials, ignored, cameras, lights, animation, implicit_shapes,
                  non_uniform, scenes, sandbox):
         make(out)
     with open(os.path.join(out, "stamp"), "w") as f:
