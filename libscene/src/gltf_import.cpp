@@ -134,7 +134,8 @@ public:
 
     Scene run() {
         check_required_extensions();
-        channels_ = read_animation_channels(model_, diagnostics_);
+        if (const std::optional<std::size_t> clip = choose_animation())
+            channels_ = read_animation_channels(model_, *clip, diagnostics_);
         link_parents();
         walk(scene_roots());
         for (int node : order_) add_node_content(node);
@@ -157,6 +158,31 @@ private:
                 diagnostics_.fail("the asset requires " + name + ", which Orb cannot decode");
             // Other required extensions that Orb does not read are named by report_ignored().
         }
+    }
+
+    // One clip plays: the one --animation names, else the first (clips are
+    // alternatives, like "Walk" and "Run", that would fight over the nodes).
+    std::optional<std::size_t> choose_animation() {
+        const auto& clips = model_.animations;
+        if (!options_.animation.empty()) {
+            const std::optional<int> found = find_by_index_or_name(clips, options_.animation);
+            if (!found) {
+                std::string names;
+                for (std::size_t i = 0; i < clips.size(); ++i)
+                    names += (i ? ", " : ": ") + animation_label(model_, i);
+                diagnostics_.fail("--animation " + options_.animation + ": no such animation (there are " +
+                                  std::to_string(clips.size()) + names + ")");
+            }
+            return std::size_t(*found);
+        }
+        if (clips.empty()) return std::nullopt;
+        if (clips.size() > 1) {
+            std::string others;
+            for (std::size_t i = 1; i < clips.size(); ++i) others += (i > 1 ? ", " : "") + animation_label(model_, i);
+            diagnostics_.lossy(animation_label(model_, 0) + " is imported; the other clips are left out: " + others +
+                               " (--animation NAME|INDEX picks one)");
+        }
+        return 0;
     }
 
     // glTF nodes form a forest: every node has at most one parent.

@@ -184,9 +184,11 @@ Vec3 point_light_radiance(const Vec3& intensity, double radius);
 // irradiance `illuminance` on a surface facing it: L = E / (pi (r/d)^2).
 Vec3 distant_light_radiance(const Vec3& illuminance, double radius, double distance);
 
-// Animated node channels from every glTF animation (gltf_animation.cpp),
+// Animated node channels of glTF animation (clip) `clip` (gltf_animation.cpp),
 // keyed by glTF node index.
-std::map<int, std::vector<AnimationChannel>> read_animation_channels(const tinygltf::Model& model,
+std::map<int, std::vector<AnimationChannel>> read_animation_channels(const tinygltf::Model& model, std::size_t clip,
                                                                     Diagnostics& diagnostics);
+// "animation 2 'Walk'"
+std::string animation_label(const tinygltf::Model& model, std::size_t clip);
 
 }  // namespace orb::gltf

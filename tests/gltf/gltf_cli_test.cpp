@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "gltf_test_util.h"
+#include "orb/scene/animation.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::gltf_test {
@@ -93,6 +94,13 @@ TEST(GltfCli, FlagsReachTheImporter) {
     run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance 0.01", out);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(load_scene_json(run.out, "out").spheres.size(), 3u);
+
+    run = run_import(quote(generated("clips.glb")) + " --animation Slide --strict", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(scene_at_time(load_scene_json(run.out, "out"), 1.0).spheres.at(0).center[0], 2.0);
+    run = run_import(quote(generated("clips.glb")) + " --animation 7", out);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_NE(run.err.find("--animation 7: no such animation"), std::string::npos) << run.err;
 
     run = run_import(quote(generated("animation.glb")), out);
     ASSERT_EQ(run.status, 0) << run.err;

@@ -425,6 +425,21 @@ def animation(out):
     a.write_all(out, "animation")
 
 
+def clips(out):
+    """Two clips moving the same node: "Rise" to (0, 1, 0) and "Slide" to
+    (2, 0, 0), both over one second. Only one may play."""
+    a = Asset()
+    ball = a.mesh("Ball", *uv_sphere(0.5))
+    node = a.node(name="Ball", mesh=ball)
+    a.gltf["animations"] = []
+    for name, end in (("Rise", (0, 1, 0)), ("Slide", (2, 0, 0))):
+        sampler = {"input": a.accessor([0, 1], "SCALAR", minmax=True),
+                   "output": a.accessor([0, 0, 0] + list(end), "VEC3"), "interpolation": "LINEAR"}
+        a.gltf["animations"].append({"name": name, "samplers": [sampler],
+                                     "channels": [{"sampler": 0, "target": {"node": node, "path": "translation"}}]})
+    a.write_all(out, "clips")
+
+
 def implicit_shapes(out):
     a = Asset()
     a.extension_used("KHR_implicit_shapes")
@@ -475,8 +490,8 @@ def sandbox(out):
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
-    for make in (nested, instanced, points, parts, non_sphere, materials, ignored, cameras, lights, animation, implicit_shapes,
-                 non_uniform, scenes, sandbox):
+    for make in (nested, instanced, points, parts, non_sphere, materials, ignored, cameras, lights, animation, clips,
+                 implicit_shapes, non_uniform, scenes, sandbox):
         make(out)
     with open(os.path.join(out, "stamp"), "w") as f:
         f.write("ok\n")

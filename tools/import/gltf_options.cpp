@@ -15,6 +15,11 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
                    "none: an automatic camera framing the scene from +z)")
         ->option_text("N|NAME")
         ->group(group);
+    app.add_option("--animation", options.animation,
+                   "glTF animation (clip) to import, by index or name (default: the first; the others are named in a "
+                   "warning)")
+        ->option_text("N|NAME")
+        ->group(group);
     app.add_option("--sphere-tolerance", options.sphere_tolerance,
                    "A mesh is a sphere when all its vertices lie within this fraction of the radius of one sphere "
                    "(default 0.001)")

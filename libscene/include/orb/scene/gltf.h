@@ -27,6 +27,7 @@ struct GltfImportOptions {
 
     std::string scene;   // glTF scene index or name; empty: the default scene (or scene 0)
     std::string camera;  // glTF camera index, camera name or node name; empty: the first camera found
+    std::string animation;  // glTF animation (clip) index or name; empty: the first clip
 
     // A mesh is a sphere when every vertex lies within this fraction of the
     // fitted radius from the fitted sphere.
