@@ -52,8 +52,6 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const
 
 namespace {
 
-// Extensions whose absence would make the geometry unreadable.
-const std::set<std::string> kUnreadableExtensions{"KHR_draco_mesh_compression", "EXT_meshopt_compression"};
 // More spheres than this is refused up front rather than exhausting memory
 // (instances x points can multiply a small file into billions).
 constexpr std::size_t kMaxSpheres = std::size_t(1) << 24;
@@ -133,7 +131,6 @@ public:
         : model_(model), options_(options), diagnostics_(diagnostics), materials_(model, scene_, diagnostics) {}
 
     Scene run() {
-        check_required_extensions();
         if (const std::optional<std::size_t> clip = choose_animation())
             channels_ = read_animation_channels(model_, *clip, diagnostics_);
         link_parents();
@@ -151,14 +148,6 @@ public:
 
 private:
     // ---- structure ----
-
-    void check_required_extensions() {
-        for (const std::string& name : model_.extensionsRequired) {
-            if (kUnreadableExtensions.count(name))
-                diagnostics_.fail("the asset requires " + name + ", which Orb cannot decode");
-            // Other required extensions that Orb does not read are named by report_ignored().
-        }
-    }
 
     // One clip plays: the one --animation names, else the first (clips are
     // alternatives, like "Walk" and "Run", that would fight over the nodes).

@@ -24,6 +24,11 @@ namespace orb::gltf {
 // `base_dir`; images are never decoded. Throws InputError.
 tinygltf::Model load_model(std::string_view bytes, const std::string& source, const std::string& base_dir);
 
+// Throws InputError when the asset's extensionsRequired names a geometry
+// compression Orb cannot decode (gltf_required.cpp); called on the JSON
+// text before tinygltf sees it.
+void refuse_undecodable_extensions(std::string_view json_text, const std::string& source);
+
 // ---- messages (gltf_import.cpp) ----
 
 class Diagnostics {

@@ -134,6 +134,13 @@ TEST(GltfCli, ErrorsAndUsage) {
         << run.err;
     EXPECT_FALSE(fs::exists(out));
 
+    run = run_import(quote(generated("draco.glb")), out);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_EQ(run.err, "orb-import: error: " + generated("draco.glb") +
+                           ": extensionsRequired[0]: the asset requires KHR_draco_mesh_compression, which Orb cannot "
+                           "decode\n");
+    EXPECT_FALSE(fs::exists(out));
+
     run = run_import(quote(generated("nested.gltf")) + " --non-spheres maybe", out);
     EXPECT_EQ(run.status, 2) << run.err;
     run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance -1", out);

@@ -116,6 +116,23 @@ TEST_P(Containers, OpenSurfacesOnASphereAreNotSpheres) {
 
 INSTANTIATE_TEST_SUITE_P(Gltf, Containers, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
 
+TEST(GltfGeometry, CompressedGeometryIsRefusedByNameBeforeAccessorChecks) {
+    // The Draco asset's accessors have no bufferView: tinygltf alone would
+    // call that an invalid accessor.
+    const std::pair<const char*, std::string> cases[] = {
+        {"draco.gltf", "extensionsRequired[0]: the asset requires KHR_draco_mesh_compression"},
+        {"draco.glb", "extensionsRequired[0]: the asset requires KHR_draco_mesh_compression"},
+        {"meshopt.glb", "extensionsRequired[1]: the asset requires EXT_meshopt_compression"}};
+    for (const auto& [file, message] : cases) {
+        try {
+            import_generated(file);
+            ADD_FAILURE() << file << ": expected an error";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), generated(file) + ": " + message + ", which Orb cannot decode");
+        }
+    }
+}
+
 TEST(GltfGeometry, ConnectedPartsWeldCornersAndCheckClosure) {
     // Two triangles sharing an edge only by position, and a third far away.
     const std::vector<AnimVec3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},

@@ -440,6 +440,41 @@ def clips(out):
     a.write_all(out, "clips")
 
 
+def compressed(out):
+    """Draco- and meshopt-compressed assets, as far as Orb sees them: the
+    accessors have no bufferView (Draco) or the buffer views point into a
+    compressed stream, and the extension is required."""
+    d = Asset()
+    d.blob += bytes(16)  # stands for the Draco bit stream
+    d.gltf["bufferViews"].append({"buffer": 0, "byteOffset": 0, "byteLength": 16})
+    d.gltf["accessors"] = [{"componentType": FLOAT, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                           {"componentType": USHORT, "count": 3, "type": "SCALAR"}]
+    d.gltf["meshes"].append({"name": "Squashed", "primitives": [{
+        "attributes": {"POSITION": 0}, "indices": 1,
+        "extensions": {"KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}}}]})
+    d.node(name="Squashed", mesh=0)
+    d.extension_used("KHR_draco_mesh_compression")
+    d.gltf["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    d.write_gltf(out, "draco")
+    d.write_glb(out, "draco")
+
+    m = Asset()
+    m.blob += bytes(16)
+    m.gltf["buffers"] = [{"byteLength": 16}, {"byteLength": 36, "extensions": {"EXT_meshopt_compression": {"fallback": True}}}]
+    m.gltf["bufferViews"].append({"buffer": 1, "byteOffset": 0, "byteLength": 36, "byteStride": 12,
+                                  "extensions": {"EXT_meshopt_compression": {
+                                      "buffer": 0, "byteOffset": 0, "byteLength": 16, "byteStride": 12,
+                                      "mode": "ATTRIBUTES", "count": 3}}})
+    m.gltf["accessors"] = [{"bufferView": 0, "componentType": FLOAT, "count": 3, "type": "VEC3",
+                            "min": [0, 0, 0], "max": [1, 1, 0]}]
+    m.gltf["meshes"].append({"name": "Packed", "primitives": [{"attributes": {"POSITION": 0}}]})
+    m.node(name="Packed", mesh=0)
+    m.extension_used("KHR_mesh_quantization")
+    m.extension_used("EXT_meshopt_compression")
+    m.gltf["extensionsRequired"] = ["KHR_mesh_quantization", "EXT_meshopt_compression"]
+    m.write_glb(out, "meshopt")
+
+
 def implicit_shapes(out):
     a = Asset()
     a.extension_used("KHR_implicit_shapes")
@@ -491,7 +526,7 @@ def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
     for make in (nested, instanced, points, parts, non_sphere, materials, ignored, cameras, lights, animation, clips,
-                 implicit_shapes, non_uniform, scenes, sandbox):
+                 compressed, implicit_shapes, non_uniform, scenes, sandbox):
         make(out)
     with open(os.path.join(out, "stamp"), "w") as f:
         f.write("ok\n")
