@@ -658,6 +658,7 @@ private:
             sphere.radius = radius;
             sphere.material = materials_.emitter(name, distant_light_radiance(power, radius, distance));
             if (moves_[std::size_t(node)]) diagnostics_.lossy(label + ": directional lights do not follow animation");
+            distant_.insert(scene_.spheres.size());
             scene_.spheres.push_back(std::move(sphere));
             return;
         }
@@ -678,14 +679,21 @@ private:
         add_sphere(name, node, kIdentityMatrix, local, materials_.emitter(name, point_light_radiance(power, radius)));
     }
 
+    // Centre of the bounds of the scene's spheres, leaving out the distant
+    // directional-light emitters (they would drag it 100 diagonals away).
     AnimVec3 scene_center() const {
-        if (scene_.spheres.empty()) return {0, 0, 0};
-        AnimVec3 lo = scene_.spheres[0].center, hi = lo;
-        for (const Sphere& s : scene_.spheres)
+        AnimVec3 lo{}, hi{};
+        bool any = false;
+        for (std::size_t i = 0; i < scene_.spheres.size(); ++i) {
+            if (distant_.count(i)) continue;
+            const Sphere& s = scene_.spheres[i];
             for (int c = 0; c < 3; ++c) {
-                lo[c] = std::min(lo[c], s.center[c] - s.radius);
-                hi[c] = std::max(hi[c], s.center[c] + s.radius);
+                lo[c] = any ? std::min(lo[c], s.center[c] - s.radius) : s.center[c] - s.radius;
+                hi[c] = any ? std::max(hi[c], s.center[c] + s.radius) : s.center[c] + s.radius;
             }
+            any = true;
+        }
+        if (!any) return {0, 0, 0};
         return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
     }
 
@@ -710,7 +718,7 @@ private:
             chosen = cameras_.front();
         }
         if (!chosen) {
-            automatic_camera(scene_);
+            automatic_camera(scene_, distant_);
             return;
         }
         const auto [node, camera_index] = *chosen;
@@ -766,6 +774,7 @@ private:
     std::set<std::string> non_spheres_;
     std::set<std::string> non_uniform_;
     IgnoredFeatures ignored_;
+    std::set<std::size_t> distant_;  // scene_.spheres indices of directional-light emitters
 };
 
 }  // namespace

@@ -174,6 +174,24 @@ TEST_P(Lights, DirectionalLightAsADistantEmitterGivesItsIlluminance) {
     EXPECT_NEAR(m.emission[0] * kPi * sine * sine, 3.0 / 683, 1e-9);  // the scene is centred on the origin
 }
 
+TEST_P(Lights, AutomaticCameraFramesTheSceneNotTheDistantSun) {
+    GltfImportOptions options;
+    options.directional_lights = true;
+    const Scene scene = import_generated("all_lights" + GetParam(), options).scene;
+    ASSERT_NO_THROW(sphere_named(scene, "Sun"));
+    // Ball [-1,1]^3, Bulb at (0,5,0) and Spot at (0,-5,0) of equal radius r:
+    // the box is [-1,1] x [-5-r,5+r] x [-1,1], centred on the origin.
+    const double r = sphere_named(scene, "Bulb").radius;
+    expect_vec(scene.camera.target, {0, 0, 0}, 1e-6);
+    const double half_diagonal = std::sqrt(4.0 + (10 + 2 * r) * (10 + 2 * r) + 4) / 2;
+    const double half_v = scene.camera.vfov_deg * kPi / 360;
+    const double half_h = std::atan(std::tan(half_v) * scene.render.width / scene.render.height);
+    EXPECT_NEAR(scene.camera.position[2], half_diagonal / std::sin(std::min(half_v, half_h)), 1e-6);
+    // The same framing as without the sun.
+    const Scene sunless = import_generated("all_lights" + GetParam()).scene;
+    expect_vec(scene.camera.position, sunless.camera.position, 1e-9);
+}
+
 INSTANTIATE_TEST_SUITE_P(Gltf, Lights, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
 
 }  // namespace

@@ -90,6 +90,7 @@ TEST(GltfCli, FlagsReachTheImporter) {
     run = run_import(quote(generated("all_lights.gltf")) + " --directional-lights", out);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_NO_THROW(sphere_named(load_scene_json(run.out, "out"), "Sun"));
+    EXPECT_LT(load_scene_json(run.out, "out").camera.position[2], 100.0) << "framed the scene, not the sun";
 
     run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance 0.01", out);
     ASSERT_EQ(run.status, 0) << run.err;
