@@ -38,19 +38,17 @@ std::map<int, std::vector<AnimationChannel>> read_animation_channels(const tinyg
                                                                     Diagnostics& diagnostics) {
     std::map<int, std::vector<AnimationChannel>> channels;
     std::set<std::string> ignored;
-    {
-        const tinygltf::Animation& animation = model.animations[clip];
-        for (std::size_t c = 0; c < animation.channels.size(); ++c) {
-            const std::string label = animation_label(model, clip) + " channel " + std::to_string(c);
-            // A broken channel costs its motion, not the whole scene (--strict: an error).
-            try {
-                read_channel(model, animation, c, label, diagnostics, channels, ignored);
-            } catch (const InputError& e) {
-                std::string message = e.what();
-                const std::string prefix = diagnostics.source() + ": ";
-                if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-                diagnostics.lossy(message + "; the channel is ignored");
-            }
+    const tinygltf::Animation& animation = model.animations[clip];
+    for (std::size_t c = 0; c < animation.channels.size(); ++c) {
+        const std::string label = animation_label(model, clip) + " channel " + std::to_string(c);
+        // A broken channel costs its motion, not the whole scene (--strict: an error).
+        try {
+            read_channel(model, animation, c, label, diagnostics, channels, ignored);
+        } catch (const InputError& e) {
+            std::string message = e.what();
+            const std::string prefix = diagnostics.source() + ": ";
+            if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+            diagnostics.lossy(message + "; the channel is ignored");
         }
     }
     for (const std::string& what : ignored) diagnostics.lossy("animation " + what + " are not supported and were ignored");
