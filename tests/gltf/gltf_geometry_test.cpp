@@ -114,6 +114,14 @@ TEST_P(Containers, OpenSurfacesOnASphereAreNotSpheres) {
     expect_sphere(bounded, "Band", {0, -5, 0}, 1);
 }
 
+TEST(GltfGeometry, HemispheresInTwoPrimitivesWeldIntoOneSphere) {
+    const GltfImportResult result = import_generated("halves.gltf");
+    ASSERT_EQ(result.scene.spheres.size(), 1u);
+    expect_sphere(result.scene, "Halves", {0, 0, 2}, 1);
+    EXPECT_EQ(result.scene.materials.at(result.scene.spheres[0].material).name, "North");
+    EXPECT_TRUE(any_warning_contains(result, "is one sphere in several materials; the first material is used"));
+}
+
 INSTANTIATE_TEST_SUITE_P(Gltf, Containers, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
 
 TEST(GltfGeometry, CompressedGeometryIsRefusedByNameBeforeAccessorChecks) {

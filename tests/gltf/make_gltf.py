@@ -271,6 +271,19 @@ def parts(out):
     a.node(name="Cap", translation=[10, -5, 0], mesh=cap)
     a.write_all(out, "parts")
 
+    # One sphere as two hemispheres in two primitives (two materials), each
+    # with its own copy of the equator's vertices: welding joins them. The
+    # southern zone's last ring (at the pole) welds into one vertex.
+    h = Asset()
+    h.gltf["materials"] = [{"name": "North"}, {"name": "South"}]
+    h.mesh("Halves", *sphere_zone(0, math.pi / 2), material=0)
+    south_pts, south_idx = sphere_zone(math.pi / 2, math.pi)
+    prim = {"attributes": {"POSITION": h.accessor([c for p in south_pts for c in p], "VEC3")},
+            "indices": h.accessor(south_idx, "SCALAR", USHORT), "material": 1}
+    h.gltf["meshes"][0]["primitives"].append(prim)
+    h.node(name="Halves", translation=[0, 0, 2], mesh=0)
+    h.write_gltf(out, "halves")
+
 
 def non_sphere(out):
     a = Asset()
