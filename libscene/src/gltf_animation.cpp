@@ -29,25 +29,26 @@ void read_channel(const tinygltf::Model& model, const tinygltf::Animation& anima
 
 }  // namespace
 
-std::map<int, std::vector<AnimationChannel>> read_animation_channels(const tinygltf::Model& model,
+std::string animation_label(const tinygltf::Model& model, std::size_t clip) {
+    const std::string& name = model.animations[clip].name;
+    return "animation " + std::to_string(clip) + (name.empty() ? "" : " '" + name + "'");
+}
+
+std::map<int, std::vector<AnimationChannel>> read_animation_channels(const tinygltf::Model& model, std::size_t clip,
                                                                     Diagnostics& diagnostics) {
     std::map<int, std::vector<AnimationChannel>> channels;
     std::set<std::string> ignored;
-    for (std::size_t a = 0; a < model.animations.size(); ++a) {
-        const tinygltf::Animation& animation = model.animations[a];
-        const std::string animation_label =
-            "animation " + std::to_string(a) + (animation.name.empty() ? "" : " '" + animation.name + "'");
-        for (std::size_t c = 0; c < animation.channels.size(); ++c) {
-            const std::string label = animation_label + " channel " + std::to_string(c);
-            // A broken channel costs its motion, not the whole scene (--strict: an error).
-            try {
-                read_channel(model, animation, c, label, diagnostics, channels, ignored);
-            } catch (const InputError& e) {
-                std::string message = e.what();
-                const std::string prefix = diagnostics.source() + ": ";
-                if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-                diagnostics.lossy(message + "; the channel is ignored");
-            }
+    const tinygltf::Animation& animation = model.animations[clip];
+    for (std::size_t c = 0; c < animation.channels.size(); ++c) {
+        const std::string label = animation_label(model, clip) + " channel " + std::to_string(c);
+        // A broken channel costs its motion, not the whole scene (--strict: an error).
+        try {
+            read_channel(model, animation, c, label, diagnostics, channels, ignored);
+        } catch (const InputError& e) {
+            std::string message = e.what();
+            const std::string prefix = diagnostics.source() + ": ";
+            if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+            diagnostics.lossy(message + "; the channel is ignored");
         }
     }
     for (const std::string& what : ignored) diagnostics.lossy("animation " + what + " are not supported and were ignored");
@@ -113,7 +114,7 @@ void read_channel(const tinygltf::Model& model, const tinygltf::Animation& anima
     for (const AnimationChannel& existing : node_channels) duplicate = duplicate || existing.path == out.path;
     if (duplicate) {
         diagnostics.warn(label + ": node " + std::to_string(channel.target_node) + " already has a '" +
-                         channel.target_path + "' channel; this one is ignored (animations play together)");
+                         channel.target_path + "' channel; this one is ignored");
         return;
     }
     const tinygltf::Node& node = model.nodes[std::size_t(channel.target_node)];

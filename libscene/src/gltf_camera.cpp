@@ -55,17 +55,20 @@ void convert_camera(const tinygltf::Camera& camera, const std::string& name, con
     scene.camera.focus_distance = distance;
 }
 
-void automatic_camera(Scene& scene) {
-    if (scene.spheres.empty()) return;
+void automatic_camera(Scene& scene, const std::set<std::size_t>& distant) {
     AnimVec3 lo{}, hi{};
+    bool any = false;
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        if (distant.count(i)) continue;
         const Sphere& s = scene.spheres[i];
         for (int c = 0; c < 3; ++c) {
             const double a = s.center[c] - s.radius, b = s.center[c] + s.radius;
-            lo[c] = i == 0 ? a : std::min(lo[c], a);
-            hi[c] = i == 0 ? b : std::max(hi[c], b);
+            lo[c] = any ? std::min(lo[c], a) : a;
+            hi[c] = any ? std::max(hi[c], b) : b;
         }
+        any = true;
     }
+    if (!any) return;
     const AnimVec3 center{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
     const double half_diagonal =
         std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2])) / 2;

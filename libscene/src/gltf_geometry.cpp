@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "gltf_internal.h"
 
@@ -17,6 +18,10 @@ constexpr double kMaxFaceSag = 0.2;
 // from the fitted centre: a whole sphere has it at the centre (a UV sphere
 // with an odd number of segments up to ~10% off), a hemisphere at 50%.
 constexpr double kMaxBoxOffset = 0.25;
+// An open part is still a sphere when its triangles, seen from the centre,
+// wrap the whole 4 pi steradians within this fraction (a closed
+// tessellation wraps it exactly; a hemisphere covers half).
+constexpr double kSolidAngleTolerance = 1e-3;
 
 struct Box {
     AnimVec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
@@ -111,6 +116,11 @@ std::optional<FittedSphere> fit_sphere(const std::vector<AnimVec3>& points,
         for (std::uint32_t v : t)
             for (int c = 0; c < 3; ++c) centroid[c] += points[v][c] / 3.0;
         if (distance(centroid, fit->center) < (1.0 - kMaxFaceSag) * fit->radius) return std::nullopt;
+    }
+    if (!is_closed(triangles)) {
+        const double full = 4 * std::numbers::pi;
+        if (std::fabs(solid_angle_seen_from(fit->center, points, triangles) - full) > kSolidAngleTolerance * full)
+            return std::nullopt;
     }
     return fit;
 }

@@ -26,6 +26,11 @@ void Diagnostics::lossy(const std::string& message) {
     warn(message);
 }
 
+void Diagnostics::lossy_for_asset(const std::string& message) {
+    if (strict_) fail(message + " (an error because of --strict)");
+    warn(source_ + ": " + message);
+}
+
 std::optional<double> number_at(const tinygltf::Value& object, const std::string& key) {
     if (!object.IsObject() || !object.Has(key)) return std::nullopt;
     const tinygltf::Value& v = object.Get(key);
@@ -46,15 +51,6 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const
 }
 
 namespace {
-
-// Extensions whose absence would make the geometry unreadable.
-const std::set<std::string> kUnreadableExtensions{"KHR_draco_mesh_compression", "EXT_meshopt_compression"};
-// Extensions that the importer reads (the rest are approximated or ignored).
-const std::set<std::string> kSupportedExtensions{
-    "KHR_lights_punctual",      "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_transmission", "KHR_mesh_quantization",         "EXT_mesh_gpu_instancing",
-    "KHR_implicit_shapes",      "KHR_physics_rigid_bodies",        "KHR_texture_transform",
-    "KHR_texture_basisu",       "EXT_texture_webp",                "KHR_materials_unlit"};
 
 // More spheres than this is refused up front rather than exhausting memory
 // (instances x points can multiply a small file into billions).
@@ -135,8 +131,8 @@ public:
         : model_(model), options_(options), diagnostics_(diagnostics), materials_(model, scene_, diagnostics) {}
 
     Scene run() {
-        check_required_extensions();
-        channels_ = read_animation_channels(model_, diagnostics_);
+        if (const std::optional<std::size_t> clip = choose_animation())
+            channels_ = read_animation_channels(model_, *clip, diagnostics_);
         link_parents();
         walk(scene_roots());
         for (int node : order_) add_node_content(node);
@@ -145,7 +141,7 @@ public:
         choose_camera();
         report_non_spheres();
         report_scales();
-        materials_.report_textures();
+        report_ignored();
         if (scene_.spheres.empty()) diagnostics_.warn("the scene has no sphere content");
         return std::move(scene_);
     }
@@ -153,13 +149,29 @@ public:
 private:
     // ---- structure ----
 
-    void check_required_extensions() {
-        for (const std::string& name : model_.extensionsRequired) {
-            if (kUnreadableExtensions.count(name))
-                diagnostics_.fail("the asset requires " + name + ", which Orb cannot decode");
-            if (!kSupportedExtensions.count(name))
-                diagnostics_.lossy("the asset requires extension " + name + ", which Orb ignores");
+    // One clip plays: the one --animation names, else the first (clips are
+    // alternatives, like "Walk" and "Run", that would fight over the nodes).
+    std::optional<std::size_t> choose_animation() {
+        const auto& clips = model_.animations;
+        if (!options_.animation.empty()) {
+            const std::optional<int> found = find_by_index_or_name(clips, options_.animation);
+            if (!found) {
+                std::string names;
+                for (std::size_t i = 0; i < clips.size(); ++i)
+                    names += (i ? ", " : ": ") + animation_label(model_, i);
+                diagnostics_.fail("--animation " + options_.animation + ": no such animation (there are " +
+                                  std::to_string(clips.size()) + names + ")");
+            }
+            return std::size_t(*found);
         }
+        if (clips.empty()) return std::nullopt;
+        if (clips.size() > 1) {
+            std::string others;
+            for (std::size_t i = 1; i < clips.size(); ++i) others += (i > 1 ? ", " : "") + animation_label(model_, i);
+            diagnostics_.lossy(animation_label(model_, 0) + " is imported; the other clips are left out: " + others +
+                               " (--animation NAME|INDEX picks one)");
+        }
+        return 0;
     }
 
     // glTF nodes form a forest: every node has at most one parent.
@@ -374,7 +386,6 @@ private:
             std::vector<std::array<std::uint32_t, 3>> triangles;
             std::vector<AnimVec3> colors;
             int material = -1;
-            bool triangles_mode = true;
         };
         std::vector<Surface> surfaces;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
@@ -414,7 +425,6 @@ private:
             // Keep only the vertices the primitive uses, renumbered.
             Surface surface;
             surface.material = primitive.material;
-            surface.triangles_mode = mode >= TINYGLTF_MODE_TRIANGLES;
             std::vector<std::uint32_t> remap(positions.size(), std::numeric_limits<std::uint32_t>::max());
             std::vector<std::uint32_t> local_indices;
             local_indices.reserve(indices.size());
@@ -426,50 +436,67 @@ private:
                 }
                 local_indices.push_back(remap[i]);
             }
-            if (surface.triangles_mode) surface.triangles = triangles_of(mode, local_indices);
+            if (mode >= TINYGLTF_MODE_TRIANGLES) surface.triangles = triangles_of(mode, local_indices);
             if (!surface.points.empty()) surfaces.push_back(std::move(surface));
         }
 
-        // The whole mesh as one sphere (e.g. hemispheres in two materials)...
+        // Lines (and triangle primitives without a whole triangle) are never spheres.
+        auto not_a_sphere = [&](const std::vector<AnimVec3>& points, const MeshSphere& look) {
+            content.has_non_spheres = true;
+            if (options_.non_spheres == NonSpherePolicy::Error)
+                diagnostics_.fail(mesh_name + " is not a sphere (--non-spheres error)");
+            if (options_.non_spheres != NonSpherePolicy::Bound) return;
+            MeshSphere bound = look;
+            bound.shape = bounding_sphere(points);
+            content.spheres.push_back(bound);
+        };
+        // All triangles of the mesh together, split into connected parts: one
+        // sphere may span primitives (e.g. hemispheres in two materials) and
+        // one primitive may hold several spheres.
         Surface all;
-        for (const Surface& s : surfaces) {
-            if (!s.triangles_mode) {
-                all.triangles.clear();
-                break;
+        std::vector<std::size_t> owner;  // surface of each point of `all`
+        bool any_colors = false;
+        for (std::size_t i = 0; i < surfaces.size(); ++i) {
+            const Surface& s = surfaces[i];
+            if (s.triangles.empty()) {
+                not_a_sphere(s.points, {{}, s.material, mean_color(s.colors), !s.colors.empty()});
+                continue;
             }
             const auto offset = std::uint32_t(all.points.size());
             all.points.insert(all.points.end(), s.points.begin(), s.points.end());
+            owner.insert(owner.end(), s.points.size(), i);
             for (auto t : s.triangles) all.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
             // Vertices without COLOR_0 count as white in the mean.
             if (s.colors.empty()) all.colors.insert(all.colors.end(), s.points.size(), AnimVec3{1, 1, 1});
             else all.colors.insert(all.colors.end(), s.colors.begin(), s.colors.end());
+            any_colors = any_colors || !s.colors.empty();
         }
-        bool any_colors = false;
-        for (const Surface& s : surfaces) any_colors = any_colors || !s.colors.empty();
-        std::optional<FittedSphere> whole;
-        if (surfaces.size() > 1) whole = fit_sphere(all.points, all.triangles, options_.sphere_tolerance);
-        if (whole) {
-            content.spheres.push_back(
-                {*whole, surfaces.front().material, any_colors ? mean_color(all.colors) : AnimVec3{1, 1, 1}, any_colors});
-            for (const Surface& s : surfaces)
-                if (s.material != surfaces.front().material) {
+        for (const SurfacePart& part : connected_parts(all.points, all.triangles)) {
+            // The part takes the material of its first primitive.
+            std::set<std::size_t> owners;
+            AnimVec3 color_sum{0, 0, 0};
+            for (std::uint32_t v : part.source_vertices) {
+                owners.insert(owner[v]);
+                for (int c = 0; c < 3; ++c) color_sum[c] += all.colors[v][c];
+            }
+            const Surface& first = surfaces[*owners.begin()];
+            AnimVec3 color{1, 1, 1};
+            if (any_colors)
+                for (int c = 0; c < 3; ++c) color[c] = color_sum[c] / double(part.source_vertices.size());
+            const MeshSphere look{{}, first.material, color, any_colors};
+            std::optional<FittedSphere> fit = fit_sphere(part.points, part.triangles, options_.sphere_tolerance);
+            if (!fit) {
+                not_a_sphere(part.points, look);
+                continue;
+            }
+            for (std::size_t o : owners)
+                if (surfaces[o].material != first.material) {
                     diagnostics_.warn(mesh_name + " is one sphere in several materials; the first material is used");
                     break;
                 }
-        } else {
-            // ...or each primitive on its own.
-            for (const Surface& s : surfaces) {
-                std::optional<FittedSphere> fit =
-                    s.triangles_mode ? fit_sphere(s.points, s.triangles, options_.sphere_tolerance) : std::nullopt;
-                if (!fit) {
-                    content.has_non_spheres = true;
-                    if (options_.non_spheres == NonSpherePolicy::Error)
-                        diagnostics_.fail(mesh_name + " is not a sphere (--non-spheres error)");
-                    if (options_.non_spheres != NonSpherePolicy::Bound) continue;
-                    fit = bounding_sphere(s.points);
-                }
-                content.spheres.push_back({*fit, s.material, mean_color(s.colors), !s.colors.empty()});
-            }
+            MeshSphere sphere = look;
+            sphere.shape = *fit;
+            content.spheres.push_back(sphere);
         }
         return mesh_cache_.emplace(mesh_index, std::move(content)).first->second;
     }
@@ -606,7 +633,9 @@ private:
             if (!(c >= 0) || !std::isfinite(c)) diagnostics_.fail(label + ": color must be finite and >= 0");
         if (!(light.intensity >= 0) || !std::isfinite(light.intensity))
             diagnostics_.fail(label + ": intensity must be finite and >= 0");
-        const Vec3 power{color[0] * light.intensity, color[1] * light.intensity, color[2] * light.intensity};
+        // Radiant intensity (W/sr) for point/spot lights, irradiance (W/m^2) for directional ones.
+        const double radiant = light.intensity * watts_per_lumen(options_.light_units);
+        const Vec3 power{color[0] * radiant, color[1] * radiant, color[2] * radiant};
         const Matrix4& world = world_[std::size_t(node)];
 
         if (light.type == "directional") {
@@ -629,13 +658,15 @@ private:
             sphere.radius = radius;
             sphere.material = materials_.emitter(name, distant_light_radiance(power, radius, distance));
             if (moves_[std::size_t(node)]) diagnostics_.lossy(label + ": directional lights do not follow animation");
+            distant_.insert(scene_.spheres.size());
             scene_.spheres.push_back(std::move(sphere));
             return;
         }
         if (light.type != "point" && light.type != "spot")
             diagnostics_.fail(label + ": unknown type '" + light.type + "'");
-        if (light.type == "spot") diagnostics_.lossy(label + " is a spot light; its cone is not modelled (it shines every way)");
-        if (light.range > 0) diagnostics_.warn(label + ": range is ignored (light falls off with the inverse square)");
+        // Spot lights shine every way; range is ignored (light falls off with the inverse square).
+        if (light.type == "spot") ignored_.add_spot_cone();
+        if (light.range > 0) ignored_.add_range();
         const double radius = options_.light_radius > 0 ? options_.light_radius : kDefaultLightRadiusFraction * diagonal;
         // The radius is in world units whatever the node's scale.
         const double scale = detail::largest_axis_scale(world);
@@ -648,14 +679,21 @@ private:
         add_sphere(name, node, kIdentityMatrix, local, materials_.emitter(name, point_light_radiance(power, radius)));
     }
 
+    // Centre of the bounds of the scene's spheres, leaving out the distant
+    // directional-light emitters (they would drag it 100 diagonals away).
     AnimVec3 scene_center() const {
-        if (scene_.spheres.empty()) return {0, 0, 0};
-        AnimVec3 lo = scene_.spheres[0].center, hi = lo;
-        for (const Sphere& s : scene_.spheres)
+        AnimVec3 lo{}, hi{};
+        bool any = false;
+        for (std::size_t i = 0; i < scene_.spheres.size(); ++i) {
+            if (distant_.count(i)) continue;
+            const Sphere& s = scene_.spheres[i];
             for (int c = 0; c < 3; ++c) {
-                lo[c] = std::min(lo[c], s.center[c] - s.radius);
-                hi[c] = std::max(hi[c], s.center[c] + s.radius);
+                lo[c] = any ? std::min(lo[c], s.center[c] - s.radius) : s.center[c] - s.radius;
+                hi[c] = any ? std::max(hi[c], s.center[c] + s.radius) : s.center[c] + s.radius;
             }
+            any = true;
+        }
+        if (!any) return {0, 0, 0};
         return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
     }
 
@@ -680,7 +718,7 @@ private:
             chosen = cameras_.front();
         }
         if (!chosen) {
-            automatic_camera(scene_);
+            automatic_camera(scene_, distant_);
             return;
         }
         const auto [node, camera_index] = *chosen;
@@ -706,6 +744,12 @@ private:
         diagnostics_.lossy("not spheres, left out (--non-spheres bound|error to change): " + list);
     }
 
+    void report_ignored() {
+        for (int material : materials_.used()) ignored_.add_material(model_.materials[std::size_t(material)]);
+        const std::string summary = ignored_.summary(model_);
+        if (!summary.empty()) diagnostics_.lossy_for_asset(summary);
+    }
+
     void report_scales() {
         if (non_uniform_.empty()) return;
         std::string list;
@@ -729,6 +773,8 @@ private:
     std::vector<std::pair<int, int>> cameras_;
     std::set<std::string> non_spheres_;
     std::set<std::string> non_uniform_;
+    IgnoredFeatures ignored_;
+    std::set<std::size_t> distant_;  // scene_.spheres indices of directional-light emitters
 };
 
 }  // namespace

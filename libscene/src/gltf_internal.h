@@ -7,6 +7,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,11 @@ namespace orb::gltf {
 // `base_dir`; images are never decoded. Throws InputError.
 tinygltf::Model load_model(std::string_view bytes, const std::string& source, const std::string& base_dir);
 
+// Throws InputError when the asset's extensionsRequired names a geometry
+// compression Orb cannot decode (gltf_required.cpp); called on the JSON
+// text before tinygltf sees it.
+void refuse_undecodable_extensions(std::string_view json_text, const std::string& source);
+
 // ---- messages (gltf_import.cpp) ----
 
 class Diagnostics {
@@ -32,6 +38,8 @@ public:
     void warn(const std::string& message);
     // A warning that loses information: an error under --strict.
     void lossy(const std::string& message);
+    // The same for a summary of the whole asset, whose warning names the file.
+    void lossy_for_asset(const std::string& message);
     const std::string& source() const { return source_; }
     std::vector<std::string> take_warnings() { return std::move(warnings_); }
 
@@ -39,6 +47,31 @@ private:
     std::string source_;
     bool strict_;
     std::vector<std::string> warnings_;
+};
+
+// ---- what Orb drops (gltf_ignored.cpp) ----
+
+// Counts what the imported content uses that Orb does not render, for one
+// warning per asset ("ignored: 3 base-colour textures, ...").
+class IgnoredFeatures {
+public:
+    // A glTF material that imported content uses: its textures and the
+    // material extensions Orb does not read.
+    void add_material(const tinygltf::Material& material);
+    void add_spot_cone() { ++spot_cones_; }
+    void add_range() { ++ranges_; }
+    // "ignored: ..." naming everything counted plus the asset's extensions
+    // that Orb does not read; empty when nothing is dropped.
+    std::string summary(const tinygltf::Model& model) const;
+
+private:
+    // baseColor, metallicRoughness, normal, occlusion, emissive: references.
+    static constexpr std::size_t kCoreTextureKinds = 5;
+    std::array<std::size_t, kCoreTextureKinds> core_textures_{};
+    std::map<std::string, std::size_t> extension_textures_;   // "kind texture|extension" -> references
+    std::map<std::string, std::size_t> material_extensions_;  // name -> materials
+    std::size_t spot_cones_ = 0;
+    std::size_t ranges_ = 0;
 };
 
 // ---- accessors (gltf_accessor.cpp) ----
@@ -71,9 +104,30 @@ struct FittedSphere {
 };
 
 // The sphere that all `points` lie on within `tolerance` (relative to the
-// radius), if the triangles also cover it like a tessellated sphere does.
+// radius), if the triangles also cover it like a tessellated sphere does:
+// closely (no coarse faces) and all the way round (closed, or wrapping the
+// full solid angle), so that bands and hemispheres are not spheres.
 std::optional<FittedSphere> fit_sphere(const std::vector<AnimVec3>& points,
                                        const std::vector<std::array<std::uint32_t, 3>>& triangles, double tolerance);
+
+// One connected piece of a triangle surface, after welding vertices that
+// share a position (within 1e-6 of the surface's size).
+struct SurfacePart {
+    std::vector<AnimVec3> points;                         // welded vertices
+    std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into points
+    std::vector<std::uint32_t> source_vertices;           // the input vertices that belong to this part
+};
+
+// The connected parts of `triangles` (indices into `points`), in the order
+// of their first triangles (gltf_parts.cpp).
+std::vector<SurfacePart> connected_parts(const std::vector<AnimVec3>& points,
+                                         const std::vector<std::array<std::uint32_t, 3>>& triangles);
+// Every edge of a non-degenerate triangle is shared by exactly two of them.
+bool is_closed(const std::vector<std::array<std::uint32_t, 3>>& triangles);
+// Sum of the solid angles that the triangles subtend from `center`: 4 pi
+// when they wrap all the way round it.
+double solid_angle_seen_from(const AnimVec3& center, const std::vector<AnimVec3>& points,
+                             const std::vector<std::array<std::uint32_t, 3>>& triangles);
 
 // Centre of the bounding box and the largest distance from it to a point.
 FittedSphere bounding_sphere(const std::vector<AnimVec3>& points);
@@ -94,8 +148,8 @@ public:
     std::uint32_t get(int index, const AnimVec3& color_scale = {1.0, 1.0, 1.0}, bool vertex_colors = false);
     // A black emitter of radiance `emission` (lights).
     std::uint32_t emitter(const std::string& name, const Vec3& emission);
-    // One warning for all textured materials; call once at the end.
-    void report_textures();
+    // glTF material indices that imported content uses.
+    const std::set<int>& used() const { return used_; }
 
 private:
     std::uint32_t add(Material material);
@@ -103,7 +157,7 @@ private:
     Scene& scene_;
     Diagnostics& diagnostics_;
     std::map<std::string, std::uint32_t> by_key_;
-    std::vector<std::string> textured_;
+    std::set<int> used_;
 };
 
 // ---- extension values (gltf_import.cpp) ----
@@ -120,9 +174,15 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const
 // `scene_center` sets how far away the target point is.
 void convert_camera(const tinygltf::Camera& camera, const std::string& name, const Matrix4& world,
                     const AnimVec3& scene_center, Scene& scene, const Diagnostics& diagnostics);
-// Frames the bounds of the spheres from +z looking down -z.
-void automatic_camera(Scene& scene);
+// Frames the bounds of the spheres from +z looking down -z, leaving out the
+// spheres listed in `distant` (directional-light emitters, far away).
+void automatic_camera(Scene& scene, const std::set<std::size_t>& distant);
 
+// Luminous efficacy that turns lumens into watts: 683 lm/W, the SI
+// definition of the candela and Blender's PBR_WATTS_TO_LUMENS.
+constexpr double kLumensPerWatt = 683.0;
+// Factor from glTF light units (cd, lux) to Orb's radiant units (W/sr, W/m^2).
+double watts_per_lumen(LightUnits units);
 // Radiance of a sphere of radius `radius` whose radiant intensity in every
 // direction is `intensity` (per colour channel): L = I / (pi r^2).
 Vec3 point_light_radiance(const Vec3& intensity, double radius);
@@ -130,9 +190,11 @@ Vec3 point_light_radiance(const Vec3& intensity, double radius);
 // irradiance `illuminance` on a surface facing it: L = E / (pi (r/d)^2).
 Vec3 distant_light_radiance(const Vec3& illuminance, double radius, double distance);
 
-// Animated node channels from every glTF animation (gltf_animation.cpp),
+// Animated node channels of glTF animation (clip) `clip` (gltf_animation.cpp),
 // keyed by glTF node index.
-std::map<int, std::vector<AnimationChannel>> read_animation_channels(const tinygltf::Model& model,
+std::map<int, std::vector<AnimationChannel>> read_animation_channels(const tinygltf::Model& model, std::size_t clip,
                                                                     Diagnostics& diagnostics);
+// "animation 2 'Walk'"
+std::string animation_label(const tinygltf::Model& model, std::size_t clip);
 
 }  // namespace orb::gltf

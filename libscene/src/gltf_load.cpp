@@ -134,6 +134,7 @@ tinygltf::Model load_model(std::string_view bytes, const std::string& source, co
     const std::string_view json_text = binary ? check_glb(bytes, source, glb_length) : bytes;
     if (json_depth(json_text) > kMaxJsonDepth)
         throw InputError(source + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    refuse_undecodable_extensions(json_text, source);
 
     // No base directory: no external file is ever read (fuzzing, embedded use).
     Sandbox sandbox;

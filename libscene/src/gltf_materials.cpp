@@ -17,19 +17,6 @@ constexpr double kDefaultGrey = 0.8;
 
 double clamp01(double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0; }
 
-bool has_texture(const tinygltf::Material& m) {
-    if (m.pbrMetallicRoughness.baseColorTexture.index >= 0 || m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ||
-        m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 || m.emissiveTexture.index >= 0)
-        return true;
-    // Extensions reference textures as objects with an "index" (transmissionTexture, ...).
-    for (const auto& [name, value] : m.extensions) {
-        if (!value.IsObject()) continue;
-        for (const std::string& key : value.Keys())
-            if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0) return true;
-    }
-    return false;
-}
-
 }  // namespace
 
 std::uint32_t MaterialTable::add(Material material) {
@@ -97,8 +84,7 @@ std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool ve
         }
     }
 
-    if (has_texture(m) && std::find(textured_.begin(), textured_.end(), out.name) == textured_.end())
-        textured_.push_back(out.name);
+    used_.insert(index);
     return add(std::move(out));
 }
 
@@ -107,14 +93,6 @@ std::uint32_t MaterialTable::emitter(const std::string& name, const Vec3& emissi
     out.name = name;
     out.emission = emission;
     return add(std::move(out));
-}
-
-void MaterialTable::report_textures() {
-    if (textured_.empty()) return;
-    std::string names;
-    for (std::size_t i = 0; i < textured_.size() && i < 8; ++i) names += (i ? ", '" : "'") + textured_[i] + "'";
-    if (textured_.size() > 8) names += ", ... (" + std::to_string(textured_.size()) + " in all)";
-    diagnostics_.lossy("textures are not supported; their factors are used instead (materials " + names + ")");
 }
 
 }  // namespace orb::gltf

@@ -101,7 +101,44 @@ TEST(GltfAnimation, ABrokenChannelCostsItsMotionNotTheScene) {
     EXPECT_THROW(import_gltf(text, "broken.gltf", "", strict), InputError);
 }
 
+class Clips : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Clips, TheFirstClipPlaysAndTheOthersAreNamed) {
+    const GltfImportResult result = import_generated("clips" + GetParam());
+    expect_center(scene_at_time(result.scene, 1.0), "Ball", {0, 1, 0});  // "Rise" alone
+    ASSERT_EQ(result.warnings.size(), 1u);
+    EXPECT_EQ(result.warnings[0], "animation 0 'Rise' is imported; the other clips are left out: animation 1 'Slide' "
+                                  "(--animation NAME|INDEX picks one)");
+    GltfImportOptions strict;
+    strict.strict = true;
+    EXPECT_THROW(import_generated("clips" + GetParam(), strict), InputError);
+}
+
+TEST_P(Clips, AnimationPicksOneByNameOrIndex) {
+    for (const char* key : {"Slide", "1"}) {
+        GltfImportOptions options;
+        options.animation = key;
+        options.strict = true;  // choosing a clip loses nothing
+        const GltfImportResult result = import_generated("clips" + GetParam(), options);
+        expect_center(scene_at_time(result.scene, 1.0), "Ball", {2, 0, 0});
+        expect_center(scene_at_time(result.scene, 0.5), "Ball", {1, 0, 0});
+        EXPECT_TRUE(result.warnings.empty()) << key;
+    }
+    GltfImportOptions missing;
+    missing.animation = "Walk";
+    try {
+        import_generated("clips" + GetParam(), missing);
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--animation Walk: no such animation (there are 2: animation 0 'Rise', "
+                                             "animation 1 'Slide')"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Gltf, Animated, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
+INSTANTIATE_TEST_SUITE_P(Gltf, Clips, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
 
 }  // namespace
 }  // namespace orb::gltf_test

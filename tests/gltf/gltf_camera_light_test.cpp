@@ -97,9 +97,9 @@ TEST_P(Lights, PointLightIsASphereOfMatchingIntensity) {
     EXPECT_DOUBLE_EQ(bulb.radius, 0.1);
     const Material& m = result.scene.materials.at(bulb.material);
     expect_vec(m.color, {0, 0, 0});
-    // glTF: 100 cd x colour (1, 0.5, 0.25). A sphere of radiance L shows pi r^2
-    // of area in every direction, so its intensity is L pi r^2.
-    const Vec3 intensity{100, 50, 25};
+    // glTF: 100 cd x colour (1, 0.5, 0.25) = 100/683 W/sr x colour. A sphere of
+    // radiance L shows pi r^2 of area in every direction, so its intensity is L pi r^2.
+    const Vec3 intensity{100 / 683.0, 50 / 683.0, 25 / 683.0};
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(m.emission[c], intensity[c] / (kPi * 0.01), 1e-9 * m.emission[c]);
         EXPECT_NEAR(m.emission[c] * kPi * bulb.radius * bulb.radius, intensity[c], 1e-9 * intensity[c]);
@@ -114,12 +114,39 @@ TEST_P(Lights, DefaultLightRadiusIsOnePercentOfTheSceneDiagonal) {
     const double radius = 0.01 * std::sqrt(4.0 + 36 + 4);
     const Sphere& bulb = sphere_named(scene, "Bulb");
     EXPECT_NEAR(bulb.radius, radius, 1e-6 * radius);
-    EXPECT_NEAR(scene.materials.at(bulb.material).emission[0] * kPi * bulb.radius * bulb.radius, 100, 1e-9);
+    EXPECT_NEAR(scene.materials.at(bulb.material).emission[0] * kPi * bulb.radius * bulb.radius, 100 / 683.0, 1e-12);
+}
+
+TEST_P(Lights, PhotometricUnitsMatchBlendersLampPower) {
+    GltfImportOptions options;
+    options.light_radius = 0.5;
+    const Scene scene = import_generated("point_light" + GetParam(), options).scene;
+    const Sphere& bulb = sphere_named(scene, "Bulb");
+    // Blender imports 100 cd as a lamp of 100 x 4 pi / 683 W. A Lambertian
+    // sphere of radius R and radiance L emits 4 pi^2 R^2 L.
+    const double blender_watts = 100 * 4 * kPi / 683;
+    const double L = scene.materials.at(bulb.material).emission[0];
+    EXPECT_NEAR(4 * kPi * kPi * 0.25 * L, blender_watts, 1e-12 * blender_watts);
+    EXPECT_NEAR(L, 100 / (683 * kPi * 0.25), 1e-12);
+}
+
+TEST_P(Lights, RadiometricUnitsTakeOneCandelaAsOneWattPerSteradian) {
+    GltfImportOptions options;
+    options.light_radius = 0.1;
+    options.light_units = LightUnits::Radiometric;
+    options.directional_lights = true;
+    const Scene point = import_generated("point_light" + GetParam(), options).scene;
+    const Sphere& bulb = sphere_named(point, "Bulb");
+    EXPECT_NEAR(point.materials.at(bulb.material).emission[1], 50 / (kPi * 0.01), 1e-9);
+    const Scene all = import_generated("all_lights" + GetParam(), options).scene;
+    const Sphere& sun = sphere_named(all, "Sun");
+    const double sine = sun.radius / std::hypot(sun.center[0], sun.center[1], sun.center[2]);
+    EXPECT_NEAR(all.materials.at(sun.material).emission[0] * kPi * sine * sine, 3.0, 1e-6);
 }
 
 TEST_P(Lights, SpotAndDirectionalLightsWarn) {
     const GltfImportResult result = import_generated("all_lights" + GetParam());
-    EXPECT_TRUE(any_warning_contains(result, "'Spot' is a spot light; its cone is not modelled"));
+    EXPECT_TRUE(any_warning_contains(result, ": ignored: spot cone angles of 1 light"));
     EXPECT_TRUE(any_warning_contains(result, "'Sun' is directional"));
     const Sphere& spot = sphere_named(result.scene, "Spot");
     expect_vec(spot.center, {0, -5, 0}, 1e-6);
@@ -139,11 +166,30 @@ TEST_P(Lights, DirectionalLightAsADistantEmitterGivesItsIlluminance) {
     EXPECT_GT(sun.center[1], 100 * sun.radius / 10);
     EXPECT_NEAR(sun.center[0], 0, 1e-6 * sun.center[1]);
     EXPECT_NEAR(sun.center[2], 0, 1e-6 * sun.center[1]);
-    // Irradiance at the scene from a sphere of radiance L: E = L pi (r/d)^2 = 3 lux.
+    // Irradiance at the scene from a sphere of radiance L: E = L pi (r/d)^2 =
+    // 3 lux = 3/683 W/m^2 (Blender's sun strength for 3 lux).
     const double d = std::hypot(sun.center[0], sun.center[1], sun.center[2]);
     const double sine = sun.radius / d;
     const Material& m = scene.materials.at(sun.material);
-    EXPECT_NEAR(m.emission[0] * kPi * sine * sine, 3.0, 1e-6);  // the scene is centred on the origin
+    EXPECT_NEAR(m.emission[0] * kPi * sine * sine, 3.0 / 683, 1e-9);  // the scene is centred on the origin
+}
+
+TEST_P(Lights, AutomaticCameraFramesTheSceneNotTheDistantSun) {
+    GltfImportOptions options;
+    options.directional_lights = true;
+    const Scene scene = import_generated("all_lights" + GetParam(), options).scene;
+    ASSERT_NO_THROW(sphere_named(scene, "Sun"));
+    // Ball [-1,1]^3, Bulb at (0,5,0) and Spot at (0,-5,0) of equal radius r:
+    // the box is [-1,1] x [-5-r,5+r] x [-1,1], centred on the origin.
+    const double r = sphere_named(scene, "Bulb").radius;
+    expect_vec(scene.camera.target, {0, 0, 0}, 1e-6);
+    const double half_diagonal = std::sqrt(4.0 + (10 + 2 * r) * (10 + 2 * r) + 4) / 2;
+    const double half_v = scene.camera.vfov_deg * kPi / 360;
+    const double half_h = std::atan(std::tan(half_v) * scene.render.width / scene.render.height);
+    EXPECT_NEAR(scene.camera.position[2], half_diagonal / std::sin(std::min(half_v, half_h)), 1e-6);
+    // The same framing as without the sun.
+    const Scene sunless = import_generated("all_lights" + GetParam()).scene;
+    expect_vec(scene.camera.position, sunless.camera.position, 1e-9);
 }
 
 INSTANTIATE_TEST_SUITE_P(Gltf, Lights, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));

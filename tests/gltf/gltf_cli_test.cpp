@@ -7,8 +7,10 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <numbers>
 
 #include "gltf_test_util.h"
+#include "orb/scene/animation.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::gltf_test {
@@ -71,6 +73,16 @@ TEST(GltfCli, FlagsReachTheImporter) {
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(sphere_named(load_scene_json(run.out, "out"), "Bulb").radius, 0.25);
 
+    for (const char* units : {"radiometric", "photometric"}) {
+        run = run_import(quote(generated("point_light.gltf")) + " --light-radius 0.25 --light-units " + units, out);
+        ASSERT_EQ(run.status, 0) << run.err;
+        const Scene scene = load_scene_json(run.out, "out");
+        const double radiant = std::string(units) == "radiometric" ? 100.0 : 100.0 / 683;
+        EXPECT_NEAR(scene.materials.at(sphere_named(scene, "Bulb").material).emission[0],
+                    radiant / (std::numbers::pi * 0.0625), 1e-9 * radiant)
+            << units;
+    }
+
     run = run_import(quote(generated("points.gltf")) + " --point-radius 0.3", out);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(sphere_named(load_scene_json(run.out, "out"), "Plain.point0").radius, 0.3);
@@ -78,10 +90,18 @@ TEST(GltfCli, FlagsReachTheImporter) {
     run = run_import(quote(generated("all_lights.gltf")) + " --directional-lights", out);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_NO_THROW(sphere_named(load_scene_json(run.out, "out"), "Sun"));
+    EXPECT_LT(load_scene_json(run.out, "out").camera.position[2], 100.0) << "framed the scene, not the sun";
 
     run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance 0.01", out);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(load_scene_json(run.out, "out").spheres.size(), 3u);
+
+    run = run_import(quote(generated("clips.glb")) + " --animation Slide --strict", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(scene_at_time(load_scene_json(run.out, "out"), 1.0).spheres.at(0).center[0], 2.0);
+    run = run_import(quote(generated("clips.glb")) + " --animation 7", out);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_NE(run.err.find("--animation 7: no such animation"), std::string::npos) << run.err;
 
     run = run_import(quote(generated("animation.glb")), out);
     ASSERT_EQ(run.status, 0) << run.err;
@@ -103,9 +123,30 @@ TEST(GltfCli, ErrorsAndUsage) {
     run = run_import(quote(generated("non_uniform.gltf")) + " --strict", out);
     EXPECT_EQ(run.status, 1) << run.err;
 
+    // Everything dropped, in one warning naming the file; --strict refuses it.
+    run = run_import(quote(generated("ignored.glb")), out);
+    EXPECT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.err.find(generated("ignored.glb") + ": ignored: 2 base-colour textures"), std::string::npos)
+        << run.err;
+    fs::remove(out);
+    run = run_import(quote(generated("ignored.glb")) + " --strict", out);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_NE(run.err.find("orb-import: error: " + generated("ignored.glb") + ": ignored:"), std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(out));
+
+    run = run_import(quote(generated("draco.glb")), out);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_EQ(run.err, "orb-import: error: " + generated("draco.glb") +
+                           ": extensionsRequired[0]: the asset requires KHR_draco_mesh_compression, which Orb cannot "
+                           "decode\n");
+    EXPECT_FALSE(fs::exists(out));
+
     run = run_import(quote(generated("nested.gltf")) + " --non-spheres maybe", out);
     EXPECT_EQ(run.status, 2) << run.err;
     run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance -1", out);
+    EXPECT_EQ(run.status, 2) << run.err;
+    run = run_import(quote(generated("nested.gltf")) + " --light-units lumens", out);
     EXPECT_EQ(run.status, 2) << run.err;
 }
 

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
+#include "gltf_internal.h"
 #include "gltf_test_util.h"
 #include "orb/scene/error.h"
 
@@ -86,7 +88,76 @@ TEST_P(Containers, NonSpheresAreSkippedWithOneWarningBoundedOrRefused) {
     }
 }
 
+TEST_P(Containers, SpheresSharingOnePrimitiveAreSplitIntoParts) {
+    const GltfImportResult result = import_generated("parts" + GetParam());
+    // Row: one indexed primitive; Soup: the same triangles with unshared corners.
+    for (const std::string node : {"Row", "Soup"}) {
+        const double y = node == "Soup" ? 5 : 0;
+        for (int k = 0; k < 3; ++k) expect_sphere(result.scene, node + "." + std::to_string(k), {3.0 * k, y, 0}, 1);
+    }
+    EXPECT_EQ(result.scene.spheres.size(), 6u);
+}
+
+TEST_P(Containers, OpenSurfacesOnASphereAreNotSpheres) {
+    const GltfImportResult result = import_generated("parts" + GetParam());
+    for (const Sphere& s : result.scene.spheres)
+        EXPECT_TRUE(s.name.rfind("Row", 0) == 0 || s.name.rfind("Soup", 0) == 0) << s.name;
+    ASSERT_EQ(result.warnings.size(), 1u);
+    for (const char* open : {"'Band'", "'Hemisphere'", "'Cap'"})
+        EXPECT_NE(result.warnings[0].find(open), std::string::npos) << result.warnings[0];
+
+    GltfImportOptions bound;
+    bound.non_spheres = NonSpherePolicy::Bound;
+    const Scene bounded = import_generated("parts" + GetParam(), bound).scene;
+    EXPECT_EQ(bounded.spheres.size(), 9u);
+    // The band spans y in [-sin 45, sin 45] and x, z in [-1, 1]: bounded from the box centre.
+    expect_sphere(bounded, "Band", {0, -5, 0}, 1);
+}
+
+TEST(GltfGeometry, HemispheresInTwoPrimitivesWeldIntoOneSphere) {
+    const GltfImportResult result = import_generated("halves.gltf");
+    ASSERT_EQ(result.scene.spheres.size(), 1u);
+    expect_sphere(result.scene, "Halves", {0, 0, 2}, 1);
+    EXPECT_EQ(result.scene.materials.at(result.scene.spheres[0].material).name, "North");
+    EXPECT_TRUE(any_warning_contains(result, "is one sphere in several materials; the first material is used"));
+}
+
 INSTANTIATE_TEST_SUITE_P(Gltf, Containers, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
+
+TEST(GltfGeometry, CompressedGeometryIsRefusedByNameBeforeAccessorChecks) {
+    // The Draco asset's accessors have no bufferView: tinygltf alone would
+    // call that an invalid accessor.
+    const std::pair<const char*, std::string> cases[] = {
+        {"draco.gltf", "extensionsRequired[0]: the asset requires KHR_draco_mesh_compression"},
+        {"draco.glb", "extensionsRequired[0]: the asset requires KHR_draco_mesh_compression"},
+        {"meshopt.glb", "extensionsRequired[1]: the asset requires EXT_meshopt_compression"}};
+    for (const auto& [file, message] : cases) {
+        try {
+            import_generated(file);
+            ADD_FAILURE() << file << ": expected an error";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), generated(file) + ": " + message + ", which Orb cannot decode");
+        }
+    }
+}
+
+TEST(GltfGeometry, ConnectedPartsWeldCornersAndCheckClosure) {
+    // Two triangles sharing an edge only by position, and a third far away.
+    const std::vector<AnimVec3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                                       {5, 5, 5}, {6, 5, 5}, {5, 6, 5}};
+    const auto parts = gltf::connected_parts(points, {{0, 1, 2}, {3, 5, 4}, {6, 7, 8}});
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_EQ(parts[0].points.size(), 4u);  // corners 1 = 3 and 2 = 4 welded
+    EXPECT_EQ(parts[0].triangles.size(), 2u);
+    EXPECT_EQ(parts[0].source_vertices.size(), 6u);
+    EXPECT_FALSE(gltf::is_closed(parts[0].triangles));
+    // A tetrahedron is closed, and wraps 4 pi around an inside point.
+    const std::vector<AnimVec3> tetra{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    const std::vector<std::array<std::uint32_t, 3>> faces{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    EXPECT_TRUE(gltf::is_closed(faces));
+    EXPECT_NEAR(gltf::solid_angle_seen_from({0, 0, 0}, tetra, faces), 4 * std::numbers::pi, 1e-12);
+    EXPECT_NEAR(gltf::solid_angle_seen_from({0, 0, 0}, tetra, {faces[0]}), std::numbers::pi, 1e-12);
+}
 
 TEST(GltfGeometry, ImplicitSphereShapesOnNodes) {
     const GltfImportResult result = import_generated("implicit_shapes.gltf");

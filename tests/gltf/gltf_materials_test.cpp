@@ -54,10 +54,9 @@ TEST_P(Materials, EachRule) {
     EXPECT_EQ(none.type, MaterialType::Diffuse);
     expect_color(none.color, {0.8, 0.8, 0.8});
 
-    // Exactly one warning, about the textures, naming the material.
+    // Exactly one warning, naming the file and the texture.
     ASSERT_EQ(result.warnings.size(), 1u);
-    EXPECT_NE(result.warnings[0].find("textures are not supported"), std::string::npos);
-    EXPECT_NE(result.warnings[0].find("'Textured'"), std::string::npos);
+    EXPECT_EQ(result.warnings[0], generated("materials" + GetParam()) + ": ignored: 1 base-colour texture");
 }
 
 INSTANTIATE_TEST_SUITE_P(Gltf, Materials, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
@@ -67,6 +66,36 @@ TEST(GltfMaterials, StrictRefusesTextures) {
     strict.strict = true;
     EXPECT_THROW(import_generated("materials.gltf", strict), InputError);
 }
+
+class Ignored : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Ignored, OneWarningNamesEverythingDroppedWithCounts) {
+    const std::string path = generated("ignored" + GetParam());
+    const GltfImportResult result = import_generated("ignored" + GetParam());
+    ASSERT_EQ(result.warnings.size(), 1u);
+    EXPECT_EQ(result.warnings[0],
+              path + ": ignored: 2 base-colour textures, 1 normal texture, 1 transmission texture "
+                     "(KHR_materials_transmission), spot cone angles of 2 lights, range of 1 light, "
+                     "KHR_materials_clearcoat (2 materials), KHR_materials_sheen (1 material), "
+                     "EXT_lights_image_based (required extension)");
+    EXPECT_EQ(result.scene.spheres.size(), 6u);  // 4 balls and 2 lights
+}
+
+TEST_P(Ignored, StrictRefusesNamingTheFile) {
+    GltfImportOptions strict;
+    strict.strict = true;
+    try {
+        import_generated("ignored" + GetParam(), strict);
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.rfind(generated("ignored" + GetParam()) + ": ignored: 2 base-colour textures", 0), 0u)
+            << message;
+        EXPECT_NE(message.find("--strict"), std::string::npos) << message;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Gltf, Ignored, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
 
 }  // namespace
 }  // namespace orb::gltf_test

@@ -140,6 +140,33 @@ def uv_sphere(radius=1.0, center=(0.0, 0.0, 0.0), segments=32, rings=16):
     return pts, idx
 
 
+def sphere_zone(theta_from, theta_to, radius=1.0, segments=32, rings=16):
+    """Part of a UV sphere between polar angles theta_from and theta_to
+    (radians from +y), open along its cut edges; a pole is included when
+    the zone reaches it."""
+    pts, idx = [], []
+    first_ring = 0
+    if theta_from == 0:
+        pts.append((0.0, radius, 0.0))
+        first_ring = 1
+    ring_thetas = [theta_from + (theta_to - theta_from) * r / rings for r in range(first_ring, rings + 1)]
+    base = len(pts)
+    for theta in ring_thetas:
+        for s in range(segments):
+            phi = 2 * math.pi * s / segments
+            pts.append((radius * math.sin(theta) * math.cos(phi), radius * math.cos(theta),
+                        radius * math.sin(theta) * math.sin(phi)))
+    ring = lambda r, s: base + r * segments + s % segments
+    if first_ring:
+        for s in range(segments):
+            idx += [0, ring(0, s + 1), ring(0, s)]
+    for r in range(len(ring_thetas) - 1):
+        for s in range(segments):
+            a, b, c, d = ring(r, s), ring(r, s + 1), ring(r + 1, s), ring(r + 1, s + 1)
+            idx += [a, b, d, a, d, c]
+    return pts, idx
+
+
 def ico_sphere(radius=1.0, subdivisions=2):
     t = (1 + math.sqrt(5)) / 2
     verts = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
@@ -219,6 +246,45 @@ def points(out):
     a.write_all(out, "points")
 
 
+def parts(out):
+    """Spheres sharing one primitive, and open surfaces that lie on a sphere.
+    Row: 3 UV spheres of radius 1 at x = 0, 3, 6 in one indexed primitive.
+    Soup: the same row with every triangle's corners written out separately
+    (as an exporter splitting every seam does), so only welding joins them.
+    Band (+-45 degrees of latitude), Hemisphere and Cap (the sphere without
+    a 36-degree polar cap) lie on a sphere of radius 1 but are open."""
+    a = Asset()
+    pts, idx = [], []
+    for k in range(3):
+        p, i = uv_sphere(1.0, (3.0 * k, 0.0, 0.0))
+        idx += [j + len(pts) for j in i]
+        pts += p
+    row = a.mesh("Row", pts, idx)
+    soup = a.mesh("Soup", [pts[j] for j in idx])
+    band = a.mesh("Band", *sphere_zone(math.pi / 4, 3 * math.pi / 4))
+    hemisphere = a.mesh("Hemisphere", *sphere_zone(0, math.pi / 2))
+    cap = a.mesh("Cap", *sphere_zone(0, 0.8 * math.pi))
+    a.node(name="Row", mesh=row)
+    a.node(name="Soup", translation=[0, 5, 0], mesh=soup)
+    a.node(name="Band", translation=[0, -5, 0], mesh=band)
+    a.node(name="Hemisphere", translation=[5, -5, 0], mesh=hemisphere)
+    a.node(name="Cap", translation=[10, -5, 0], mesh=cap)
+    a.write_all(out, "parts")
+
+    # One sphere as two hemispheres in two primitives (two materials), each
+    # with its own copy of the equator's vertices: welding joins them. The
+    # southern zone's last ring (at the pole) welds into one vertex.
+    h = Asset()
+    h.gltf["materials"] = [{"name": "North"}, {"name": "South"}]
+    h.mesh("Halves", *sphere_zone(0, math.pi / 2), material=0)
+    south_pts, south_idx = sphere_zone(math.pi / 2, math.pi)
+    prim = {"attributes": {"POSITION": h.accessor([c for p in south_pts for c in p], "VEC3")},
+            "indices": h.accessor(south_idx, "SCALAR", USHORT), "material": 1}
+    h.gltf["meshes"][0]["primitives"].append(prim)
+    h.node(name="Halves", translation=[0, 0, 2], mesh=0)
+    h.write_gltf(out, "halves")
+
+
 def non_sphere(out):
     a = Asset()
     a.mesh("Ball", *uv_sphere(1.0))
@@ -261,6 +327,40 @@ def materials(out):
     mesh = a.mesh("NoMaterial", pts, idx)
     a.node(name="NoMaterial", translation=[18, 0, 0], mesh=mesh)
     a.write_all(out, "materials")
+
+
+def ignored(out):
+    """Everything Orb drops, once each kind, for the one "ignored: ..." warning.
+    Material 3 is used by nothing, so its occlusion texture is not counted."""
+    a = Asset()
+    pts, idx = uv_sphere(1.0, segments=16, rings=8)
+    a.gltf["images"] = [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg=="}]
+    a.gltf["textures"] = [{"source": 0}]
+    a.gltf["materials"] = [
+        {"name": "Velvet", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}, "normalTexture": {"index": 0},
+         "extensions": {"KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1]}}},
+        {"name": "Car", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}},
+         "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1}}},
+        {"name": "Glass", "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1},
+                                         "KHR_materials_transmission": {"transmissionFactor": 1,
+                                                                        "transmissionTexture": {"index": 0}}}},
+        {"name": "Unused", "occlusionTexture": {"index": 0}},
+    ]
+    for ext in ("KHR_materials_sheen", "KHR_materials_clearcoat", "KHR_materials_transmission", "KHR_lights_punctual",
+                "KHR_texture_transform", "EXT_lights_image_based"):
+        a.extension_used(ext)
+    a.gltf["extensionsRequired"] = ["EXT_lights_image_based"]
+    for m in range(3):
+        mesh = a.mesh("Ball%d" % m, pts, idx, material=m)
+        a.node(name=a.gltf["materials"][m]["name"], translation=[3 * m, 0, 0], mesh=mesh)
+    a.node(name="Velvet2", translation=[9, 0, 0], mesh=0)
+    a.gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"name": "SpotA", "type": "spot", "intensity": 5, "range": 10, "spot": {"outerConeAngle": 0.5}},
+        {"name": "SpotB", "type": "spot", "intensity": 5, "spot": {}},
+    ]}}
+    a.node(name="SpotNodeA", translation=[0, 5, 0], extensions={"KHR_lights_punctual": {"light": 0}})
+    a.node(name="SpotNodeB", translation=[0, -5, 0], extensions={"KHR_lights_punctual": {"light": 1}})
+    a.write_all(out, "ignored")
 
 
 def cameras(out):
@@ -338,6 +438,56 @@ def animation(out):
     a.write_all(out, "animation")
 
 
+def clips(out):
+    """Two clips moving the same node: "Rise" to (0, 1, 0) and "Slide" to
+    (2, 0, 0), both over one second. Only one may play."""
+    a = Asset()
+    ball = a.mesh("Ball", *uv_sphere(0.5))
+    node = a.node(name="Ball", mesh=ball)
+    a.gltf["animations"] = []
+    for name, end in (("Rise", (0, 1, 0)), ("Slide", (2, 0, 0))):
+        sampler = {"input": a.accessor([0, 1], "SCALAR", minmax=True),
+                   "output": a.accessor([0, 0, 0] + list(end), "VEC3"), "interpolation": "LINEAR"}
+        a.gltf["animations"].append({"name": name, "samplers": [sampler],
+                                     "channels": [{"sampler": 0, "target": {"node": node, "path": "translation"}}]})
+    a.write_all(out, "clips")
+
+
+def compressed(out):
+    """Draco- and meshopt-compressed assets, as far as Orb sees them: the
+    accessors have no bufferView (Draco) or the buffer views point into a
+    compressed stream, and the extension is required."""
+    d = Asset()
+    d.blob += bytes(16)  # stands for the Draco bit stream
+    d.gltf["bufferViews"].append({"buffer": 0, "byteOffset": 0, "byteLength": 16})
+    d.gltf["accessors"] = [{"componentType": FLOAT, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                           {"componentType": USHORT, "count": 3, "type": "SCALAR"}]
+    d.gltf["meshes"].append({"name": "Squashed", "primitives": [{
+        "attributes": {"POSITION": 0}, "indices": 1,
+        "extensions": {"KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}}}]})
+    d.node(name="Squashed", mesh=0)
+    d.extension_used("KHR_draco_mesh_compression")
+    d.gltf["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    d.write_gltf(out, "draco")
+    d.write_glb(out, "draco")
+
+    m = Asset()
+    m.blob += bytes(16)
+    m.gltf["buffers"] = [{"byteLength": 16}, {"byteLength": 36, "extensions": {"EXT_meshopt_compression": {"fallback": True}}}]
+    m.gltf["bufferViews"].append({"buffer": 1, "byteOffset": 0, "byteLength": 36, "byteStride": 12,
+                                  "extensions": {"EXT_meshopt_compression": {
+                                      "buffer": 0, "byteOffset": 0, "byteLength": 16, "byteStride": 12,
+                                      "mode": "ATTRIBUTES", "count": 3}}})
+    m.gltf["accessors"] = [{"bufferView": 0, "componentType": FLOAT, "count": 3, "type": "VEC3",
+                            "min": [0, 0, 0], "max": [1, 1, 0]}]
+    m.gltf["meshes"].append({"name": "Packed", "primitives": [{"attributes": {"POSITION": 0}}]})
+    m.node(name="Packed", mesh=0)
+    m.extension_used("KHR_mesh_quantization")
+    m.extension_used("EXT_meshopt_compression")
+    m.gltf["extensionsRequired"] = ["KHR_mesh_quantization", "EXT_meshopt_compression"]
+    m.write_glb(out, "meshopt")
+
+
 def implicit_shapes(out):
     a = Asset()
     a.extension_used("KHR_implicit_shapes")
@@ -388,8 +538,8 @@ def sandbox(out):
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
-    for make in (nested, instanced, points, non_sphere, materials, cameras, lights, animation, implicit_shapes,
-                 non_uniform, scenes, sandbox):
+    for make in (nested, instanced, points, parts, non_sphere, materials, ignored, cameras, lights, animation, clips,
+                 compressed, implicit_shapes, non_uniform, scenes, sandbox):
         make(out)
     with open(os.path.join(out, "stamp"), "w") as f:
         f.write("ok\n")

@@ -15,6 +15,11 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
                    "none: an automatic camera framing the scene from +z)")
         ->option_text("N|NAME")
         ->group(group);
+    app.add_option("--animation", options.animation,
+                   "glTF animation (clip) to import, by index or name (default: the first; the others are named in a "
+                   "warning)")
+        ->option_text("N|NAME")
+        ->group(group);
     app.add_option("--sphere-tolerance", options.sphere_tolerance,
                    "A mesh is a sphere when all its vertices lie within this fraction of the radius of one sphere "
                    "(default 0.001)")
@@ -46,6 +51,15 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
     app.add_flag("--directional-lights", options.directional_lights,
                  "Turn directional lights into a distant, large emissive sphere giving the same illuminance "
                  "(default: leave them out with a warning)")
+        ->group(group);
+    const std::map<std::string, LightUnits> light_units{{"photometric", LightUnits::Photometric},
+                                                        {"radiometric", LightUnits::Radiometric}};
+    app.add_option("--light-units", options.light_units,
+                   "KHR_lights_punctual intensities: photometric (cd and lux through 683 lm/W, as Blender does) or "
+                   "radiometric (1 cd = 1 W/sr, 1 lux = 1 W/m^2)")
+        ->transform(CLI::CheckedTransformer(light_units, CLI::ignore_case))
+        ->option_text("photometric|radiometric")
+        ->default_str("photometric")
         ->group(group);
 }
 

@@ -16,11 +16,18 @@ enum class NonSpherePolicy {
     Error,  // refuse the file
 };
 
+// How KHR_lights_punctual intensities become Orb radiance (docs/gltf.md, "Lights").
+enum class LightUnits {
+    Photometric,  // candela and lux through 683 lm/W, as Blender's glTF importer does
+    Radiometric,  // 1 cd taken as 1 W/sr and 1 lux as 1 W/m^2 (Orb before issue 10)
+};
+
 struct GltfImportOptions {
     bool strict = false;  // warnings that lose information become errors
 
     std::string scene;   // glTF scene index or name; empty: the default scene (or scene 0)
     std::string camera;  // glTF camera index, camera name or node name; empty: the first camera found
+    std::string animation;  // glTF animation (clip) index or name; empty: the first clip
 
     // A mesh is a sphere when every vertex lies within this fraction of the
     // fitted radius from the fitted sphere.
@@ -34,6 +41,7 @@ struct GltfImportOptions {
     double light_radius = 0.0;
     // Directional lights become a distant large emitter (else: a warning).
     bool directional_lights = false;
+    LightUnits light_units = LightUnits::Photometric;
 };
 
 struct GltfImportResult {
