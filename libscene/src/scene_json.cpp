@@ -151,7 +151,16 @@ std::string locate_overflowing_number(std::string_view text) {
 }
 
 std::string fmt(double d) { return detail::format_number(d); }
-std::string fmt(const Vec3& v) { return "[" + fmt(v[0]) + ", " + fmt(v[1]) + ", " + fmt(v[2]) + "]"; }
+std::string fmt(const Vec3& v) {
+    std::string text("[");  // appended, not "[" + string: GCC 12 warns falsely (-Wrestrict) on that form
+    text += fmt(v[0]);
+    text += ", ";
+    text += fmt(v[1]);
+    text += ", ";
+    text += fmt(v[2]);
+    text += "]";
+    return text;
+}
 
 void check(bool ok, const std::string& source, const std::string& path, const std::string& message) {
     if (!ok) throw InputError(source + ": " + path + ": " + message);
