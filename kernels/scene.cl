@@ -6,6 +6,12 @@
 #define ORB_SCENE_SPACE __constant
 #endif
 #define SCENE_MEM ORB_SCENE_SPACE
+// 1 when every light has the same power (one light, say): the host then
+// builds the program to pick lights uniformly, which is what the alias table
+// would do, without reading it.
+#ifndef ORB_UNIFORM_LIGHTS
+#define ORB_UNIFORM_LIGHTS 0
+#endif
 
 // One pointer per scene table of render_pass's argument list, plus the
 // tables' lengths; generated from the list so that a new table needs no edit here.

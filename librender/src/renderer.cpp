@@ -90,6 +90,9 @@ Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
         std::string options = std::string("-cl-std=CL1.2 -cl-mad-enable -cl-unsafe-math-optimizations") +
                               " -DORB_SCENE_SPACE=" + (constant_scene ? "__constant" : "__global") +
                               (info.is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
+                              // A scene without a tree gets a program without traversal code.
+                              (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
+                              (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
                               nvidia_register_cap(device);
         if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
         program = build_program(context, device, program_source(config.kernel_dir), options,

@@ -136,6 +136,7 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh)
             light.alias_threshold = pick.slots[k].threshold;
             light.alias = static_cast<int>(pick.slots[k].alias);
             tables.spheres[static_cast<std::size_t>(light.sphere)].light_probability = light.probability;
+            layout.uniform_lights = layout.uniform_lights && power[k] == power[0];
         }
     }
     layout.counts.packet_count = static_cast<int>(packet_count);

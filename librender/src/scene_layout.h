@@ -24,6 +24,7 @@ struct SceneTables {
 struct SceneLayout {
     SceneTables tables;
     device::SceneCounts counts{};
+    bool uniform_lights = true;  // every light has the same picking probability (so uniform picking is exact)
 };
 
 // The device tables in BVH order: the spheres outside the tree first (every
