@@ -46,32 +46,9 @@ inline void best_init(BestHit* best)
     best->id = (int4)(-1);
 }
 
-inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self)
-{
-    const float4 ocx = (float4)(o.x) - packet->centre_x;
-    const float4 ocy = (float4)(o.y) - packet->centre_y;
-    const float4 ocz = (float4)(o.z) - packet->centre_z;
-    const float4 radius2 = packet->radius2;
-    const float4 b = ocx * d.x + ocy * d.y + ocz * d.z;
-    const float4 fx = ocx - b * d.x;
-    const float4 fy = ocy - b * d.y;
-    const float4 fz = ocz - b * d.z;
-    const float4 disc = radius2 - (fx * fx + fy * fy + fz * fz);
-    const float4 s = sqrt(fmax(disc, (float4)(0.0f)));
-    const float4 t_near = -b - s;
-    const float4 t_far = -b + s;
-    const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
-    const int4 is_self = id == (int4)(self);
-    const float4 t = select(t_near, t_far, is_self | (t_near <= (float4)(0.0f)));
-    const int4 valid = (disc >= (float4)(0.0f)) & (t > (float4)(0.0f)) & (t < best->t) &
-                       ~(is_self & (b >= (float4)(0.0f)));
-    best->t = select(best->t, t, valid);
-    best->id = select(best->id, id, valid);
-}
-
-// Whether a sphere of the packet other than `light` is hit before t_max.
-inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self, int light,
-                          float t_max)
+// The four lanes' hit distances along the ray (the near root, or the far one
+// from inside or for `self`), and in *hits which lanes are hit at all.
+inline float4 packet_roots(SCENE_MEM const SpherePacket* packet, int4 id, float3 o, float3 d, int self, int4* hits)
 {
     const float4 ocx = (float4)(o.x) - packet->centre_x;
     const float4 ocy = (float4)(o.y) - packet->centre_y;
@@ -83,12 +60,30 @@ inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, fl
     const float4 disc = packet->radius2 - (fx * fx + fy * fy + fz * fz);
     const float4 s = sqrt(fmax(disc, (float4)(0.0f)));
     const float4 t_near = -b - s;
-    const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
     const int4 is_self = id == (int4)(self);
     const float4 t = select(t_near, -b + s, is_self | (t_near <= (float4)(0.0f)));
-    const int4 blocks = (disc >= (float4)(0.0f)) & (t > (float4)(0.0f)) & (t < (float4)(t_max)) &
-                        ~(is_self & (b >= (float4)(0.0f))) & (id != (int4)(light));
-    return any(blocks);
+    *hits = (disc >= (float4)(0.0f)) & (t > (float4)(0.0f)) & ~(is_self & (b >= (float4)(0.0f)));
+    return t;
+}
+
+inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self)
+{
+    const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
+    int4 hits;
+    const float4 t = packet_roots(packet, id, o, d, self, &hits);
+    const int4 valid = hits & (t < best->t);
+    best->t = select(best->t, t, valid);
+    best->id = select(best->id, id, valid);
+}
+
+// Whether a sphere of the packet other than `light` is hit before t_max.
+inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self, int light,
+                          float t_max)
+{
+    const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
+    int4 hits;
+    const float4 t = packet_roots(packet, id, o, d, self, &hits);
+    return any(hits & (t < (float4)(t_max)) & (id != (int4)(light)));
 }
 
 inline float best_distance(const BestHit* best)

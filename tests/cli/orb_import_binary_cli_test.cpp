@@ -14,6 +14,7 @@
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
+#include "import_cli_fixture.h"
 #include "run_process.h"
 
 namespace orb {
@@ -31,28 +32,7 @@ std::string slurp(const fs::path& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-class OrbImportBinaryCli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        std::string dir = (fs::temp_directory_path() / "orb-import-binary-XXXXXX").string();
-        ASSERT_NE(mkdtemp(dir.data()), nullptr);
-        dir_ = dir;
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    ProcessResult run(const std::vector<std::string>& args, const std::string& stdin_bytes = "") {
-        return test::run_process(ORB_IMPORT_EXE, args, stdin_bytes, dir_.string());
-    }
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-    fs::path dir_;
-};
+class OrbImportBinaryCli : public test::ImportCliFixture {};
 
 TEST_F(OrbImportBinaryCli, ScnToBinaryToJsonIsExact) {
     ASSERT_EQ(run({kCornellPath, "-o", "cornell.orb"}).exit_code, 0);

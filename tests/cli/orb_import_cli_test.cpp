@@ -12,6 +12,7 @@
 
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
+#include "import_cli_fixture.h"
 #include "run_process.h"
 
 namespace orb {
@@ -35,35 +36,7 @@ constexpr const char* kGlassWithIor133 = R"({ "format": "orb-scene", "version": 
   "materials": [ { "name": "water", "type": "dielectric", "color": [1, 1, 1], "ior": 1.33 } ],
   "spheres": [ { "name": "drop", "center": [0, 1, 0], "radius": 1, "material": "water" } ] })";
 
-class OrbImportCli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        std::string dir = (fs::temp_directory_path() / "orb-import-cli-XXXXXX").string();
-        ASSERT_NE(mkdtemp(dir.data()), nullptr);
-        dir_ = dir;
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-
-    ProcessResult run(const std::vector<std::string>& args, const std::string& stdin_bytes = "") {
-        return test::run_process(ORB_IMPORT_EXE, args, stdin_bytes, dir_.string());
-    }
-    fs::path write(const std::string& name, const std::string& bytes) {
-        std::ofstream(dir_ / name, std::ios::binary) << bytes;
-        return dir_ / name;
-    }
-    // Everything in the scratch folder, hidden temporaries included.
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-    fs::path dir_;
-};
+class OrbImportCli : public test::ImportCliFixture {};
 
 TEST_F(OrbImportCli, ScnFileToOrbJsonOnStdout) {
     const ProcessResult r = run({kCornellPath});

@@ -13,6 +13,7 @@
 
 #include "orb/scene/ply.h"
 #include "orb/scene/scene_json.h"
+#include "import_cli_fixture.h"
 #include "run_process.h"
 
 namespace orb {
@@ -28,29 +29,7 @@ const std::string kCloud =
     "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\nproperty list uchar int "
     "vertex_indices\nend_header\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 255 0 0\n3 0 1 2\n";
 
-class OrbImportPlyCli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        std::string dir = (fs::temp_directory_path() / "orb-import-ply-XXXXXX").string();
-        ASSERT_NE(mkdtemp(dir.data()), nullptr);
-        dir_ = dir;
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    ProcessResult run(const std::vector<std::string>& args, const std::string& stdin_bytes = "") {
-        return test::run_process(ORB_IMPORT_EXE, args, stdin_bytes, dir_.string());
-    }
-    void write(const std::string& name, const std::string& bytes) { std::ofstream(dir_ / name, std::ios::binary) << bytes; }
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-    fs::path dir_;
-};
+class OrbImportPlyCli : public test::ImportCliFixture {};
 
 TEST_F(OrbImportPlyCli, PlyFileToOrbJson) {
     write("cloud.ply", kCloud);
