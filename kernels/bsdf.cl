@@ -4,6 +4,7 @@ typedef struct {
     float3 dir;     // sampled incident direction (unit), pointing away from the surface
     float3 weight;  // f * |cos| / pdf (the throughput factor)
     float pdf;      // solid-angle pdf; 0 for the delta (specular) lobes
+    float eta2;     // the (n_i / n_t)^2 radiance factor inside `weight` (refraction), else 1
 } BsdfSample;
 
 // Exact Fresnel reflectance of a smooth dielectric for unpolarised light.
@@ -28,6 +29,7 @@ inline float fresnel_dielectric(float cos_i, float eta, float* cos_t)
 inline BsdfSample sample_bsdf(const ShadingSphere* m, float3 d, float3 n, bool entering, float u, float v, float w)
 {
     BsdfSample s;
+    s.eta2 = 1.0f;
     if (m->kind == MaterialKind_Diffuse) {
         float cos_theta;
         s.dir = sample_cosine_hemisphere(n, u, v, &cos_theta);
@@ -50,6 +52,7 @@ inline BsdfSample sample_bsdf(const ShadingSphere* m, float3 d, float3 n, bool e
     s.dir = normalize(eta * d + (eta * cos_i - cos_t) * n);
     // L / n^2 is invariant across the interface, so radiance arriving from the
     // transmitted side is scaled by (n_i / n_t)^2 = eta^2 on the camera side.
-    s.weight = m->color * (eta * eta);
+    s.eta2 = eta * eta;
+    s.weight = m->color * s.eta2;
     return s;
 }
