@@ -32,6 +32,24 @@ typedef struct {
 
 inline float packet_lane(SCENE_MEM const float4* v, int lane) { return ((SCENE_MEM const float*)v)[lane]; }
 
+// Distance along the ray to lane `lane` of a packet (sphere slot `id`), by
+// the rules above, or ORB_NO_HIT when the ray misses it (padding lanes too).
+inline float lane_distance(SCENE_MEM const SpherePacket* packet, int lane, int id, float3 o, float3 d, int self)
+{
+    const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
+                                   packet_lane(&packet->centre_z, lane));
+    const float b = dot(oc, d);
+    const float3 f = oc - b * d;
+    const float disc = packet_lane(&packet->radius2, lane) - dot(f, f);
+    if (disc < 0.0f) return ORB_NO_HIT;
+    const float s = sqrt(disc);
+    const bool is_self = id == self;
+    if (is_self && b >= 0.0f) return ORB_NO_HIT;
+    const float t_near = -b - s;
+    const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
+    return t > 0.0f ? t : ORB_NO_HIT;
+}
+
 #ifndef ORB_INTERSECT_SCALAR
 // Four spheres per step in SIMD lanes: CPUs execute the float4 arithmetic as
 // one vector instruction each.
@@ -117,23 +135,11 @@ inline void best_init(BestHit* best)
 inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self)
 {
     for (int lane = 0; lane < 4; ++lane) {
-        const float radius2 = packet_lane(&packet->radius2, lane);
-        if (radius2 < 0.0f) break;  // padding lanes come last
-        const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
-                                       packet_lane(&packet->centre_z, lane));
-        const float b = dot(oc, d);
-        const float3 f = oc - b * d;
-        const float disc = radius2 - dot(f, f);
-        if (disc < 0.0f) continue;
-        const float s = sqrt(disc);
-        const float t_near = -b - s;
-        const int id = first_id + lane;
-        const bool is_self = id == self;
-        if (is_self && b >= 0.0f) continue;
-        const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
-        if (t > 0.0f && t < best->t) {
+        if (packet_lane(&packet->radius2, lane) < 0.0f) break;  // padding lanes come last
+        const float t = lane_distance(packet, lane, first_id + lane, o, d, self);
+        if (t < best->t) {
             best->t = t;
-            best->id = id;
+            best->id = first_id + lane;
         }
     }
 }
@@ -142,22 +148,8 @@ inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, fl
                           float t_max)
 {
     for (int lane = 0; lane < 4; ++lane) {
-        const float radius2 = packet_lane(&packet->radius2, lane);
-        if (radius2 < 0.0f) break;  // padding lanes come last
-        const int id = first_id + lane;
-        if (id == light) continue;
-        const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
-                                       packet_lane(&packet->centre_z, lane));
-        const float b = dot(oc, d);
-        const float3 f = oc - b * d;
-        const float disc = radius2 - dot(f, f);
-        if (disc < 0.0f) continue;
-        const float s = sqrt(disc);
-        const float t_near = -b - s;
-        const bool is_self = id == self;
-        if (is_self && b >= 0.0f) continue;
-        const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
-        if (t > 0.0f && t < t_max) return true;
+        if (packet_lane(&packet->radius2, lane) < 0.0f) break;  // padding lanes come last
+        if (first_id + lane != light && lane_distance(packet, lane, first_id + lane, o, d, self) < t_max) return true;
     }
     return false;
 }
@@ -239,20 +231,7 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 // ORB_NO_HIT when the ray misses it.
 inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d, int self)
 {
-    SCENE_MEM const SpherePacket* packet = &scene->packets[id >> 2];
-    const int lane = id & 3;
-    const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
-                                   packet_lane(&packet->centre_z, lane));
-    const float b = dot(oc, d);
-    const float3 f = oc - b * d;
-    const float disc = packet_lane(&packet->radius2, lane) - dot(f, f);
-    if (disc < 0.0f) return ORB_NO_HIT;
-    const float s = sqrt(disc);
-    const bool is_self = id == self;
-    if (is_self && b >= 0.0f) return ORB_NO_HIT;
-    const float t_near = -b - s;
-    const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
-    return t > 0.0f ? t : ORB_NO_HIT;
+    return lane_distance(&scene->packets[id >> 2], id & 3, id, o, d, self);
 }
 
 // Shadow rays: whether sphere `light` is the first thing along the ray. Any
