@@ -249,7 +249,6 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     if (t_light >= ORB_NO_HIT) return false;
     for (int p = 0; p < scene->outside_packet_count; ++p)
         if (packet_blocks(&scene->packets[p], 4 * p, o, d, self, light, t_light)) return false;
-    if (scene->bvh_node_count == 0) return true;
     const float3 inv_d = safe_inverse(d);
     uint stack[ORB_BVH_STACK];
     int top = 0;

@@ -62,7 +62,7 @@ struct FloatBox {
             hi[a] = std::max(hi[a], c);
         }
     }
-    struct Box widened() const;
+    double extent(int axis) const { return double(hi[axis]) - lo[axis]; }
     double area() const {
         if (lo[0] > hi[0]) return 0.0;
         const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
@@ -70,6 +70,7 @@ struct FloatBox {
     }
 };
 
+// A sphere's box (and the scene's) before rounding to float.
 struct Box {
     std::array<double, 3> lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                              std::numeric_limits<double>::infinity()};
@@ -82,18 +83,6 @@ struct Box {
             hi[a] = std::max(hi[a], b.hi[a]);
         }
     }
-    void grow(const Prim& p) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], static_cast<double>(p.lo[a]));
-            hi[a] = std::max(hi[a], static_cast<double>(p.hi[a]));
-        }
-    }
-    void grow_point(const std::array<double, 3>& p) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], p[a]);
-            hi[a] = std::max(hi[a], p[a]);
-        }
-    }
     bool empty() const { return lo[0] > hi[0]; }
     double area() const {
         if (empty()) return 0.0;
@@ -102,16 +91,6 @@ struct Box {
     }
 };
 
-
-
-Box FloatBox::widened() const {
-    Box b;
-    for (int a = 0; a < 3; ++a) {
-        b.lo[a] = lo[a];
-        b.hi[a] = hi[a];
-    }
-    return b;
-}
 
 // The sphere's box, widened so that it also holds the sphere as the device
 // stores it (float centre, float radius squared: each off by a float ulp or
@@ -133,14 +112,11 @@ Box sphere_box(const Sphere& s) {
 constexpr int kMaxDepth = 40;
 constexpr std::size_t kParallelMinimum = 4096;  // smaller subtrees are not worth a thread
 constexpr int kMaxBins = 64;
-// A leaf of up to four spheres is one packet test (one vector instruction per
-// float4 on CPUs): as cheap as a leaf of one, so small nodes always stop.
-constexpr bool kLeafIsOnePacket = true;
 
 struct Builder;
 
 struct BuildNode {
-    Box box;
+    FloatBox box;  // the prims' boxes are float already, so their union is exact
     std::uint32_t begin = 0, end = 0;  // range in the shared prim array (leaves)
     std::int32_t left = -1, right = -1;  // children in the same builder, or
     const Builder* left_builder = nullptr;  // a left subtree built on another thread
@@ -159,24 +135,21 @@ struct Builder {
     std::int32_t build(std::uint32_t begin, std::uint32_t end, int depth, unsigned spare_threads) {
         const auto index = static_cast<std::int32_t>(nodes.size());
         nodes.emplace_back();
-        FloatBox bounds, centre_bounds;
+        FloatBox centroids;
         for (std::uint32_t i = begin; i < end; ++i) {
-            bounds.grow(prims[i]);
-            centre_bounds.grow_point(prims[i]);
+            nodes[index].box.grow(prims[i]);
+            centroids.grow_point(prims[i]);
         }
-        const Box box = bounds.widened(), centroids = centre_bounds.widened();
-        nodes[index].box = box;
         nodes[index].begin = begin;
         nodes[index].end = end;
-        const std::uint32_t n = end - begin;
-        if (n <= 1) return index;
+        // A leaf of up to four spheres is one packet test (one vector
+        // instruction per float4 on CPUs), as cheap as a leaf of one: small
+        // nodes always stop, without searching for a split.
+        if (end - begin <= kBvhMaxLeafSize) return index;
 
-        std::uint32_t middle = split(begin, end, box, centroids, depth);
-        if (middle == begin || middle == end) {
-            if (n <= kBvhMaxLeafSize) return index;  // cheaper as a leaf
-            middle = median_split(begin, end, centroids);
-        }
-        if (spare_threads > 0 && n >= kParallelMinimum) {
+        std::uint32_t middle = split(begin, end, centroids, depth);
+        if (middle == begin || middle == end) middle = median_split(begin, end, centroids);
+        if (spare_threads > 0 && end - begin >= kParallelMinimum) {
             auto other = std::make_unique<Builder>(prims, settings);
             const unsigned left_share = spare_threads / 2, right_share = spare_threads - 1 - left_share;
             std::thread worker([&] { other->build(begin, middle, depth + 1, left_share); });
@@ -195,10 +168,9 @@ struct Builder {
     }
 
     // The SAH split of prims[begin, end): the index where the right part
-    // starts, or begin/end when a leaf is cheaper (only for small nodes) or
-    // no plane separates the centroids.
-    std::uint32_t split(std::uint32_t begin, std::uint32_t end, const Box& box, const Box& centroids, int depth) {
-        const std::uint32_t n = end - begin;
+    // starts, or begin when no plane separates the centroids or the node is
+    // past kMaxDepth (the caller then splits at the median).
+    std::uint32_t split(std::uint32_t begin, std::uint32_t end, const FloatBox& centroids, int depth) {
         if (depth >= kMaxDepth) return begin;
         const int bins = std::clamp(settings.bins, 2, kMaxBins);
         double best_cost = std::numeric_limits<double>::infinity();
@@ -208,8 +180,8 @@ struct Builder {
         std::array<std::array<std::uint32_t, kMaxBins>, 3> bin_count{};
         std::array<float, 3> lo{}, scale{};
         for (int axis = 0; axis < 3; ++axis) {
-            const double extent = centroids.hi[axis] - centroids.lo[axis];
-            lo[axis] = static_cast<float>(centroids.lo[axis]);
+            const double extent = centroids.extent(axis);
+            lo[axis] = centroids.lo[axis];
             scale[axis] = extent > 0.0 ? static_cast<float>(bins / extent) : 0.0f;
         }
         for (std::uint32_t i = begin; i < end; ++i) {
@@ -247,10 +219,6 @@ struct Builder {
             }
         }
         if (best_axis < 0) return begin;
-        // Leaf cost n (one intersection each) against one traversal step plus
-        // the children's expected intersections, as a share of this box's area.
-        const double area = box.area();
-        if (n <= kBvhMaxLeafSize && (kLeafIsOnePacket || (area > 0.0 && n <= 1.0 + best_cost / area))) return begin;
         const auto middle = std::partition(prims.begin() + begin, prims.begin() + end, [&](const Prim& p) {
             return bin_of(p.centre(best_axis), lo[best_axis], scale[best_axis], bins) < best_plane;
         });
@@ -263,10 +231,10 @@ struct Builder {
         return std::clamp(static_cast<int>((c - lo) * scale), 0, bins - 1);
     }
 
-    std::uint32_t median_split(std::uint32_t begin, std::uint32_t end, const Box& centroids) {
+    std::uint32_t median_split(std::uint32_t begin, std::uint32_t end, const FloatBox& centroids) {
         int axis = 0;
         for (int a = 1; a < 3; ++a)
-            if (centroids.hi[a] - centroids.lo[a] > centroids.hi[axis] - centroids.lo[axis]) axis = a;
+            if (centroids.extent(a) > centroids.extent(axis)) axis = a;
         const std::uint32_t middle = begin + (end - begin) / 2;
         std::nth_element(prims.begin() + begin, prims.begin() + middle, prims.begin() + end,
                          [axis](const Prim& a, const Prim& b) { return a.centre(axis) < b.centre(axis); });
@@ -282,8 +250,8 @@ struct Flattener {
         const BuildNode& node = builder.nodes[index];
         BvhNode& flat = out.nodes[slot];
         for (int a = 0; a < 3; ++a) {
-            flat.lo[a] = round_down(node.box.lo[a]);
-            flat.hi[a] = round_up(node.box.hi[a]);
+            flat.lo[a] = node.box.lo[a];
+            flat.hi[a] = node.box.hi[a];
         }
         if (node.leaf()) {
             flat.first = static_cast<std::uint32_t>(out.order.size());
