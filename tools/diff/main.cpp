@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
-#include <optional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -146,12 +146,13 @@ int run(const Settings& s) {
     std::vector<orb::cli::OutputFile> heatmap_outputs;
     std::optional<WriteOptions> heatmap_options;
     if (!s.diff_image.empty()) {
+        const std::size_t first_heatmap = outputs.size();
         for (const std::string& pass : passes)
             outputs.push_back({"--diff-image", diff_image_path(s.diff_image, pass, passes.size() > 1)});
         orb::cli::refuse_overlapping_paths(inputs, outputs);
         heatmap_options = heatmap_write_options(s.diff_image);
-        for (const std::string& pass : passes)
-            heatmap_outputs.emplace_back(diff_image_path(s.diff_image, pass, passes.size() > 1), "--diff-image");
+        for (std::size_t i = first_heatmap; i < outputs.size(); ++i)
+            heatmap_outputs.emplace_back(outputs[i].path, outputs[i].option);
     }
 
     std::vector<PassResult> results;

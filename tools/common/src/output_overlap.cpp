@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <optional>
+#include <tuple>
 
 #include "dangling_links.h"
 #include "orb/cli/tool_main.h"
@@ -22,10 +24,8 @@ struct Identity {
     ino_t inode = 0;
     std::string future_path;
 
-    bool operator==(const Identity& other) const {
-        if (exists != other.exists) return false;
-        return exists ? device == other.device && inode == other.inode : future_path == other.future_path;
-    }
+    auto key() const { return std::tie(exists, device, inode, future_path); }
+    bool operator<(const Identity& other) const { return key() < other.key(); }
 };
 
 std::optional<Identity> identity_of(const std::string& path, bool as_output) {
@@ -51,23 +51,27 @@ bool is_allowed(const std::vector<std::pair<std::string, std::string>>& allowed,
 
 void refuse_overlapping_paths(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs,
                               const std::vector<std::pair<std::string, std::string>>& allowed) {
-    std::vector<std::optional<Identity>> output_ids;
-    for (const NamedPath& out : outputs) output_ids.push_back(identity_of(out.path, true));
+    // Each path is looked at once: a sequence of thousands of frames must
+    // not cost thousands of stat() calls per frame.
+    std::multimap<Identity, const NamedPath*> input_files;  // in input order within one file
+    for (const NamedPath& in : inputs)
+        if (const std::optional<Identity> id = identity_of(in.path, false)) input_files.emplace(*id, &in);
+    std::map<Identity, const NamedPath*> earlier_outputs;
 
-    for (std::size_t o = 0; o < outputs.size(); ++o) {
-        if (!output_ids[o]) continue;
-        for (const NamedPath& in : inputs) {
-            const std::optional<Identity> input_id = identity_of(in.path, false);
-            if (!input_id || !(*input_id == *output_ids[o]) || is_allowed(allowed, in.option, outputs[o].option))
-                continue;
-            throw UsageError(outputs[o].option + " " + outputs[o].path + " is the input " + in.option + " " +
-                             in.path + " (the same file); refusing to overwrite an input");
+    for (const NamedPath& out : outputs) {
+        const std::optional<Identity> id = identity_of(out.path, true);
+        if (!id) continue;
+        const auto [first, last] = input_files.equal_range(*id);
+        for (auto it = first; it != last; ++it) {
+            const NamedPath& in = *it->second;
+            if (is_allowed(allowed, in.option, out.option)) continue;
+            throw UsageError(out.option + " " + out.path + " is the input " + in.option + " " + in.path +
+                             " (the same file); refusing to overwrite an input");
         }
-        for (std::size_t other = 0; other < o; ++other) {
-            if (output_ids[other] && *output_ids[other] == *output_ids[o])
-                throw UsageError(outputs[other].option + " " + outputs[other].path + " and " + outputs[o].option +
-                                 " " + outputs[o].path + " are the same file; give each output its own name");
-        }
+        const auto [earlier, is_new] = earlier_outputs.emplace(*id, &out);
+        if (!is_new)
+            throw UsageError(earlier->second->option + " " + earlier->second->path + " and " + out.option + " " +
+                             out.path + " are the same file; give each output its own name");
     }
 }
 
