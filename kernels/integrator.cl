@@ -7,8 +7,17 @@
 // still traced, for the emission it may hit (the BSDF half of the MIS pair at
 // that vertex), but it scatters no further.
 
-// Russian roulette applies from this scattering event on.
+// Russian roulette applies from this scattering event on (a build option
+// for experiments: -DRR_START_EVENT=N).
+#ifndef RR_START_EVENT
 #define RR_START_EVENT 2
+#endif
+// A path whose throughput (refraction's scaling divided out) is at least
+// this survives the roulette for sure; below it, it survives with
+// probability throughput / RR_THRESHOLD.
+#ifndef RR_THRESHOLD
+#define RR_THRESHOLD 1.0f
+#endif
 
 typedef struct {
     float3 emission;  // paths with no diffuse vertex (emitters seen directly or through specular chains)
@@ -165,7 +174,7 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
         // scaling of refraction is divided out of q (as pbrt-v4's etaScale):
         // inside glass beta carries (1/1.5)^2, which is no loss of energy, and
         // paths there would otherwise die 2.25 times too often.
-        const float q = fmin(1.0f, beta_max / eta2);
+        const float q = fmin(1.0f, beta_max / (eta2 * RR_THRESHOLD));
         if (r.u4 >= q) return false;
         beta *= 1.0f / q;
     }

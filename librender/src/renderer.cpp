@@ -93,6 +93,7 @@ Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
                               // A scene without a tree gets a program without traversal code.
                               (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
                               (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
+                              (config.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
                               nvidia_register_cap(device);
         if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
         program = build_program(context, device, program_source(config.kernel_dir), options,

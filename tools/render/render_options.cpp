@@ -91,6 +91,9 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_option("--seed", o.seed, "Random seed, 0 ... 2^64-1 (default 0)")->check(kSeed);
     app.add_option("--mode", o.mode, "Light transport: global (path tracing) or direct")
         ->check(CLI::IsMember({"global", "direct"}));
+    app.add_option("--sampler", o.sampler,
+                   "Random numbers: sobol (low discrepancy, default) or independent")
+        ->check(CLI::IsMember({"sobol", "independent"}));
     app.add_option("--max-depth", o.max_depth, "Maximum path depth (default: the scene's render.max_depth)")
         ->check(CLI::Range(0, 1024));
     app.add_option("--width", o.width, "Image width (default: the scene's render.width)")->check(CLI::Range(1, 65536));

@@ -21,6 +21,7 @@ struct RenderOptions {
     std::string resume;
     std::optional<std::uint64_t> seed;
     std::optional<std::string> mode;
+    std::optional<std::string> sampler;
     std::optional<int> max_depth;
     std::optional<int> width;
     std::optional<int> height;

@@ -24,6 +24,14 @@ render::IntegratorMode parse_mode(const std::string& name) {
     return name == "direct" ? render::IntegratorMode::Direct : render::IntegratorMode::Global;
 }
 
+const char* sampler_name(render::SamplerKind sampler) {
+    return sampler == render::SamplerKind::Independent ? "independent" : "sobol";
+}
+
+render::SamplerKind parse_sampler(const std::string& name) {
+    return name == "independent" ? render::SamplerKind::Independent : render::SamplerKind::Sobol;
+}
+
 Scene import_from(const std::string& path, std::string& label) {
     label = cli::is_stdio(path) ? "<stdin>" : path;
     const std::string bytes = cli::read_input(path);
@@ -76,11 +84,13 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     require_same(o.height, file.film.height, "--height", "height", path);
     require_same(o.seed, m.seed, "--seed", "orb:seed", path);
     require_same(o.mode, m.mode, "--mode", "orb:mode", path);
+    require_same(o.sampler, m.sampler, "--sampler", "orb:sampler", path);
     require_same(o.max_depth, m.max_depth, "--max-depth", "orb:maxDepth", path);
     plan.config.width = file.film.width;
     plan.config.height = file.film.height;
     plan.config.seed = m.seed;
     plan.config.mode = parse_mode(m.mode);
+    plan.config.sampler = parse_sampler(m.sampler);
     plan.config.max_depth = m.max_depth;
 
     plan.target_spp = o.spp ? *o.spp : m.target_spp;
@@ -114,6 +124,7 @@ RenderPlan make_render_plan(const RenderOptions& o) {
     plan.config.height = o.height.value_or(plan.scene.render.height);
     plan.config.seed = o.seed.value_or(0);
     plan.config.mode = parse_mode(o.mode.value_or("global"));
+    plan.config.sampler = parse_sampler(o.sampler.value_or("sobol"));
     plan.config.max_depth = o.max_depth.value_or(plan.scene.render.max_depth);
     plan.target_spp = o.spp ? *o.spp : static_cast<std::uint64_t>(plan.scene.render.spp);
     plan.passes = o.passes ? exr::parse_passes(*o.passes) : exr::all_passes();
@@ -126,6 +137,7 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.seed = plan.config.seed;
     m.max_depth = plan.config.max_depth;
     m.mode = mode_name(plan.config.mode);
+    m.sampler = sampler_name(plan.config.sampler);
     m.scene_file = plan.scene_label;
     m.scene_hash = plan.scene_hash;
     m.scene_time = plan.scene_time;

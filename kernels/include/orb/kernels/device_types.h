@@ -71,6 +71,14 @@ ORB_ENUM(IntegratorMode){
     ORB_ENUMERATOR(IntegratorMode, Direct, 1),  /* the paper's local illumination */
 };
 
+/* Where a path's random numbers come from (kernels/sampler.cl); the host
+ * builds the program with -DORB_SAMPLER_SOBOL=(this == Sobol), and
+ * orb-render's --sampler and the EXR's orb:sampler name it. */
+ORB_ENUM(SamplerKind){
+    ORB_ENUMERATOR(SamplerKind, Independent, 0), /* Philox: fresh numbers for every sample */
+    ORB_ENUMERATOR(SamplerKind, Sobol, 1),       /* Owen-scrambled Sobol for the first bounces */
+};
+
 /* ---- Scene tables: read-only buffers, __constant or __global ---- */
 
 /* Four spheres in structure-of-arrays form, for the intersection loop: CPUs
