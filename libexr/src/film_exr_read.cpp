@@ -31,6 +31,12 @@ constexpr long long kMaxPixels = 1LL << 28;
     throw InputError(path + ": " + message);
 }
 
+std::string format_names(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ",") + name;
+    return text;
+}
+
 template <typename Attribute>
 const Attribute& required(const Imf::Header& header, const char* name, const std::string& path) {
     const Attribute* attribute = header.findTypedAttribute<Attribute>(name);
@@ -164,8 +170,16 @@ void require_resumable(const ExrFilm& file, const std::vector<Pass>& wanted, con
         if (!contains(file.passes, pass))
             fail(path, std::string("has no ") + pass_name(pass) + " pass to continue (it holds " +
                            format_passes(file.passes) + ")");
-    if (contains(wanted, Pass::Variance) && !contains(file.passes, Pass::Beauty))
-        fail(path, "the variance pass cannot be continued without the beauty pass (R,G,B) in the same file");
+    // A variance is continued from its sum of squares, which needs the mean it is the variance of.
+    for (Pass pass : wanted)
+        for (const film::ChannelInfo* channel : pass_film_channels(pass)) {
+            if (channel->stored_as != film::StoredAs::VarianceOfMean) continue;
+            const Pass needed = film::info(channel->paired).layer;
+            if (!contains(file.passes, needed))
+                fail(path, std::string("the ") + pass_name(pass) + " pass cannot be continued without the " +
+                               pass_name(needed) + " pass (" + format_names(pass_channels(needed)) +
+                               ") in the same file");
+        }
 }
 
 }  // namespace orb::exr
