@@ -1,5 +1,5 @@
 // Ray-sphere intersection: the spheres outside the BVH (huge ones, or all of
-// a small scene) in a linear loop over packets of four, then the BVH
+// a small scene) in a linear loop over packets of four, then the 4-wide BVH
 // (librender/src/sphere_bvh.h), whose leaves are one packet each.
 //
 // Robustness without epsilons:
@@ -22,8 +22,6 @@
 #ifndef ORB_BVH
 #define ORB_BVH 1
 #endif
-// No root-to-leaf path of the BVH is longer (kBvhMaxDepth, sphere_bvh.h).
-#define ORB_BVH_STACK 64
 
 typedef struct {
     float t;  // distance along the (unit) ray direction
@@ -159,17 +157,6 @@ inline float best_distance(const BestHit* best) { return best->t; }
 inline Hit best_hit(const BestHit* best) { return *best; }
 #endif
 
-// Where the ray enters the box, or ORB_NO_HIT if it misses it before t_max.
-inline float box_entry(SCENE_MEM const BvhNodeRecord* node, float3 o, float3 inv_d, float t_max)
-{
-    const float3 t0 = (node->lo_first.xyz - o) * inv_d;
-    const float3 t1 = (node->hi_count.xyz - o) * inv_d;
-    const float3 near = fmin(t0, t1), far = fmax(t0, t1);
-    const float enter = fmax(fmax(near.x, near.y), fmax(near.z, 0.0f));
-    const float leave = fmin(fmin(far.x, far.y), fmin(far.z, t_max));
-    return enter <= leave ? enter : ORB_NO_HIT;
-}
-
 inline float3 safe_inverse(float3 d)
 {
     // Direction components of (almost) zero get a huge finite inverse, so no
@@ -177,42 +164,111 @@ inline float3 safe_inverse(float3 d)
     return (float3)(1.0f) / select(d, copysign((float3)(1e-20f), d), isless(fabs(d), (float3)(1e-20f)));
 }
 
-// Closest hit along the ray, ordered front to back: the nearer child first,
-// the farther one on the stack with its entry distance, dropped when a hit
-// closer than that entry has been found by then.
+// A ray as the box tests read it: per axis, which of a node's planes
+// (BvhNodeRecord::bounds) it enters by, lo for a positive direction, hi for
+// a negative one, and leaves by. For a box with lo <= hi this gives what
+// min/max of the two slab distances would; an inverted box (an empty lane)
+// is entered after it is left, so no ray ever hits it.
+typedef struct {
+    float3 o;
+    float3 inv_d;
+    int enter_x, enter_y, enter_z;
+} BoxRay;
+
+inline BoxRay box_ray(float3 o, float3 d)
+{
+    BoxRay ray;
+    ray.o = o;
+    ray.inv_d = safe_inverse(d);
+    ray.enter_x = ray.inv_d.x < 0.0f ? 3 : 0;
+    ray.enter_y = ray.inv_d.y < 0.0f ? 4 : 1;
+    ray.enter_z = ray.inv_d.z < 0.0f ? 5 : 2;
+    return ray;
+}
+
+// The four children's boxes against the ray up to t_max: where the ray
+// enters each (*entry), and which it hits (-1 lanes).
+inline int4 child_boxes(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, float t_max, float4* entry)
+{
+    SCENE_MEM const float4* b = node->bounds;
+    const float4 enter_x = (b[ray->enter_x] - (float4)(ray->o.x)) * ray->inv_d.x;
+    const float4 enter_y = (b[ray->enter_y] - (float4)(ray->o.y)) * ray->inv_d.y;
+    const float4 enter_z = (b[ray->enter_z] - (float4)(ray->o.z)) * ray->inv_d.z;
+    const float4 leave_x = (b[3 - ray->enter_x] - (float4)(ray->o.x)) * ray->inv_d.x;
+    const float4 leave_y = (b[5 - ray->enter_y] - (float4)(ray->o.y)) * ray->inv_d.y;
+    const float4 leave_z = (b[7 - ray->enter_z] - (float4)(ray->o.z)) * ray->inv_d.z;
+    const float4 enter = fmax(fmax(enter_x, enter_y), fmax(enter_z, (float4)(0.0f)));
+    const float4 leave = fmin(fmin(leave_x, leave_y), fmin(leave_z, (float4)(t_max)));
+    *entry = enter;
+    return enter <= leave;
+}
+
+// Orders two (entry, child) pairs so that the nearer comes first.
+inline void order_pair(float* e0, int* c0, float* e1, int* c1)
+{
+    const bool swap = *e1 < *e0;
+    const float e = *e0;
+    const int c = *c0;
+    *e0 = swap ? *e1 : *e0;
+    *c0 = swap ? *c1 : *c0;
+    *e1 = swap ? e : *e1;
+    *c1 = swap ? c : *c1;
+}
+
+// Closest hit along the ray, ordered front to back: of a node's children
+// the ray hits, the nearest is visited next and the others are pushed with
+// their entry distances, nearest on top; a popped child whose entry lies
+// beyond the closest hit found by then is dropped. `current` is a node
+// (>= 0) or a leaf (< 0, its packet -1 - current), as in BvhNodeRecord::child.
 inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
 {
-    const float3 inv_d = safe_inverse(d);
-    uint stack_node[ORB_BVH_STACK];
-    float stack_entry[ORB_BVH_STACK];
+    const BoxRay ray = box_ray(o, d);
+    int stack_child[ORB_BVH_STACK_SIZE];
+    float stack_entry[ORB_BVH_STACK_SIZE];
     int top = 0;
-    uint node = 0;
+    int current = 0;
     for (;;) {
-        SCENE_MEM const BvhNodeRecord* n = &scene->bvh_nodes[node];
-        const uint first = as_uint(n->lo_first.w);
-        if (as_uint(n->hi_count.w) > 0) {
-            test_packet(best, &scene->packets[first], (int)(4 * first), o, d, self);
+        if (current < 0) {
+            const int packet = -1 - current;
+            test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
         } else {
-            const float t_max = best_distance(best);
-            const float t_left = box_entry(&scene->bvh_nodes[first], o, inv_d, t_max);
-            const float t_right = box_entry(&scene->bvh_nodes[first + 1], o, inv_d, t_max);
-            if (t_left < ORB_NO_HIT && t_right < ORB_NO_HIT) {
-                const bool left_first = t_left <= t_right;
-                stack_node[top] = left_first ? first + 1 : first;
-                stack_entry[top] = left_first ? t_right : t_left;
-                ++top;
-                node = left_first ? first : first + 1;
-                continue;
-            }
-            if (t_left < ORB_NO_HIT || t_right < ORB_NO_HIT) {
-                node = t_left < ORB_NO_HIT ? first : first + 1;
+            SCENE_MEM const BvhNodeRecord* node = &scene->bvh_nodes[current];
+            float4 entry;
+            const int4 hit = child_boxes(node, &ray, best_distance(best), &entry);
+            const int count = -(hit.x + hit.y + hit.z + hit.w);
+            if (count > 0) {
+                // Missed children sort last; FLT_MAX is beyond every hit's entry (<= 1e30).
+                entry = select((float4)(FLT_MAX), entry, hit);
+                const int4 child = node->child;
+                float e0 = entry.x, e1 = entry.y, e2 = entry.z, e3 = entry.w;
+                int c0 = child.x, c1 = child.y, c2 = child.z, c3 = child.w;
+                // A sorting network of four.
+                order_pair(&e0, &c0, &e1, &c1);
+                order_pair(&e2, &c2, &e3, &c3);
+                order_pair(&e0, &c0, &e2, &c2);
+                order_pair(&e1, &c1, &e3, &c3);
+                order_pair(&e1, &c1, &e2, &c2);
+                if (count > 3) {
+                    stack_child[top] = c3;
+                    stack_entry[top++] = e3;
+                }
+                if (count > 2) {
+                    stack_child[top] = c2;
+                    stack_entry[top++] = e2;
+                }
+                if (count > 1) {
+                    stack_child[top] = c1;
+                    stack_entry[top++] = e1;
+                }
+                current = c0;
                 continue;
             }
         }
-        // Next: the nearest deferred node that can still hold a closer hit.
-        while (top > 0 && stack_entry[top - 1] >= best_distance(best)) --top;
+        // Next: the nearest deferred child that can still hold a closer hit.
+        const float t_best = best_distance(best);
+        while (top > 0 && stack_entry[top - 1] >= t_best) --top;
         if (top == 0) break;
-        node = stack_node[--top];
+        current = stack_child[--top];
     }
 }
 
@@ -249,26 +305,42 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     if (t_light >= ORB_NO_HIT) return false;
     for (int p = 0; p < scene->outside_packet_count; ++p)
         if (packet_blocks(&scene->packets[p], 4 * p, o, d, self, light, t_light)) return false;
-    const float3 inv_d = safe_inverse(d);
-    uint stack[ORB_BVH_STACK];
+    // Any-hit: every child the ray hits up to the light is visited, in no
+    // particular order; the first hit sphere other than the light ends it.
+    const BoxRay ray = box_ray(o, d);
+    int stack[ORB_BVH_STACK_SIZE];
     int top = 0;
-    uint node = 0;
+    int current = 0;
     for (;;) {
-        SCENE_MEM const BvhNodeRecord* n = &scene->bvh_nodes[node];
-        const uint first = as_uint(n->lo_first.w);
-        if (as_uint(n->hi_count.w) > 0) {
-            if (packet_blocks(&scene->packets[first], (int)(4 * first), o, d, self, light, t_light)) return false;
+        if (current < 0) {
+            const int packet = -1 - current;
+            if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) return false;
         } else {
-            const bool left = box_entry(&scene->bvh_nodes[first], o, inv_d, t_light) < ORB_NO_HIT;
-            const bool right = box_entry(&scene->bvh_nodes[first + 1], o, inv_d, t_light) < ORB_NO_HIT;
-            if (left && right) stack[top++] = first + 1;
-            if (left || right) {
-                node = left ? first : first + 1;
+            SCENE_MEM const BvhNodeRecord* node = &scene->bvh_nodes[current];
+            float4 entry;
+            const int4 hit = child_boxes(node, &ray, t_light, &entry);
+            if (any(hit)) {
+                const int4 child = node->child;
+                // The first hit child next, the others pushed.
+                int next = hit.w ? child.w : 0;
+                if (hit.z) {
+                    if (hit.w) stack[top++] = next;
+                    next = child.z;
+                }
+                if (hit.y) {
+                    if (hit.z || hit.w) stack[top++] = next;
+                    next = child.y;
+                }
+                if (hit.x) {
+                    if (hit.y || hit.z || hit.w) stack[top++] = next;
+                    next = child.x;
+                }
+                current = next;
                 continue;
             }
         }
         if (top == 0) return true;
-        node = stack[--top];
+        current = stack[--top];
     }
 #endif
 }
