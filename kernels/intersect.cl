@@ -23,6 +23,19 @@
 #define ORB_BVH 1
 #endif
 
+// Minimum and maximum of values that are never NaN here (distances from
+// finite boxes and spheres). OpenCL's fmin and fmax must return the other
+// operand of a NaN, which costs an x86 CPU a compare and a blend besides
+// each minps or maxps; a compare-select is the bare instruction. GPUs have
+// the NaN-aware instruction, so they keep fmin and fmax.
+#ifdef ORB_INTERSECT_SCALAR
+#define ORB_MIN(a, b) fmin(a, b)
+#define ORB_MAX(a, b) fmax(a, b)
+#else
+#define ORB_MIN(a, b) select(b, a, isless(a, b))
+#define ORB_MAX(a, b) select(b, a, isgreater(a, b))
+#endif
+
 typedef struct {
     float t;  // distance along the (unit) ray direction
     int id;   // sphere slot (index into the spheres table), -1 for a miss
@@ -74,7 +87,7 @@ inline float4 packet_roots(SCENE_MEM const SpherePacket* packet, int4 id, float3
     const float4 fy = ocy - b * d.y;
     const float4 fz = ocz - b * d.z;
     const float4 disc = packet->radius2 - (fx * fx + fy * fy + fz * fz);
-    const float4 s = sqrt(fmax(disc, (float4)(0.0f)));
+    const float4 s = sqrt(ORB_MAX(disc, (float4)(0.0f)));
     const float4 t_near = -b - s;
     const int4 is_self = id == (int4)(self);
     const float4 t = select(t_near, -b + s, is_self | (t_near <= (float4)(0.0f)));
@@ -104,8 +117,8 @@ inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, fl
 
 inline float best_distance(const BestHit* best)
 {
-    const float2 m2 = fmin(best->t.xy, best->t.zw);
-    return fmin(m2.x, m2.y);
+    const float2 m2 = ORB_MIN(best->t.xy, best->t.zw);
+    return ORB_MIN(m2.x, m2.y);
 }
 
 inline Hit best_hit(const BestHit* best)
@@ -197,8 +210,8 @@ inline int4 child_boxes(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, 
     const float4 leave_x = (b[3 - ray->enter_x] - (float4)(ray->o.x)) * ray->inv_d.x;
     const float4 leave_y = (b[5 - ray->enter_y] - (float4)(ray->o.y)) * ray->inv_d.y;
     const float4 leave_z = (b[7 - ray->enter_z] - (float4)(ray->o.z)) * ray->inv_d.z;
-    const float4 enter = fmax(fmax(enter_x, enter_y), fmax(enter_z, (float4)(0.0f)));
-    const float4 leave = fmin(fmin(leave_x, leave_y), fmin(leave_z, (float4)(t_max)));
+    const float4 enter = ORB_MAX(ORB_MAX(enter_x, enter_y), ORB_MAX(enter_z, (float4)(0.0f)));
+    const float4 leave = ORB_MIN(ORB_MIN(leave_x, leave_y), ORB_MIN(leave_z, (float4)(t_max)));
     *entry = enter;
     return enter <= leave;
 }
@@ -215,6 +228,42 @@ inline void order_pair(float* e0, int* c0, float* e1, int* c1)
     *c1 = swap ? c : *c1;
 }
 
+// The children of `node` whose boxes the ray enters before t_max, nearest
+// first: returns how many, and in the first that many lanes of *child and
+// *entry the children (as BvhNodeRecord::child) and their entry distances.
+inline int hit_children(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, float t_max, int4* child, float4* entry)
+{
+    float4 enter;
+    const int4 hit = child_boxes(node, ray, t_max, &enter);
+    // Missed children sort last: FLT_MAX is beyond every hit's entry (<= t_max <= 1e30).
+    enter = select((float4)(FLT_MAX), enter, hit);
+    const int4 c = node->child;
+    float e0 = enter.x, e1 = enter.y, e2 = enter.z, e3 = enter.w;
+    int c0 = c.x, c1 = c.y, c2 = c.z, c3 = c.w;
+    // A sorting network of four.
+    order_pair(&e0, &c0, &e1, &c1);
+    order_pair(&e2, &c2, &e3, &c3);
+    order_pair(&e0, &c0, &e2, &c2);
+    order_pair(&e1, &c1, &e3, &c3);
+    order_pair(&e1, &c1, &e2, &c2);
+    *child = (int4)(c0, c1, c2, c3);
+    *entry = (float4)(e0, e1, e2, e3);
+    return -(hit.x + hit.y + hit.z + hit.w);
+}
+
+// The children to defer, farthest first, of `count` sorted hit children:
+// lanes 1..count-1 reversed into the first count-1 lanes (the rest unused),
+// so that the caller may store all three without a branch per child.
+inline int4 deferred_children(int4 c, int count)
+{
+    return (int4)(count > 3 ? c.w : count > 2 ? c.z : c.y, count > 3 ? c.z : c.y, c.y, 0);
+}
+
+inline float4 deferred_entries(float4 e, int count)
+{
+    return (float4)(count > 3 ? e.w : count > 2 ? e.z : e.y, count > 3 ? e.z : e.y, e.y, 0.0f);
+}
+
 // Closest hit along the ray, ordered front to back: of a node's children
 // the ray hits, the nearest is visited next and the others are pushed with
 // their entry distances, nearest on top; a popped child whose entry lies
@@ -223,8 +272,9 @@ inline void order_pair(float* e0, int* c0, float* e1, int* c1)
 inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
 {
     const BoxRay ray = box_ray(o, d);
-    int stack_child[ORB_BVH_STACK_SIZE];
-    float stack_entry[ORB_BVH_STACK_SIZE];
+    // Two spare entries: a push writes three children whatever their count.
+    int stack_child[ORB_BVH_STACK_SIZE + 2];
+    float stack_entry[ORB_BVH_STACK_SIZE + 2];
     int top = 0;
     int current = 0;
     for (;;) {
@@ -232,35 +282,20 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
             const int packet = -1 - current;
             test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
         } else {
-            SCENE_MEM const BvhNodeRecord* node = &scene->bvh_nodes[current];
+            int4 child;
             float4 entry;
-            const int4 hit = child_boxes(node, &ray, best_distance(best), &entry);
-            const int count = -(hit.x + hit.y + hit.z + hit.w);
+            const int count = hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
             if (count > 0) {
-                // Missed children sort last; FLT_MAX is beyond every hit's entry (<= 1e30).
-                entry = select((float4)(FLT_MAX), entry, hit);
-                const int4 child = node->child;
-                float e0 = entry.x, e1 = entry.y, e2 = entry.z, e3 = entry.w;
-                int c0 = child.x, c1 = child.y, c2 = child.z, c3 = child.w;
-                // A sorting network of four.
-                order_pair(&e0, &c0, &e1, &c1);
-                order_pair(&e2, &c2, &e3, &c3);
-                order_pair(&e0, &c0, &e2, &c2);
-                order_pair(&e1, &c1, &e3, &c3);
-                order_pair(&e1, &c1, &e2, &c2);
-                if (count > 3) {
-                    stack_child[top] = c3;
-                    stack_entry[top++] = e3;
-                }
-                if (count > 2) {
-                    stack_child[top] = c2;
-                    stack_entry[top++] = e2;
-                }
-                if (count > 1) {
-                    stack_child[top] = c1;
-                    stack_entry[top++] = e1;
-                }
-                current = c0;
+                const int4 pushed = deferred_children(child, count);
+                const float4 pushed_entry = deferred_entries(entry, count);
+                stack_child[top] = pushed.x;
+                stack_child[top + 1] = pushed.y;
+                stack_child[top + 2] = pushed.z;
+                stack_entry[top] = pushed_entry.x;
+                stack_entry[top + 1] = pushed_entry.y;
+                stack_entry[top + 2] = pushed_entry.z;
+                top += count - 1;
+                current = child.x;
                 continue;
             }
         }
@@ -305,10 +340,10 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     if (t_light >= ORB_NO_HIT) return false;
     for (int p = 0; p < scene->outside_packet_count; ++p)
         if (packet_blocks(&scene->packets[p], 4 * p, o, d, self, light, t_light)) return false;
-    // Any-hit: every child the ray hits up to the light is visited, in no
-    // particular order; the first hit sphere other than the light ends it.
+    // Any-hit: every child the ray hits up to the light is visited, nearest
+    // first as it happens; the first hit sphere other than the light ends it.
     const BoxRay ray = box_ray(o, d);
-    int stack[ORB_BVH_STACK_SIZE];
+    int stack[ORB_BVH_STACK_SIZE + 2];  // two spare entries, as above
     int top = 0;
     int current = 0;
     for (;;) {
@@ -316,26 +351,16 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
             const int packet = -1 - current;
             if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) return false;
         } else {
-            SCENE_MEM const BvhNodeRecord* node = &scene->bvh_nodes[current];
+            int4 child;
             float4 entry;
-            const int4 hit = child_boxes(node, &ray, t_light, &entry);
-            if (any(hit)) {
-                const int4 child = node->child;
-                // The first hit child next, the others pushed.
-                int next = hit.w ? child.w : 0;
-                if (hit.z) {
-                    if (hit.w) stack[top++] = next;
-                    next = child.z;
-                }
-                if (hit.y) {
-                    if (hit.z || hit.w) stack[top++] = next;
-                    next = child.y;
-                }
-                if (hit.x) {
-                    if (hit.y || hit.z || hit.w) stack[top++] = next;
-                    next = child.x;
-                }
-                current = next;
+            const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
+            if (count > 0) {
+                const int4 pushed = deferred_children(child, count);
+                stack[top] = pushed.x;
+                stack[top + 1] = pushed.y;
+                stack[top + 2] = pushed.z;
+                top += count - 1;
+                current = child.x;
                 continue;
             }
         }
