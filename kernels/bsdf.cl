@@ -7,6 +7,8 @@ inline bool bsdf_has_density(const Bsdf* b)
     switch (b->kind) {
         case MaterialKind_Mirror: return mirror_has_density(b);
         case MaterialKind_Dielectric: return dielectric_has_density(b);
+        case MaterialKind_Pbr: return pbr_has_density(b);
+        case MaterialKind_Diffuse:
         default: return diffuse_has_density(b);
     }
 }
@@ -16,6 +18,8 @@ inline BsdfSample bsdf_sample(const Bsdf* b, float3 wo, float3 n, bool outside, 
     switch (b->kind) {
         case MaterialKind_Mirror: return mirror_sample(b, wo, n, outside, u, v, choice);
         case MaterialKind_Dielectric: return dielectric_sample(b, wo, n, outside, u, v, choice);
+        case MaterialKind_Pbr: return pbr_sample(b, wo, n, outside, u, v, choice);
+        case MaterialKind_Diffuse:
         default: return diffuse_sample(b, wo, n, outside, u, v, choice);
     }
 }
@@ -26,6 +30,8 @@ inline float3 bsdf_eval(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outs
     switch (b->kind) {
         case MaterialKind_Mirror: return mirror_eval(b, wo, wi, n, outside, pdf);
         case MaterialKind_Dielectric: return dielectric_eval(b, wo, wi, n, outside, pdf);
+        case MaterialKind_Pbr: return pbr_eval(b, wo, wi, n, outside, pdf);
+        case MaterialKind_Diffuse:
         default: return diffuse_eval(b, wo, wi, n, outside, pdf);
     }
 }
@@ -42,6 +48,8 @@ inline float3 bsdf_albedo(const Bsdf* b, float3 wo, float3 n)
     switch (b->kind) {
         case MaterialKind_Mirror: return mirror_albedo(b, wo, n);
         case MaterialKind_Dielectric: return dielectric_albedo(b, wo, n);
+        case MaterialKind_Pbr: return pbr_albedo(b, wo, n);
+        case MaterialKind_Diffuse:
         default: return diffuse_albedo(b, wo, n);
     }
 }

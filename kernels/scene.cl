@@ -41,8 +41,8 @@ inline Bsdf load_bsdf(SCENE_MEM const MaterialRecord* m)
     b.color = m->color.xyz;
     b.kind = m->kind;
     b.ior = m->ior;
-    b.roughness = 0.0f;
-    b.metallic = 0.0f;
+    b.roughness = m->roughness;
+    b.metallic = m->metallic;
     return b;
 }
 
