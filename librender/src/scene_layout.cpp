@@ -40,6 +40,8 @@ device::MaterialRecord material_record(const Material& material)
     record.emission = to_float4(material.emission, 0.0);
     record.ior = f(material.ior);
     record.kind = static_cast<int>(material.type);
+    record.roughness = f(material.roughness);
+    record.metallic = f(material.metallic);
     return record;
 }
 

@@ -64,12 +64,14 @@ static_assert(sizeof(int4) == 16 && alignof(int4) == 16, "OpenCL C's int4 is 16 
 
 /* ---- Enums (struct fields hold them as int) ---- */
 
-/* How a material scatters light (kernels/bsdf.cl). Also the scene model's
- * material type: libscene's orb::MaterialType is this enum. */
+/* How a material scatters light (kernels/bsdf.cl dispatches to one
+ * kernels/bsdf_NAME.cl per kind). Also the scene model's material type:
+ * libscene's orb::MaterialType is this enum. */
 ORB_ENUM(MaterialKind){
     ORB_ENUMERATOR(MaterialKind, Diffuse, 0),
     ORB_ENUMERATOR(MaterialKind, Mirror, 1),
-    ORB_ENUMERATOR(MaterialKind, Dielectric, 2),
+    ORB_ENUMERATOR(MaterialKind, Dielectric, 2), /* smooth or rough glass */
+    ORB_ENUMERATOR(MaterialKind, Pbr, 3),        /* glTF 2.0 metallic-roughness */
 };
 
 /* What the integrator estimates (docs/rendering.md); librender's public
@@ -133,11 +135,12 @@ typedef struct BvhNodeRecord {
 #define ORB_BVH_STACK_SIZE 48
 
 typedef struct MaterialRecord {
-    float4 color;    /* xyz: reflectance or tint in [0, 1]; w: 0 */
+    float4 color;    /* xyz: reflectance, base colour or tint in [0, 1]; w: 0 */
     float4 emission; /* xyz: emitted radiance; w: 0. Non-zero makes every sphere using it a light */
     float ior;       /* index of refraction, for dielectrics */
     int kind;        /* a MaterialKind */
-    int pad0, pad1;
+    float roughness; /* perceptual roughness in [0, 1] (dielectric, pbr); GGX alpha = roughness^2 */
+    float metallic;  /* in [0, 1] (pbr) */
 } MaterialRecord;
 
 /* An emissive sphere, for next-event estimation, and one slot of the alias
@@ -240,7 +243,7 @@ typedef struct RenderPassParams {
     FIELD(BvhNodeRecord, bounds, 0) FIELD(BvhNodeRecord, child, 96)                                        \
     SIZE(MaterialRecord, 48)                                                                               \
     FIELD(MaterialRecord, color, 0) FIELD(MaterialRecord, emission, 16) FIELD(MaterialRecord, ior, 32)     \
-    FIELD(MaterialRecord, kind, 36)                                                                        \
+    FIELD(MaterialRecord, kind, 36) FIELD(MaterialRecord, roughness, 40) FIELD(MaterialRecord, metallic, 44) \
     SIZE(LightRecord, 16)                                                                                  \
     FIELD(LightRecord, sphere, 0) FIELD(LightRecord, probability, 4)                                       \
     FIELD(LightRecord, alias_threshold, 8) FIELD(LightRecord, alias, 12)                                   \
