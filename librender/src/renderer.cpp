@@ -10,6 +10,7 @@
 
 #include "device_renderer.h"
 #include "device_session.h"
+#include "sample_split.h"
 #include "scene_layout.h"
 
 namespace orb::render {
@@ -21,26 +22,6 @@ void check_config(const RenderConfig& config)
         throw std::invalid_argument("image size must be positive, got " + std::to_string(config.width) + "x" +
                                     std::to_string(config.height));
     if (config.max_depth < 0) throw std::invalid_argument("max depth must not be negative");
-}
-
-// Splits `count` samples over devices in proportion to `weights`, rounding
-// by largest remainder so that the shares add up to `count`.
-std::vector<int> split_in_proportion(int count, const std::vector<double>& weights)
-{
-    double total = 0;
-    for (double w : weights) total += w;
-    std::vector<int> shares(weights.size(), 0);
-    std::vector<std::pair<double, std::size_t>> remainders;
-    int given = 0;
-    for (std::size_t d = 0; d < weights.size(); ++d) {
-        const double exact = count * weights[d] / total;
-        shares[d] = static_cast<int>(std::floor(exact));
-        given += shares[d];
-        remainders.push_back({exact - shares[d], d});
-    }
-    std::stable_sort(remainders.begin(), remainders.end(), [](auto a, auto b) { return a.first > b.first; });
-    for (std::size_t i = 0; given < count; ++i, ++given) shares[remainders[i % remainders.size()].second] += 1;
-    return shares;
 }
 
 }  // namespace
@@ -196,6 +177,7 @@ std::uint64_t Renderer::pixel_count() const
 }
 std::uint64_t Renderer::next_sample() const { return impl_->cursor; }
 const SampleRanges& Renderer::sample_ranges() const { return impl_->ranges; }
+const std::vector<SampleRanges>& Renderer::device_sample_ranges() const { return impl_->device_ranges; }
 
 Film Renderer::read_film() const
 {

@@ -13,9 +13,7 @@ public:
     ImageWriter(const RenderPlan& plan, cli::OutputFile& output, const render::Renderer& renderer)
         : output_(output), renderer_(renderer), metadata_(plan_metadata(plan)) {
         previous_seconds_ = metadata_.render_seconds;
-        metadata_.device = device_label(renderer.device());
-        for (std::size_t i = 1; i < renderer.devices().size(); ++i)
-            metadata_.device += "; " + device_label(renderer.devices()[i]);
+        metadata_.device = devices_label(renderer);
         options_.half = plan.half;
         options_.passes = plan.passes;
     }
@@ -39,6 +37,12 @@ private:
 }  // namespace
 
 std::string device_label(const render::DeviceInfo& d) { return d.name + " (" + d.platform + ")"; }
+
+std::string devices_label(const render::Renderer& renderer) {
+    std::string text;
+    for (const render::DeviceInfo& device : renderer.devices()) text += (text.empty() ? "" : "; ") + device_label(device);
+    return text;
+}
 
 const char* stop_reason_name(render::StopReason reason) {
     switch (reason) {
@@ -86,6 +90,8 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
 
     RunStats& stats = outcome.stats;
     stats.device = renderer.device();
+    for (std::size_t d = 0; d < renderer.devices().size(); ++d)
+        stats.devices.push_back({renderer.devices()[d], renderer.device_sample_ranges()[d].total()});
     stats.width = plan.config.width;
     stats.height = plan.config.height;
     stats.device_memory_bytes = renderer.device_memory_bytes();

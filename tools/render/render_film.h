@@ -17,6 +17,8 @@
 namespace orb::render_cli {
 
 std::string device_label(const render::DeviceInfo& device);
+// Every device of the renderer: "NAME (PLATFORM)", joined by "; ".
+std::string devices_label(const render::Renderer& renderer);
 const char* stop_reason_name(render::StopReason reason);
 
 // The final image of a render, ready to be encoded and written.

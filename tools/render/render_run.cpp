@@ -15,7 +15,7 @@ namespace orb::render_cli {
 
 int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
     render::Renderer renderer(plan.scene, plan.config);
-    cli::info("device: " + device_label(renderer.device()));
+    cli::info(std::string(renderer.devices().size() > 1 ? "devices: " : "device: ") + devices_label(renderer));
     if (plan.resumed) {
         renderer.load_film(plan.resumed->film);
         cli::info("resuming " + options.resume + " at " + std::to_string(plan.resumed->film.samples_per_pixel) +
@@ -48,7 +48,7 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
 
 int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
     render::Renderer renderer(plan.scene, plan.config);
-    cli::info("device: " + device_label(renderer.device()));
+    cli::info(std::string(renderer.devices().size() > 1 ? "devices: " : "device: ") + devices_label(renderer));
     const render::BenchmarkResult result = render::run_benchmark(renderer, options.benchmark_seconds);
     cli::info("benchmark: " + std::to_string(result.samples) + " samples in " + format_duration(result.seconds) +
               " over " + std::to_string(result.passes) + " passes at " + std::to_string(plan.config.width) + "x" +
@@ -57,6 +57,8 @@ int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOu
     if (outputs.stats) {
         RunStats stats;
         stats.device = renderer.device();
+        for (std::size_t d = 0; d < renderer.devices().size(); ++d)
+            stats.devices.push_back({renderer.devices()[d], renderer.device_sample_ranges()[d].total()});
         stats.width = plan.config.width;
         stats.height = plan.config.height;
         stats.device_memory_bytes = renderer.device_memory_bytes();

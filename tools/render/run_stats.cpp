@@ -6,14 +6,24 @@ namespace orb::render_cli {
 
 namespace {
 
+nlohmann::ordered_json device_json(const render::DeviceInfo& d) {
+    return {{"index", d.index},
+            {"name", d.name},
+            {"platform", d.platform},
+            {"type", d.is_gpu ? "gpu" : d.is_cpu ? "cpu" : "other"},
+            {"compute_units", d.compute_units},
+            {"global_memory_bytes", d.global_memory_bytes}};
+}
+
 nlohmann::ordered_json to_json(const RunStats& s) {
-    nlohmann::ordered_json device{{"index", s.device.index},
-                                  {"name", s.device.name},
-                                  {"platform", s.device.platform},
-                                  {"type", s.device.is_gpu ? "gpu" : s.device.is_cpu ? "cpu" : "other"},
-                                  {"compute_units", s.device.compute_units},
-                                  {"global_memory_bytes", s.device.global_memory_bytes}};
-    nlohmann::ordered_json j{{"device", device},
+    nlohmann::ordered_json devices = nlohmann::ordered_json::array();
+    for (const DeviceShare& share : s.devices) {
+        nlohmann::ordered_json entry = device_json(share.device);
+        entry["spp"] = share.spp;
+        devices.push_back(entry);
+    }
+    nlohmann::ordered_json j{{"device", device_json(s.device)},
+                             {"devices", devices},
                              {"width", s.width},
                              {"height", s.height},
                              {"spp", s.spp},

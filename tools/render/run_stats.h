@@ -10,8 +10,14 @@
 
 namespace orb::render_cli {
 
-struct RunStats {
+struct DeviceShare {
     render::DeviceInfo device;
+    std::uint64_t spp = 0;  // samples per pixel this device rendered into the image
+};
+
+struct RunStats {
+    render::DeviceInfo device;        // the first device
+    std::vector<DeviceShare> devices;  // every device, with its share (several with --device all or a list)
     int width = 0;
     int height = 0;
     std::uint64_t spp = 0;           // samples per pixel in the image, resumed ones included

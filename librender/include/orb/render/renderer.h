@@ -76,6 +76,8 @@ public:
     std::uint64_t pixel_count() const override;
     std::uint64_t next_sample() const;
     const SampleRanges& sample_ranges() const;
+    // The samples each device has rendered into the film, in devices() order.
+    const std::vector<SampleRanges>& device_sample_ranges() const;
 
     // The film: every device's sums added, with the sample count and ranges.
     Film read_film() const;
