@@ -104,7 +104,7 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
     const double overhead_ms = 1000.0 * (pose.total + upload.total + read.total + wait.total) / n;
     std::string line = "frames benchmark: " + std::to_string(jobs.size()) + " frames at " +
                        std::to_string(plan.config.width) + "x" + std::to_string(plan.config.height) + ", " +
-                       std::to_string(renderer->programs_built()) + " kernel build; per frame, mean (max) ms:";
+                       kernel_builds_text(renderer->programs_built()) + "; per frame, mean (max) ms:";
     char text[128];
     for (const Phase* phase : {&pose, &upload, &render_phase, &read, &wait, &encode}) {
         std::snprintf(text, sizeof text, " %s %.1f (%.1f);", phase->name, 1000.0 * phase->total / n,

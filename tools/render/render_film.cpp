@@ -44,6 +44,10 @@ std::string devices_label(const render::Renderer& renderer) {
     return text;
 }
 
+std::string kernel_builds_text(int builds) {
+    return std::to_string(builds) + (builds == 1 ? " kernel build" : " kernel builds");
+}
+
 const char* stop_reason_name(render::StopReason reason) {
     switch (reason) {
         case render::StopReason::ReachedSpp: return "spp";

@@ -20,6 +20,7 @@ std::string device_label(const render::DeviceInfo& device);
 // Every device of the renderer: "NAME (PLATFORM)", joined by "; ".
 std::string devices_label(const render::Renderer& renderer);
 const char* stop_reason_name(render::StopReason reason);
+std::string kernel_builds_text(int builds);  // "1 kernel build", "2 kernel builds"
 
 // The final image of a render, ready to be encoded and written.
 struct FinalImage {

@@ -147,7 +147,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
                   " complete already" +
                   (options.claim ? ", " + std::to_string(claimed_elsewhere) + " claimed elsewhere" : "") + " in " +
                   format_duration(seconds_since(start)) +
-                  (renderer ? " (" + std::to_string(renderer->programs_built()) + " kernel build)" : ""));
+                  (renderer ? " (" + kernel_builds_text(renderer->programs_built()) + ")" : ""));
     return cli::kSuccess;
 }
 
