@@ -100,6 +100,11 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
     m.mode = required<Imf::StringAttribute>(header, attr::kMode, path).value();
     if (m.mode != "global" && m.mode != "direct")
         fail(path, std::string(attr::kMode) + " must be global or direct, got '" + m.mode + "'");
+    // Files from before there was a choice were rendered with independent numbers.
+    const auto* sampler = header.findTypedAttribute<Imf::StringAttribute>(attr::kSampler);
+    m.sampler = sampler ? sampler->value() : "independent";
+    if (m.sampler != "sobol" && m.sampler != "independent")
+        fail(path, std::string(attr::kSampler) + " must be sobol or independent, got '" + m.sampler + "'");
     m.device = required<Imf::StringAttribute>(header, attr::kDevice, path).value();
     m.render_seconds = required<Imf::DoubleAttribute>(header, attr::kRenderSeconds, path).value();
     m.scene_file = required<Imf::StringAttribute>(header, attr::kSceneFile, path).value();

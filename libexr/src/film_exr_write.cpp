@@ -56,6 +56,7 @@ void add_metadata(Imf::Header& header, const render::Film& film, const ExrMetada
     header.insert(attr::kSeed, Imf::StringAttribute(std::to_string(m.seed)));
     header.insert(attr::kMaxDepth, Imf::IntAttribute(m.max_depth));
     header.insert(attr::kMode, Imf::StringAttribute(m.mode));
+    header.insert(attr::kSampler, Imf::StringAttribute(m.sampler));
     header.insert(attr::kDevice, Imf::StringAttribute(m.device));
     header.insert(attr::kRenderSeconds, Imf::DoubleAttribute(m.render_seconds));
     header.insert(attr::kSceneFile, Imf::StringAttribute(m.scene_file));

@@ -32,6 +32,7 @@ void check_same_render(const MergeInput& input, const MergeInput& reference) {
     require_same(input, reference, "orb:sceneHash", m.scene_hash, r.scene_hash);
     require_same(input, reference, "orb:sceneTime", m.scene_time, r.scene_time);
     require_same(input, reference, "orb:mode", m.mode, r.mode);
+    require_same(input, reference, "orb:sampler", m.sampler, r.sampler);
     require_same(input, reference, "orb:maxDepth", m.max_depth, r.max_depth);
     require_same(input, reference, "orb:passes", format_passes(input.file.passes),
                  format_passes(reference.file.passes));

@@ -81,7 +81,9 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           (session_->info().is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
                           // A scene without a tree gets a program without traversal code.
                           (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
-                          (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") + nvidia_register_cap(device);
+                          (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
+                          (config_.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
+                          nvidia_register_cap(device);
     if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
     return options;
 }

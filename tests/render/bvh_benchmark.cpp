@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
         const auto start = std::chrono::steady_clock::now();
         const orb::render::SphereBvh bvh = orb::render::build_sphere_bvh(spheres, settings);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("spheres=%zu threads=%u nodes=%zu build_seconds=%.3f\n", n, settings.threads, bvh.nodes.size(),
+        std::printf("spheres=%zu threads=%u nodes=%zu max_depth=%d stack_bound=%d build_seconds=%.3f\n", n,
+                    settings.threads, bvh.nodes.size(), orb::render::bvh_depth(bvh), orb::render::bvh_stack_bound(bvh),
                     seconds);
     }
 }

@@ -1,7 +1,7 @@
 #include "frame_jobs.h"
 
 #include "interrupt.h"
-#include "orb/cli/frames.h"
+#include "orb/cli/frame_spec.h"
 #include "orb/cli/messages.h"
 #include "render_film.h"
 
@@ -9,10 +9,12 @@ namespace orb::render_cli {
 
 std::vector<Job> jobs_of(const RenderPlan& plan, const RenderOptions& options) {
     if (plan.frames.empty()) return {Job{std::nullopt, options.output}};
-    const bool pattern = cli::has_frame_number(options.output);
+    // With --frame N a name without a frame-number field is taken as it is.
+    const bool pattern = cli::count_frame_fields(options.output) > 0;
     std::vector<Job> jobs;
     for (long frame : plan.frames)
-        jobs.push_back({frame, pattern ? cli::expand_frame_pattern(options.output, frame) : options.output});
+        jobs.push_back(
+            {frame, pattern ? cli::expand_frame_pattern(options.output, static_cast<int>(frame)) : options.output});
     return jobs;
 }
 

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "orb/cli/exr_output_name.h"
-#include "orb/cli/frames.h"
+#include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
 #include "orb/cli/tool_main.h"
 #include "orb/exr/passes.h"
@@ -103,6 +103,9 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_option("--seed", o.seed, "Random seed, 0 ... 2^64-1 (default 0)")->check(kSeed);
     app.add_option("--mode", o.mode, "Light transport: global (path tracing) or direct")
         ->check(CLI::IsMember({"global", "direct"}));
+    app.add_option("--sampler", o.sampler,
+                   "Random numbers: sobol (low discrepancy, default) or independent")
+        ->check(CLI::IsMember({"sobol", "independent"}));
     app.add_option("--max-depth", o.max_depth, "Maximum path depth (default: the scene's render.max_depth)")
         ->check(CLI::Range(0, 1024));
     app.add_option("--width", o.width, "Image width (default: the scene's render.width)")->check(CLI::Range(1, 65536));
@@ -121,7 +124,7 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
                    "number, %04d or ####")
         ->option_text("SPEC");
     app.add_option("--frame", o.frame, "Render one frame of an animation (time = frame / fps)")
-        ->check(CLI::Range(0L, cli::kMaxFrameNumber));
+        ->check(CLI::Range(0L, static_cast<long>(cli::kMaxFrameNumber)));
     app.add_option("--fps", o.fps, "Frames per second for --frame/--frames (default 24)")->check(kPositiveSeconds);
     app.add_flag("--same-seed", o.same_seed, "Every frame with --seed itself, not a seed derived from the frame");
     app.add_flag("--skip-existing", o.skip_existing,
@@ -153,7 +156,7 @@ void check_option_combinations(const RenderOptions& o) {
     }
     if (o.frame && o.frames) throw UsageError("--frame N and --frames SPEC exclude each other");
     std::size_t frame_count = o.frame ? 1 : 0;
-    if (o.frames) frame_count = cli::parse_frame_list(*o.frames, "--frames").size();
+    if (o.frames) frame_count = parse_frames_option(*o.frames).size();
     if (renders_frames(o)) {
         const char* conflicting = o.time_at            ? "--time-at (the time is frame / fps)"
                                   : !o.resume.empty() ? "--resume (render incomplete frames again)"
@@ -193,7 +196,8 @@ void check_option_combinations(const RenderOptions& o) {
         throw UsageError("-o - and --stats-json - cannot both write to stdout");
     if (cli::is_stdio(o.resume)) throw UsageError("--resume needs an EXR file, not -");
     // Without --frame/--frames, -o is a plain name, '%' and '#' included.
-    if (frame_count > 1 && !cli::has_frame_number(o.output)) {
+    const int fields = renders_frames(o) ? cli::count_frame_fields(o.output) : 0;
+    if (frame_count > 1 && fields == 0) {
         throw UsageError("--frames renders " + std::to_string(frame_count) +
                          " frames: -o needs a frame number, e.g. shots/beauty.%04d.exr or shots/beauty.####.exr");
     }
@@ -202,5 +206,14 @@ void check_option_combinations(const RenderOptions& o) {
 }
 
 bool renders_frames(const RenderOptions& o) { return o.frame.has_value() || o.frames.has_value(); }
+
+std::vector<long> parse_frames_option(const std::string& spec) {
+    try {
+        const cli::FrameSpec parsed = cli::parse_frame_spec(spec);
+        return std::vector<long>(parsed.begin(), parsed.end());
+    } catch (const cli::UsageError& e) {
+        throw cli::UsageError(std::string("--frames: ") + e.what());
+    }
+}
 
 }  // namespace orb::render_cli

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace orb::render_cli {
 
@@ -22,6 +23,7 @@ struct RenderOptions {
     std::string resume;
     std::optional<std::uint64_t> seed;
     std::optional<std::string> mode;
+    std::optional<std::string> sampler;
     std::optional<int> max_depth;
     std::optional<int> width;
     std::optional<int> height;
@@ -51,5 +53,8 @@ void check_option_combinations(const RenderOptions& options);
 
 // True for --frame or --frames.
 bool renders_frames(const RenderOptions& options);
+
+// The frames of --frames (docs/frames.md), in order. Throws orb::cli::UsageError.
+std::vector<long> parse_frames_option(const std::string& spec);
 
 }  // namespace orb::render_cli

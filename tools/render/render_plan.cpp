@@ -4,7 +4,6 @@
 #include <sstream>
 
 #include "frame_plan.h"
-#include "orb/cli/frames.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
@@ -24,6 +23,14 @@ const char* mode_name(render::IntegratorMode mode) {
 
 render::IntegratorMode parse_mode(const std::string& name) {
     return name == "direct" ? render::IntegratorMode::Direct : render::IntegratorMode::Global;
+}
+
+const char* sampler_name(render::SamplerKind sampler) {
+    return sampler == render::SamplerKind::Independent ? "independent" : "sobol";
+}
+
+render::SamplerKind parse_sampler(const std::string& name) {
+    return name == "independent" ? render::SamplerKind::Independent : render::SamplerKind::Sobol;
 }
 
 Scene import_from(const std::string& path, std::string& label) {
@@ -78,11 +85,13 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     require_same(o.height, file.film.height, "--height", "height", path);
     require_same(o.seed, m.seed, "--seed", "orb:seed", path);
     require_same(o.mode, m.mode, "--mode", "orb:mode", path);
+    require_same(o.sampler, m.sampler, "--sampler", "orb:sampler", path);
     require_same(o.max_depth, m.max_depth, "--max-depth", "orb:maxDepth", path);
     plan.config.width = file.film.width;
     plan.config.height = file.film.height;
     plan.config.seed = m.seed;
     plan.config.mode = parse_mode(m.mode);
+    plan.config.sampler = parse_sampler(m.sampler);
     plan.config.max_depth = m.max_depth;
 
     plan.target_spp = o.spp ? *o.spp : m.target_spp;
@@ -124,6 +133,7 @@ RenderPlan make_render_plan(const RenderOptions& o) {
     plan.config.height = o.height.value_or(settings.height);
     plan.config.seed = o.seed.value_or(0);
     plan.config.mode = parse_mode(o.mode.value_or("global"));
+    plan.config.sampler = parse_sampler(o.sampler.value_or("sobol"));
     plan.config.max_depth = o.max_depth.value_or(settings.max_depth);
     plan.target_spp = o.spp ? *o.spp : static_cast<std::uint64_t>(settings.spp);
     if (o.sample_range) {
@@ -133,7 +143,7 @@ RenderPlan make_render_plan(const RenderOptions& o) {
     }
     plan.passes = o.passes ? exr::parse_passes(*o.passes) : exr::all_passes();
     if (renders_frames(o)) {
-        plan.frames = o.frame ? std::vector<long>{*o.frame} : cli::parse_frame_list(*o.frames, "--frames");
+        plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
         plan.fps = o.fps.value_or(kDefaultFps);
         plan.same_seed = o.same_seed;
         plan.base_seed = plan.config.seed;
@@ -161,6 +171,7 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.seed = plan.config.seed;
     m.max_depth = plan.config.max_depth;
     m.mode = mode_name(plan.config.mode);
+    m.sampler = sampler_name(plan.config.sampler);
     m.scene_file = plan.scene_label;
     m.scene_hash = plan.scene_hash;
     m.scene_time = plan.scene_time;

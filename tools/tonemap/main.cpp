@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "orb/cli/frames.h"
+#include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/output_file.h"
@@ -46,11 +46,11 @@ struct Job {
 std::vector<Job> plan_jobs(const Settings& s) {
     std::vector<Job> jobs;
     if (!s.frames.empty()) {
-        if (s.inputs.size() != 1 || !orb::cli::has_frame_number(s.inputs[0]))
+        if (s.inputs.size() != 1 || orb::cli::count_frame_fields(s.inputs[0]) == 0)
             throw UsageError("--frames needs one input pattern with a frame number, e.g. beauty.%04d.exr");
-        if (!orb::cli::has_frame_number(s.output))
+        if (orb::cli::count_frame_fields(s.output) == 0)
             throw UsageError("--frames needs an output pattern with a frame number, e.g. -o beauty.%04d.png");
-        for (long f : orb::cli::parse_frame_list(s.frames, "--frames"))
+        for (int f : orb::cli::parse_frame_spec(s.frames))
             jobs.push_back({orb::cli::expand_frame_pattern(s.inputs[0], f), orb::cli::expand_frame_pattern(s.output, f)});
         return jobs;
     }

@@ -36,6 +36,7 @@ struct ExrMetadata {
     std::uint64_t seed = 0;        // orb:seed (a decimal string: 64 bits do not fit an int attribute)
     int max_depth = 0;             // orb:maxDepth
     std::string mode;              // orb:mode, "global" or "direct"
+    std::string sampler = "sobol"; // orb:sampler, "sobol" or "independent" (absent: independent, the only one before)
     std::string device;            // orb:device
     double render_seconds = 0;     // orb:renderSeconds, summed over resumed runs
     std::string scene_file;        // orb:sceneFile

@@ -27,6 +27,8 @@ namespace orb::render {
 // Global (path tracing) or Direct (the paper's local illumination): the
 // kernels' enum, from kernels/include/orb/kernels/device_types.h.
 using IntegratorMode = device::IntegratorMode;
+// Sobol (low discrepancy, the default) or Independent (Philox): the kernels' enum.
+using SamplerKind = device::SamplerKind;
 
 struct RenderConfig {
     int width = 640;
@@ -34,6 +36,7 @@ struct RenderConfig {
     int max_depth = 6;
     IntegratorMode mode = IntegratorMode::Global;
     std::uint64_t seed = 0;
+    SamplerKind sampler = SamplerKind::Sobol;
     std::string device;       // selector for choose_devices(): one device, a list, or "all"
     std::string kernel_dir;   // development override of the embedded kernels ("" = embedded; env ORB_KERNEL_DIR too)
     bool use_binary_cache = true;  // $XDG_CACHE_HOME/orb (or ~/.cache/orb)
