@@ -21,14 +21,14 @@ inline void film_set1(__global float* values, uint pixel, float value) { values[
 
 #define ORB_FILM_FIELD_IF_Sum(name, components) ORB_FILM_FLOAT_##components name;
 #define ORB_FILM_FIELD_IF_CentreRay(name, components)
-#define ORB_FILM_SUM_FIELD(name, components, clear, accumulate, ...) ORB_FILM_FIELD_IF_##accumulate(name, components)
+#define ORB_FILM_SUM_FIELD(name, components, clear, accumulate, merge, layer, stored_as, paired, names) ORB_FILM_FIELD_IF_##accumulate(name, components)
 typedef struct {
     ORB_FILM_CHANNELS(ORB_FILM_SUM_FIELD)
 } FilmSums;
 
 #define ORB_FILM_CENTRE_IF_Sum(name, components)
 #define ORB_FILM_CENTRE_IF_CentreRay(name, components) ORB_FILM_FLOAT_##components name;
-#define ORB_FILM_CENTRE_FIELD(name, components, clear, accumulate, ...) \
+#define ORB_FILM_CENTRE_FIELD(name, components, clear, accumulate, merge, layer, stored_as, paired, names) \
     ORB_FILM_CENTRE_IF_##accumulate(name, components)
 typedef struct {
     ORB_FILM_CHANNELS(ORB_FILM_CENTRE_FIELD)
@@ -36,7 +36,7 @@ typedef struct {
 
 #define ORB_FILM_ZERO_IF_Sum(name) sums->name = 0.0f;
 #define ORB_FILM_ZERO_IF_CentreRay(name)
-#define ORB_FILM_ZERO(name, components, clear, accumulate, ...) ORB_FILM_ZERO_IF_##accumulate(name)
+#define ORB_FILM_ZERO(name, components, clear, accumulate, merge, layer, stored_as, paired, names) ORB_FILM_ZERO_IF_##accumulate(name)
 inline void film_sums_clear(FilmSums* sums) { ORB_FILM_CHANNELS(ORB_FILM_ZERO) }
 
 // Inside render_pass, whose arguments film_<name> are the buffers: adds the
@@ -44,10 +44,10 @@ inline void film_sums_clear(FilmSums* sums) { ORB_FILM_CHANNELS(ORB_FILM_ZERO) }
 // (local variables of those names), one statement per channel.
 #define ORB_FILM_ADD_IF_Sum(name, components) film_add##components(film_##name, pixel, sums.name);
 #define ORB_FILM_ADD_IF_CentreRay(name, components)
-#define ORB_FILM_ADD(name, components, clear, accumulate, ...) ORB_FILM_ADD_IF_##accumulate(name, components)
+#define ORB_FILM_ADD(name, components, clear, accumulate, merge, layer, stored_as, paired, names) ORB_FILM_ADD_IF_##accumulate(name, components)
 #define ORB_FILM_ADD_SUMS ORB_FILM_CHANNELS(ORB_FILM_ADD)
 
 #define ORB_FILM_SET_IF_Sum(name, components)
 #define ORB_FILM_SET_IF_CentreRay(name, components) film_set##components(film_##name, pixel, centre.name);
-#define ORB_FILM_SET(name, components, clear, accumulate, ...) ORB_FILM_SET_IF_##accumulate(name, components)
+#define ORB_FILM_SET(name, components, clear, accumulate, merge, layer, stored_as, paired, names) ORB_FILM_SET_IF_##accumulate(name, components)
 #define ORB_FILM_SET_CENTRE ORB_FILM_CHANNELS(ORB_FILM_SET)

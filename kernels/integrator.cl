@@ -253,7 +253,7 @@ inline FilmCentre film_centre_ray(const SceneView* scene, const CameraParams* ca
 // The signature is generated from ORB_RENDER_PASS_ARGUMENTS (device_types.h),
 // the list the host binds from: film buffers (one per row of the channel
 // table), scene tables, then the parameters.
-#define ORB_KERNEL_FILM_ARG(name, ...) __global float* film_##name,
+#define ORB_KERNEL_FILM_ARG(name, components, clear, accumulate, merge, layer, stored_as, paired, names) __global float* film_##name,
 #define ORB_KERNEL_TABLE_ARG(type, name) SCENE_MEM const type* name,
 #define ORB_KERNEL_PARAMS_ARG(type, name) type name
 __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG))

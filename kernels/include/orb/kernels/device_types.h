@@ -210,7 +210,8 @@ typedef struct RenderPassParams {
  * The kernel's signature (kernels/integrator.cl), the host's argument indices,
  * its set of scene buffers and its count of __constant arguments
  * (librender/src/pass_arguments.h) are all generated from this one list:
- *   FILM(name, ...)     __global float* film_<name>: one per row of the film's
+ *   FILM(name, components, clear, accumulate, merge, layer, stored_as, paired, names)
+ *                       __global float* film_<name>: one per row of the film's
  *                       channel table (ORB_FILM_CHANNELS, film_channels.h),
  *                       which passes the row's other columns along
  *   TABLE(type, name)   a read-only scene table of `type` records, in the

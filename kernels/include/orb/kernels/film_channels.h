@@ -21,7 +21,10 @@
  *
  * ORB_FILM_CHANNELS(CHANNEL): the film's per-pixel buffers, in the order of
  * render_pass's film arguments:
- *   CHANNEL(name, components, clear, accumulate, merge, layer, stored_as, paired, exr channel names...)
+ *   CHANNEL(name, components, clear, accumulate, merge, layer, stored_as, paired, (exr channel names))
+ *   The EXR names are one parenthesised argument, so that every callback has
+ *   exactly nine parameters: OpenCL C 1.2 has no variadic macros (NVIDIA's
+ *   compiler refuses them; PoCL's accepts them).
  *     components  floats per pixel: 3 (a colour or a vector) or 1
  *     clear       the value of a pixel that holds no sample
  *     accumulate  Sum: every sample adds its value;
@@ -71,17 +74,17 @@
  * radiance_sq  L^2 per component, for the variance of the pixel mean
  * object_id    the scene index of the sphere the pixel-centre ray hits, -1 for none */
 #define ORB_FILM_CHANNELS(CHANNEL)                                                                                    \
-    CHANNEL(radiance, 3, 0.0f, Sum, Sum, Beauty, Mean, none, "R", "G", "B")                                           \
-    CHANNEL(alpha, 1, 0.0f, Sum, Sum, Beauty, Mean, none, "A")                                                        \
-    CHANNEL(direct, 3, 0.0f, Sum, Sum, Direct, Mean, none, "direct.R", "direct.G", "direct.B")                        \
-    CHANNEL(indirect, 3, 0.0f, Sum, Sum, Indirect, Mean, none, "indirect.R", "indirect.G", "indirect.B")              \
-    CHANNEL(emission, 3, 0.0f, Sum, Sum, Emission, Mean, none, "emission.R", "emission.G", "emission.B")              \
-    CHANNEL(albedo, 3, 0.0f, Sum, Sum, Albedo, Mean, none, "albedo.R", "albedo.G", "albedo.B")                        \
-    CHANNEL(normal, 3, 0.0f, Sum, Sum, Normal, UnitVector, none, "N.X", "N.Y", "N.Z", "orb.normalLength")             \
-    CHANNEL(depth, 1, ORB_FILM_INFINITY, CentreRay, Same, Depth, Value, none, "Z")                                    \
-    CHANNEL(radiance_sq, 3, 0.0f, Sum, Sum, Variance, VarianceOfMean, radiance, "variance.R", "variance.G",           \
-            "variance.B")                                                                                             \
-    CHANNEL(object_id, 1, -1.0f, CentreRay, Same, Id, Value, none, "id")
+    CHANNEL(radiance, 3, 0.0f, Sum, Sum, Beauty, Mean, none, ("R", "G", "B"))                                           \
+    CHANNEL(alpha, 1, 0.0f, Sum, Sum, Beauty, Mean, none, ("A"))                                                        \
+    CHANNEL(direct, 3, 0.0f, Sum, Sum, Direct, Mean, none, ("direct.R", "direct.G", "direct.B"))                        \
+    CHANNEL(indirect, 3, 0.0f, Sum, Sum, Indirect, Mean, none, ("indirect.R", "indirect.G", "indirect.B"))              \
+    CHANNEL(emission, 3, 0.0f, Sum, Sum, Emission, Mean, none, ("emission.R", "emission.G", "emission.B"))              \
+    CHANNEL(albedo, 3, 0.0f, Sum, Sum, Albedo, Mean, none, ("albedo.R", "albedo.G", "albedo.B"))                        \
+    CHANNEL(normal, 3, 0.0f, Sum, Sum, Normal, UnitVector, none, ("N.X", "N.Y", "N.Z", "orb.normalLength"))             \
+    CHANNEL(depth, 1, ORB_FILM_INFINITY, CentreRay, Same, Depth, Value, none, ("Z"))                                    \
+    CHANNEL(radiance_sq, 3, 0.0f, Sum, Sum, Variance, VarianceOfMean, radiance, ("variance.R", "variance.G",           \
+            "variance.B"))                                                                                             \
+    CHANNEL(object_id, 1, -1.0f, CentreRay, Same, Id, Value, none, ("id"))
 
 #ifdef __OPENCL_VERSION__
 
@@ -162,13 +165,13 @@ inline constexpr std::array kLayers{
 };
 
 inline constexpr std::array kChannels{
-#define ORB_FILM_CHANNEL_INFO(name, components, clear, accumulate, merge, layer, stored_as, paired, ...)             \
+#define ORB_FILM_CHANNEL_INFO(name, components, clear, accumulate, merge, layer, stored_as, paired, names)             \
     ChannelInfo{Channel::name,           #name,                                                                    \
                 components,              clear,                                                                    \
                 Accumulation::accumulate, MergeRule::merge,                                                        \
                 Layer::layer,            StoredAs::stored_as,                                                      \
-                Channel::paired,         detail::exr_names(__VA_ARGS__),                                           \
-                detail::exr_name_count(__VA_ARGS__)},
+                Channel::paired,         detail::exr_names names,                                           \
+                detail::exr_name_count names},
     ORB_FILM_CHANNELS(ORB_FILM_CHANNEL_INFO)
 #undef ORB_FILM_CHANNEL_INFO
 };
