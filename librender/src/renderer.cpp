@@ -10,6 +10,7 @@
 
 #include "device_renderer.h"
 #include "device_session.h"
+#include "sample_split.h"
 #include "scene_layout.h"
 
 namespace orb::render {
@@ -23,26 +24,6 @@ void check_config(const RenderConfig& config)
     if (config.max_depth < 0) throw std::invalid_argument("max depth must not be negative");
 }
 
-// Splits `count` samples over devices in proportion to `weights`, rounding
-// by largest remainder so that the shares add up to `count`.
-std::vector<int> split_in_proportion(int count, const std::vector<double>& weights)
-{
-    double total = 0;
-    for (double w : weights) total += w;
-    std::vector<int> shares(weights.size(), 0);
-    std::vector<std::pair<double, std::size_t>> remainders;
-    int given = 0;
-    for (std::size_t d = 0; d < weights.size(); ++d) {
-        const double exact = count * weights[d] / total;
-        shares[d] = static_cast<int>(std::floor(exact));
-        given += shares[d];
-        remainders.push_back({exact - shares[d], d});
-    }
-    std::stable_sort(remainders.begin(), remainders.end(), [](auto a, auto b) { return a.first > b.first; });
-    for (std::size_t i = 0; given < count; ++i, ++given) shares[remainders[i % remainders.size()].second] += 1;
-    return shares;
-}
-
 }  // namespace
 
 struct Renderer::Impl {
@@ -52,6 +33,7 @@ struct Renderer::Impl {
     std::vector<SampleRanges> device_ranges;  // what each device's film holds
     SampleRanges ranges;                      // their union: what the film holds
     std::uint64_t cursor = 0;                 // where render_pass() continues
+    bool film_clear = true;                   // every device film is at its clear values (new frames skip a clear)
 
     std::vector<int> split(int count) const;
     void wait_all(const std::vector<std::size_t>& busy);
@@ -134,7 +116,9 @@ void Renderer::set_seed(std::uint64_t seed)
 void Renderer::clear(std::uint64_t first_sample)
 {
     Impl& r = *impl_;
-    for (auto& device : r.devices) device->clear_film();
+    if (!r.film_clear)
+        for (auto& device : r.devices) device->clear_film();
+    r.film_clear = true;
     for (SampleRanges& ranges : r.device_ranges) ranges = {};
     r.ranges = {};
     r.cursor = first_sample;
@@ -169,6 +153,7 @@ void Renderer::render_samples(std::uint64_t first_sample, int count)
         throw std::invalid_argument("the film already holds some of the samples " + std::to_string(first_sample) +
                                     ":" + std::to_string(count) + " (it holds " + r.ranges.format() + ")");
 
+    r.film_clear = false;
     // Each device takes the next contiguous slice of the range.
     const std::vector<int> shares = r.split(count);
     std::vector<std::size_t> busy;
@@ -192,29 +177,43 @@ std::uint64_t Renderer::pixel_count() const
 }
 std::uint64_t Renderer::next_sample() const { return impl_->cursor; }
 const SampleRanges& Renderer::sample_ranges() const { return impl_->ranges; }
+const std::vector<SampleRanges>& Renderer::device_sample_ranges() const { return impl_->device_ranges; }
 
 Film Renderer::read_film() const
 {
+    Film film;
+    read_film(film);
+    return film;
+}
+
+void Renderer::read_film(Film& film) const
+{
     Impl& r = *impl_;
-    Film total;
-    total.resize(r.config.width, r.config.height);
+    bool first = true;
     for (std::size_t d = 0; d < r.devices.size(); ++d) {
         if (r.device_ranges[d].empty()) continue;
-        Film part = r.devices[d]->read_film();
+        if (first) {
+            // The common case of one device: straight into `film`, no additions.
+            r.devices[d]->read_film(film);
+            film.samples_per_pixel = r.device_ranges[d].total();
+            film.sample_ranges = r.device_ranges[d];
+            first = false;
+            continue;
+        }
+        Film part;
+        r.devices[d]->read_film(part);
         part.samples_per_pixel = r.device_ranges[d].total();
         part.sample_ranges = r.device_ranges[d];
-        if (total.samples_per_pixel == 0)
-            total = std::move(part);  // the common case of one device: no copy, no additions
-        else
-            total.accumulate(part);
+        film.accumulate(part);
     }
-    return total;
+    if (first) film.resize(r.config.width, r.config.height);  // no samples yet: an empty film
 }
 
 void Renderer::load_film(const Film& film)
 {
     Impl& r = *impl_;
     const SampleRanges held = film.held_ranges();
+    r.film_clear = false;
     r.devices.front()->load_film(film);
     for (std::size_t d = 1; d < r.devices.size(); ++d) r.devices[d]->clear_film();
     for (SampleRanges& ranges : r.device_ranges) ranges = {};

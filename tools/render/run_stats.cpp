@@ -4,14 +4,26 @@
 
 namespace orb::render_cli {
 
-std::string stats_json(const RunStats& s) {
-    nlohmann::ordered_json device{{"index", s.device.index},
-                                  {"name", s.device.name},
-                                  {"platform", s.device.platform},
-                                  {"type", s.device.is_gpu ? "gpu" : s.device.is_cpu ? "cpu" : "other"},
-                                  {"compute_units", s.device.compute_units},
-                                  {"global_memory_bytes", s.device.global_memory_bytes}};
-    nlohmann::ordered_json j{{"device", device},
+namespace {
+
+nlohmann::ordered_json device_json(const render::DeviceInfo& d) {
+    return {{"index", d.index},
+            {"name", d.name},
+            {"platform", d.platform},
+            {"type", d.is_gpu ? "gpu" : d.is_cpu ? "cpu" : "other"},
+            {"compute_units", d.compute_units},
+            {"global_memory_bytes", d.global_memory_bytes}};
+}
+
+nlohmann::ordered_json to_json(const RunStats& s) {
+    nlohmann::ordered_json devices = nlohmann::ordered_json::array();
+    for (const DeviceShare& share : s.devices) {
+        nlohmann::ordered_json entry = device_json(share.device);
+        entry["spp"] = share.spp;
+        devices.push_back(entry);
+    }
+    nlohmann::ordered_json j{{"device", device_json(s.device)},
+                             {"devices", devices},
                              {"width", s.width},
                              {"height", s.height},
                              {"spp", s.spp},
@@ -23,6 +35,18 @@ std::string stats_json(const RunStats& s) {
                              {"device_memory_bytes", s.device_memory_bytes},
                              {"stop_reason", s.stop_reason},
                              {"output", s.output}};
+    if (s.frame) j["frame"] = *s.frame;
+    return j;
+}
+
+}  // namespace
+
+std::string stats_json(const RunStats& s) { return to_json(s).dump(2) + "\n"; }
+
+std::string frames_stats_json(const std::vector<RunStats>& frames, const std::vector<long>& skipped) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const RunStats& frame : frames) list.push_back(to_json(frame));
+    nlohmann::ordered_json j{{"frames", list}, {"skipped", skipped}};
     return j.dump(2) + "\n";
 }
 

@@ -2,14 +2,22 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "orb/render/device.h"
 
 namespace orb::render_cli {
 
-struct RunStats {
+struct DeviceShare {
     render::DeviceInfo device;
+    std::uint64_t spp = 0;  // samples per pixel this device rendered into the image
+};
+
+struct RunStats {
+    render::DeviceInfo device;        // the first device
+    std::vector<DeviceShare> devices;  // every device, with its share (several with --device all or a list)
     int width = 0;
     int height = 0;
     std::uint64_t spp = 0;           // samples per pixel in the image, resumed ones included
@@ -21,8 +29,12 @@ struct RunStats {
     std::string stop_reason;         // "spp", "time", "interrupted" or "benchmark"
     std::string output;              // "" for --benchmark
     std::string sample_ranges;       // the sample indices in the image, "0:64"; "" for --benchmark
+    std::optional<long> frame;       // --frame/--frames: the frame number
 };
 
 std::string stats_json(const RunStats& stats);
+
+// --frames: {"frames": [one object per frame rendered], "skipped": [...]}.
+std::string frames_stats_json(const std::vector<RunStats>& frames, const std::vector<long>& skipped);
 
 }  // namespace orb::render_cli

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "frame_pattern.h"
+#include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/output_file.h"
@@ -46,14 +46,12 @@ struct Job {
 std::vector<Job> plan_jobs(const Settings& s) {
     std::vector<Job> jobs;
     if (!s.frames.empty()) {
-        if (s.inputs.size() != 1 || !orb::tonemap::is_frame_pattern(s.inputs[0]))
+        if (s.inputs.size() != 1 || orb::cli::count_frame_fields(s.inputs[0]) == 0)
             throw UsageError("--frames needs one input pattern with a frame number, e.g. beauty.%04d.exr");
-        if (!orb::tonemap::is_frame_pattern(s.output))
+        if (orb::cli::count_frame_fields(s.output) == 0)
             throw UsageError("--frames needs an output pattern with a frame number, e.g. -o beauty.%04d.png");
-        const auto range = orb::tonemap::parse_frame_range(s.frames);
-        for (long f = range.first; f <= range.last; ++f)
-            jobs.push_back({orb::tonemap::expand_frame_pattern(s.inputs[0], f),
-                            orb::tonemap::expand_frame_pattern(s.output, f)});
+        for (int f : orb::cli::parse_frame_spec(s.frames))
+            jobs.push_back({orb::cli::expand_frame_pattern(s.inputs[0], f), orb::cli::expand_frame_pattern(s.output, f)});
         return jobs;
     }
     if (s.inputs.size() == 1) return {{s.inputs[0], s.output}};
@@ -129,7 +127,7 @@ int main(int argc, char** argv) {
                 ->option_text("N")
                 ->check(orb::cli::one_of({8, 16, 32}));
             app.add_flag("--no-dither", s.no_dither, "Round instead of dithering when quantising to 8 bits");
-            app.add_option("--frames", s.frames, "Frame range for pattern inputs/outputs, e.g. 1-240")->option_text("A-B");
+            app.add_option("--frames", s.frames, "Frames for pattern inputs/outputs (%04d or ####): 1-240, 1-240x2, 1,5,9-12")->option_text("SPEC");
             app.add_flag("--contact-sheet", s.contact_sheet, "Lay out all passes of the input in one labelled image");
             app.footer(
                 "Examples:\n"

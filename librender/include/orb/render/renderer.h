@@ -79,9 +79,14 @@ public:
     std::uint64_t pixel_count() const override;
     std::uint64_t next_sample() const;
     const SampleRanges& sample_ranges() const;
+    // The samples each device has rendered into the film, in devices() order.
+    const std::vector<SampleRanges>& device_sample_ranges() const;
 
     // The film: every device's sums added, with the sample count and ranges.
     Film read_film() const;
+    // The same into `film`, reusing its memory when it has this size (frame
+    // after frame, a reused film costs no fresh pages).
+    void read_film(Film& film) const;
     // Continue from these sums: render_pass() then follows the film's
     // highest sample index. The film must have this renderer's size.
     void load_film(const Film& film);

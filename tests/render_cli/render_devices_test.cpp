@@ -1,0 +1,96 @@
+// Several devices in one process (--device all, --device 0,1): each pass's
+// samples are split over the devices and their films summed, which gives the
+// single-device render of the same samples up to float rounding. PoCL offers
+// two device instances with POCL_DEVICES="pthread pthread".
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+#include "cli_fixture.h"
+#include "orb/exr/film_exr.h"
+
+using namespace orb::test;
+using orb::exr::read_film_exr;
+
+namespace {
+
+// orb-render with two PoCL devices.
+ProcessResult render_on_two(const std::vector<std::string>& args) {
+    std::vector<std::string> argv{"/usr/bin/env", "POCL_DEVICES=pthread pthread", render_exe()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return run_process(argv);
+}
+
+// The sums of two films of the same N samples, added in different groupings
+// (per device, then across devices), differ by at most about
+// (2 N + 8) u of the sum of magnitudes (u = 2^-24; see render_slices_test.cpp).
+void expect_same_samples(const orb::exr::ExrFilm& a, const orb::exr::ExrFilm& b) {
+    ASSERT_EQ(a.film.sample_ranges, b.film.sample_ranges);
+    const std::uint64_t n = a.film.samples_per_pixel;
+    const double bound = (2.0 * static_cast<double>(n) + 8.0) * std::ldexp(1.0, -24);
+    for (const orb::film::ChannelInfo& info : orb::film::kChannels) {
+        const auto& x = a.film.channel(info.channel);
+        const auto& y = b.film.channel(info.channel);
+        if (info.merge == orb::film::MergeRule::Same) {
+            EXPECT_EQ(x, y) << info.name;
+            continue;
+        }
+        int reported = 0;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            const double magnitude = info.stored_as == orb::film::StoredAs::UnitVector
+                                         ? static_cast<double>(n)
+                                         : std::max(std::fabs(double(x[i])), std::fabs(double(y[i])));
+            if (std::fabs(double(x[i]) - y[i]) > bound * magnitude && reported++ < 5)
+                ADD_FAILURE() << info.name << "[" << i << "]: " << x[i] << " vs " << y[i];
+        }
+    }
+}
+
+}  // namespace
+
+TEST_F(RenderCli, TwoDevicesRenderTheImageOfOne) {
+    const std::string scene = write_scene(small_scene());
+    const auto two = render_on_two({scene, "--device", "all", "--spp", "24", "--seed", "3", "-o",
+                                           path("two.exr"), "--stats-json", path("two.json")});
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    EXPECT_NE(two.err.find("devices: "), std::string::npos) << two.err;
+    const auto one = render_on_two({scene, "--device", "1", "--spp", "24", "--seed", "3", "-o", path("one.exr")});
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    expect_same_samples(read_film_exr(path("one.exr")), read_film_exr(path("two.exr")));
+
+    // Both devices took part, and their shares add up to the image.
+    const auto stats = nlohmann::json::parse(read_text(path("two.json")));
+    ASSERT_EQ(stats.at("devices").size(), 2u);
+    const auto first = stats.at("devices")[0].at("spp").get<std::uint64_t>();
+    const auto second = stats.at("devices")[1].at("spp").get<std::uint64_t>();
+    EXPECT_GT(first, 0u);
+    EXPECT_GT(second, 0u);
+    EXPECT_EQ(first + second, 24u);
+    EXPECT_NE(read_film_exr(path("two.exr")).metadata.device.find("; "), std::string::npos);
+}
+
+TEST_F(RenderCli, TwoDevicesRenderASliceOfAFrame) {
+    const std::string scene = write_scene(moving_ball_scene());
+    const std::vector<std::string> common{scene, "--frame", "6", "--sample-range", "8:16"};
+    auto args = common;
+    args.insert(args.end(), {"--device", "0,1", "-o", path("two.exr")});
+    const auto two = render_on_two(args);
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    args = common;
+    args.insert(args.end(), {"--device", "0", "-o", path("one.exr")});
+    ASSERT_EQ(render_on_two(args).exit_code, 0);
+    expect_same_samples(read_film_exr(path("one.exr")), read_film_exr(path("two.exr")));
+}
+
+TEST_F(RenderCli, ADeviceListNamesEachDeviceOnce) {
+    const std::string scene = write_scene(small_scene());
+    const auto twice = render_on_two({scene, "--device", "0,0", "-o", path("out.exr")});
+    EXPECT_EQ(twice.exit_code, 1);
+    EXPECT_NE(twice.err.find("named twice"), std::string::npos) << twice.err;
+    const auto missing = render_on_two({scene, "--device", "0,7", "-o", path("out.exr")});
+    EXPECT_EQ(missing.exit_code, 1);
+    EXPECT_NE(missing.err.find("no OpenCL device with index 7"), std::string::npos) << missing.err;
+    const auto empty = render_on_two({scene, "--device", "0,", "-o", path("out.exr")});
+    EXPECT_EQ(empty.exit_code, 1);
+    EXPECT_EQ(files(), (std::vector<std::string>{"scene.json"}));
+}

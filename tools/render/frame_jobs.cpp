@@ -1,0 +1,38 @@
+#include "frame_jobs.h"
+
+#include "interrupt.h"
+#include "orb/cli/frame_spec.h"
+#include "orb/cli/messages.h"
+#include "render_film.h"
+
+namespace orb::render_cli {
+
+std::vector<Job> jobs_of(const RenderPlan& plan, const RenderOptions& options) {
+    if (plan.frames.empty()) return {Job{std::nullopt, options.output}};
+    // With --frame N a name without a frame-number field is taken as it is.
+    const bool pattern = cli::count_frame_fields(options.output) > 0;
+    std::vector<Job> jobs;
+    for (long frame : plan.frames)
+        jobs.push_back(
+            {frame, pattern ? cli::expand_frame_pattern(options.output, static_cast<int>(frame)) : options.output});
+    return jobs;
+}
+
+std::string label_of(const Job& job) { return job.frame ? "frame " + std::to_string(*job.frame) + ": " : ""; }
+
+void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer) {
+    if (job.frame && (!plan.frame || plan.frame->number != *job.frame)) pose_frame(plan, *job.frame);
+    if (!renderer) {
+        renderer.emplace(plan.scene, plan.config);
+        cli::info(std::string(renderer->devices().size() > 1 ? "devices: " : "device: ") + devices_label(*renderer));
+        // From here on a signal ends the frame in flight gracefully; before,
+        // during the kernel build, there is nothing to save.
+        install_interrupt_handlers();
+    } else {
+        renderer->set_scene(plan.scene);
+        renderer->set_seed(plan.config.seed);
+    }
+    renderer->clear(plan.first_sample);
+}
+
+}  // namespace orb::render_cli

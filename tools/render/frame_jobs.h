@@ -1,0 +1,31 @@
+// The frames a render goes through (one job per output) and the shared
+// renderer they use, for render_frames.cpp and frames_benchmark.cpp.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "orb/render/renderer.h"
+#include "render_options.h"
+#include "render_plan.h"
+
+namespace orb::render_cli {
+
+struct Job {
+    std::optional<long> frame;  // none for a render that is not a frame of an animation
+    std::string output;
+};
+
+// One job per frame (its output from the -o pattern), or the one output.
+std::vector<Job> jobs_of(const RenderPlan& plan, const RenderOptions& options);
+
+// "frame 12: ", or "" when the job is no frame.
+std::string label_of(const Job& job);
+
+// Poses the plan at the job's frame (unless it is posed there already) and
+// hands the scene and seed to the renderer, which is made on first use (one
+// session and kernel build for every frame); the film is emptied.
+void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer);
+
+}  // namespace orb::render_cli

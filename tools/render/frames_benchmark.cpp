@@ -1,0 +1,121 @@
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "background_writer.h"
+#include "frame_jobs.h"
+#include "orb/cli/messages.h"
+#include "orb/cli/output_file.h"
+#include "orb/cli/tool_main.h"
+#include "orb/scene/error.h"
+#include "render_film.h"
+#include "render_frames.h"
+
+namespace orb::render_cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+}  // namespace
+
+int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
+    (void)outputs;
+    const std::vector<Job> jobs = jobs_of(plan, options);
+    std::optional<render::Renderer> renderer;
+    // The first frame pays for the kernel build and the driver's lazy set-up:
+    // rendered once before timing.
+    set_up(plan, jobs.front(), renderer);
+    renderer->render_pass(1);
+
+    // The EXRs are written as real frames are (on the writer's thread, to a
+    // temporary file that is flushed and renamed), into a private folder
+    // that is removed afterwards.
+    const char* tmp = std::getenv("TMPDIR");
+    std::string folder = std::string(tmp && *tmp ? tmp : "/tmp") + "/orb-frames-benchmark-XXXXXX";
+    if (!::mkdtemp(folder.data())) throw InputError(folder + ": cannot make a folder for the benchmark's frames");
+
+    struct Phase {
+        const char* name;
+        double total = 0, most = 0;
+        void add(double seconds) {
+            total += seconds;
+            most = std::max(most, seconds);
+        }
+    };
+    // Samples per frame: --spp, else 1. With fewer samples than it takes to
+    // write a frame, the writer's time shows as waiting.
+    const int spp = static_cast<int>(options.spp.value_or(1));
+    const std::string render_name = "render (" + std::to_string(spp) + " spp)";
+    Phase pose{"pose"}, upload{"upload"}, render_phase{render_name.c_str()}, read{"read back"}, wait{"wait for writer"},
+        encode{"encode+write (beside rendering)"};
+    exr::ExrWriteOptions write_options;
+    write_options.passes = plan.passes;
+    write_options.half = plan.half;
+    try {
+        BackgroundWriter writer;
+        for (std::size_t i = 0; i < jobs.size(); ++i) {
+            const Job& job = jobs[i];
+            Clock::time_point t = Clock::now();
+            if (job.frame) pose_frame(plan, *job.frame);
+            pose.add(seconds_since(t));
+            t = Clock::now();
+            renderer->set_scene(plan.scene);
+            renderer->set_seed(plan.config.seed);
+            renderer->clear(plan.first_sample);
+            upload.add(seconds_since(t));
+            t = Clock::now();
+            for (int done = 0; done < spp;) {
+                const int pass = std::min(spp - done, std::max(1, renderer->suggested_samples_per_pass()));
+                renderer->render_pass(pass);
+                done += pass;
+            }
+            render_phase.add(seconds_since(t));
+            t = Clock::now();
+            FinalImage image{writer.take_spare_film(), plan_metadata(plan), write_options};
+            renderer->read_film(image.film);
+            read.add(seconds_since(t));
+            const double waited_before = writer.seconds_waited();
+            writer.submit({std::move(image), cli::OutputFile(folder + "/frame" + std::to_string(i) + ".exr", "-o"),
+                           std::nullopt});
+            wait.add(writer.seconds_waited() - waited_before);
+        }
+        writer.finish();
+        // The writer's own time, measured apart from rendering: one frame encoded and written alone.
+        for (std::size_t i = 0; i < std::min<std::size_t>(jobs.size(), 4); ++i) {
+            const Clock::time_point t = Clock::now();
+            FinalImage image{renderer->read_film(), plan_metadata(plan), write_options};
+            cli::OutputFile(folder + "/alone.exr", "-o").write(image.encode());
+            encode.add(seconds_since(t));
+        }
+        encode.total *= static_cast<double>(jobs.size()) / static_cast<double>(std::min<std::size_t>(jobs.size(), 4));
+    } catch (...) {
+        std::filesystem::remove_all(folder);
+        throw;
+    }
+    std::filesystem::remove_all(folder);
+
+    const double n = static_cast<double>(jobs.size());
+    const double overhead_ms = 1000.0 * (pose.total + upload.total + read.total + wait.total) / n;
+    std::string line = "frames benchmark: " + std::to_string(jobs.size()) + " frames at " +
+                       std::to_string(plan.config.width) + "x" + std::to_string(plan.config.height) + ", " +
+                       kernel_builds_text(renderer->programs_built()) + "; per frame, mean (max) ms:";
+    char text[128];
+    for (const Phase* phase : {&pose, &upload, &render_phase, &read, &wait, &encode}) {
+        std::snprintf(text, sizeof text, " %s %.1f (%.1f);", phase->name, 1000.0 * phase->total / n,
+                      1000.0 * phase->most);
+        line += text;
+    }
+    cli::info(line);
+    // The time a frame adds to the render path besides its samples.
+    std::printf("frame_overhead_ms=%.1f\n", overhead_ms);
+    std::fflush(stdout);
+    return cli::kSuccess;
+}
+
+}  // namespace orb::render_cli
