@@ -1,6 +1,6 @@
 // Whether an EXR that orb-render wrote is a finished render, read from its
 // header and offset table only (no pixels), so that checking a long sequence
-// of large frames stays cheap. Tools that skip finished work (orb-frames
+// of large frames stays cheap (the offset table and chunk headers). Tools that skip finished work (orb-frames
 // --missing, orb-farm) share this one definition of "finished".
 #pragma once
 
@@ -20,7 +20,7 @@ struct RenderStatus {
 // Complete means: a readable OpenEXR file with orb-render's orb:spp and
 // orb:targetSpp attributes, orb:spp >= orb:targetSpp (an interrupted or
 // time-limited render stops short of its target), and every scanline present
-// (a truncated file is not complete). Never throws for a bad file; the
+// (a file cut short anywhere is not complete). Never throws for a bad file; the
 // reason says what is wrong.
 RenderStatus inspect_render(const std::string& path);
 
