@@ -7,6 +7,7 @@
 #   local-slurm.sh start DIR   start munged, slurmctld and slurmd; wait until the node is idle
 #   local-slurm.sh stop DIR    cancel the cluster's jobs, stop the daemons (by pid)
 #
+# LOCAL_SLURM_EXTRA_CONF, if set, is appended to slurm.conf (e.g. MaxArraySize=5).
 # Then: export SLURM_CONF=DIR/slurm.conf (sbatch, squeue, ... find the cluster
 # through it). Needs Debian's slurm-wlm and munge (scripts/install-deps.sh).
 # Each Debian default path is overridden here: slurm.conf (SLURM_CONF), the
@@ -41,6 +42,12 @@ start() {
     mkdir -p "$dir"
     dir=$(cd "$dir" && pwd)
     [[ ! -e $dir/slurm.conf ]] || die "$dir already holds a cluster; stop it first"
+    # munged refuses a socket that not every user can reach: each folder above it must be searchable by all.
+    local up=$dir
+    while [[ $up != / ]]; do
+        [[ $(stat -c %A "$up") == ?????????[xt] ]] || die "$up is not searchable by all users (chmod o+x), which munged requires of its socket's folders"
+        up=$(dirname "$up")
+    done
     mkdir -p "$dir"/{munge,state,spool,log}
     # munged insists: the socket's folder searchable by all, the key readable by its owner only.
     chmod 755 "$dir" "$dir/munge"
@@ -91,6 +98,7 @@ MailProg=/bin/true
 ReturnToService=2
 ${node_line} NodeHostname=$host NodeAddr=127.0.0.1 State=UNKNOWN
 PartitionName=local Nodes=$node Default=YES MaxTime=INFINITE State=UP
+${LOCAL_SLURM_EXTRA_CONF-}
 CONF
 
     export SLURM_CONF=$dir/slurm.conf
