@@ -18,8 +18,10 @@ started=$EPOCHREALTIME
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/orb-farm-slurm.XXXXXX")
 chmod 755 "$work" # munged wants its socket's folders searchable by all
+# The daemons are this shell's children, so stopping them also reaps them.
+source "$here/local-slurm.sh"
 cleanup() {
-    "$here/local-slurm.sh" stop "$work/cluster" || echo "farm_slurm_test: stopping the cluster failed" >&2
+    local_slurm_stop "$work/cluster"
     rm -rf "$work"
 }
 trap cleanup EXIT
@@ -39,10 +41,16 @@ fatal() {
     exit 1
 }
 
+# Where Debian's Slurm and munge keep their files by default: the cluster must leave them as they were.
+system_paths=(/etc/slurm /etc/munge /run/munge /run/slurm /run/slurmctld.pid /run/slurmd.pid /var/run/slurmctld.pid
+    /var/run/slurmd.pid /var/lib/slurm /var/spool/slurm /var/spool/slurmd /var/spool/slurmctld /var/log/slurm
+    /var/log/munge /var/lib/munge)
+system_files() { find "${system_paths[@]}" -printf '%p %s %T@\n' 2>/dev/null | sort; }
+system_before=$(system_files)
+
 # Eight render tasks in arrays of at most five: the split into several arrays runs too.
-LOCAL_SLURM_EXTRA_CONF="MaxArraySize=5" "$here/local-slurm.sh" start "$work/cluster" >/dev/null ||
-    fatal "the Slurm cluster did not start"
-export SLURM_CONF=$work/cluster/slurm.conf
+LOCAL_SLURM_EXTRA_CONF="MaxArraySize=5" local_slurm_start "$work/cluster" >/dev/null
+[[ $SLURM_CONF == "$work/cluster/slurm.conf" ]] || fatal "the Slurm cluster did not start"
 
 cd "$work" || exit 1
 farm=("$bin/orb-farm" "$scene" --frames 1-4 -o shots/beauty.%04d.exr --slices 2 --spp 16 --width 64 --height 48
@@ -111,6 +119,12 @@ grep -q "submitted 1 render task(s): slices of 1 frame(s), 2 slices a frame" "$w
     problem "the last re-run did not submit just the missing slice: $(grep submitted "$work/err")"
 compare_with_local 3
 [[ -s shots/beauty.0003.png ]] || problem "frame 3 has no png after the re-run"
+
+local_slurm_stop "$work/cluster"
+for pid_file in munged slurmctld slurmd; do
+    [[ ! -e $work/cluster/$pid_file.pid ]] || problem "$pid_file was not stopped"
+done
+[[ $(system_files) == "$system_before" ]] || problem "files under /etc, /run or /var changed: $(diff <(echo "$system_before") <(system_files))"
 
 total=$(awk -v a="$started" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.1f", b - a }')
 printf 'farm_slurm_test: first submission to complete frames: %s s; whole test: %s s\n' "$farm_seconds" "$total"

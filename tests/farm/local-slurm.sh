@@ -7,25 +7,30 @@
 #   local-slurm.sh start DIR   start munged, slurmctld and slurmd; wait until the node is idle
 #   local-slurm.sh stop DIR    cancel the cluster's jobs, stop the daemons (by pid)
 #
+# Sourced, it defines local_slurm_start DIR and local_slurm_stop DIR, so that
+# the daemons are the caller's children (a test that waits for them leaves
+# no zombies behind).
+#
 # LOCAL_SLURM_EXTRA_CONF, if set, is appended to slurm.conf (e.g. MaxArraySize=5).
 # Then: export SLURM_CONF=DIR/slurm.conf (sbatch, squeue, ... find the cluster
 # through it). Needs Debian's slurm-wlm and munge (scripts/install-deps.sh).
-# Each Debian default path is overridden here: slurm.conf (SLURM_CONF), the
-# controller's and slurmd's pid files (/run), StateSaveLocation
-# (/var/lib/slurm/slurmctld), SlurmdSpoolDir (/var/lib/slurm/slurmd), the logs
-# (syslog), PlugStackConfig (/etc/slurm/plugstack.conf), and munged's key,
-# socket, pid, seed and log files (/etc/munge, /run/munge, /var/lib/munge,
-# /var/log/munge).
-set -euo pipefail
+# Every default location of Debian 12's Slurm 22.05 and munge 0.5.15 (read
+# from the binaries) is overridden: slurm.conf (/etc/slurm, through
+# SLURM_CONF and -f), the pid files (/run/slurmctld.pid, /run/slurmd.pid),
+# StateSaveLocation (/var/spool), SlurmdSpoolDir (/var/spool/slurmd), the
+# logs (syslog), and munged's key, socket, pid, seed and log files
+# (/etc/munge/munge.key, /run/munge, /var/lib/munge, /var/log/munge).
+# PlugStackConfig points at an empty file here, although its default is
+# already next to slurm.conf.
 
-die() { echo "local-slurm: $*" >&2; exit 1; }
+local_slurm_die() { echo "local-slurm: $*" >&2; exit 1; }
 
-free_port() {
+local_slurm_free_port() {
     python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'
 }
 
 # Waits up to $2 seconds for command $1 to succeed.
-wait_for() {
+local_slurm_wait_for() {
     local check=$1 seconds=$2 i
     for ((i = 0; i < seconds * 5; i++)); do
         if eval "$check" >/dev/null 2>&1; then return 0; fi
@@ -34,45 +39,44 @@ wait_for() {
     return 1
 }
 
-start() {
-    local dir=$1
+local_slurm_start() {
+    local dir=$1 tool
     for tool in munged slurmctld slurmd sbatch; do
-        command -v "$tool" >/dev/null || die "$tool not found; install Debian's slurm-wlm and munge (scripts/install-deps.sh)"
+        command -v "$tool" >/dev/null || local_slurm_die "$tool not found; install Debian's slurm-wlm and munge (scripts/install-deps.sh)"
     done
-    mkdir -p "$dir"
+    mkdir -p "$dir" || local_slurm_die "cannot create $dir"
     dir=$(cd "$dir" && pwd)
-    [[ ! -e $dir/slurm.conf ]] || die "$dir already holds a cluster; stop it first"
+    [[ ! -e $dir/slurm.conf ]] || local_slurm_die "$dir already holds a cluster; stop it first"
     # munged refuses a socket that not every user can reach: each folder above it must be searchable by all.
     local up=$dir
     while [[ $up != / ]]; do
-        [[ $(stat -c %A "$up") == ?????????[xt] ]] || die "$up is not searchable by all users (chmod o+x), which munged requires of its socket's folders"
+        [[ $(stat -c %A "$up") == ?????????[xt] ]] || local_slurm_die "$up is not searchable by all users (chmod o+x), which munged requires of its socket's folders"
         up=$(dirname "$up")
     done
-    mkdir -p "$dir"/{munge,state,spool,log}
     # munged insists: the socket's folder searchable by all, the key readable by its owner only.
-    chmod 755 "$dir" "$dir/munge"
-    head -c 1024 /dev/urandom >"$dir/munge/munge.key"
-    chmod 400 "$dir/munge/munge.key"
+    mkdir -p "$dir"/{munge,state,spool,log} && chmod 755 "$dir" "$dir/munge" &&
+        head -c 1024 /dev/urandom >"$dir/munge/munge.key" && chmod 400 "$dir/munge/munge.key" ||
+        local_slurm_die "cannot set up $dir"
     munged --foreground --key-file="$dir/munge/munge.key" --socket="$dir/munge/munge.socket" \
         --pid-file="$dir/munge/munged.pid" --log-file="$dir/munge/munged.log" --seed-file="$dir/munge/munged.seed" \
         </dev/null >>"$dir/log/munged.out" 2>&1 &
     echo $! >"$dir/munged.pid"
-    wait_for "[[ -S '$dir/munge/munge.socket' ]]" 20 || die "munged did not start; see $dir/munge/munged.log"
+    local_slurm_wait_for "[[ -S '$dir/munge/munge.socket' ]]" 20 || local_slurm_die "munged did not start; see $dir/munge/munged.log"
 
     local host node_line node
     host=$(hostname -s)
     # The node exactly as slurmd sees this machine (CPUs, sockets, memory), so it registers as valid.
     node_line=$(slurmd -C | head -n 1)
-    [[ $node_line == NodeName=* ]] || die "slurmd -C did not describe this machine: $node_line"
+    [[ $node_line == NodeName=* ]] || local_slurm_die "slurmd -C did not describe this machine: $node_line"
     node=${node_line#NodeName=}
     node=${node%% *}
-    touch "$dir/plugstack.conf"
+    touch "$dir/plugstack.conf" || local_slurm_die "cannot write in $dir"
     cat >"$dir/slurm.conf" <<CONF
 # Written by tests/farm/local-slurm.sh: a one-node cluster, all of it in $dir.
 ClusterName=orblocal
 SlurmctldHost=$host(127.0.0.1)
-SlurmctldPort=$(free_port)
-SlurmdPort=$(free_port)
+SlurmctldPort=$(local_slurm_free_port)
+SlurmdPort=$(local_slurm_free_port)
 AuthType=auth/munge
 CredType=cred/munge
 AuthInfo=socket=$dir/munge/munge.socket
@@ -106,29 +110,43 @@ CONF
     echo $! >"$dir/slurmctld.pid"
     slurmd -D -f "$SLURM_CONF" -N "$node" </dev/null >>"$dir/log/slurmd.out" 2>&1 &
     echo $! >"$dir/slurmd.pid"
-    if ! wait_for "[[ \$(sinfo -h -o %T 2>/dev/null) == idle ]]" 60; then
+    if ! local_slurm_wait_for "[[ \$(sinfo -h -o %T 2>/dev/null) == idle ]]" 60; then
         tail -n 20 "$dir/log/slurmctld.log" "$dir/log/slurmd.log" >&2 || true
-        die "the node did not come up within 60 s (logs above, in $dir/log)"
+        local_slurm_die "the node did not come up within 60 s (logs above, in $dir/log)"
     fi
     echo "local-slurm: cluster up: export SLURM_CONF=$SLURM_CONF"
 }
 
-stop_pid() {
-    local file=$1 pid i
-    [[ -f $file ]] || return 0
-    pid=$(<"$file")
-    if kill "$pid" 2>/dev/null; then
-        for ((i = 0; i < 50; i++)); do
-            kill -0 "$pid" 2>/dev/null || break
-            sleep 0.2
-        done
-        kill -KILL "$pid" 2>/dev/null || true
-    fi
-    wait "$pid" 2>/dev/null || true
-    rm -f "$file"
+# The process with pid $1 exists, is not a zombie, and runs program $2.
+local_slurm_alive() {
+    [[ -r /proc/$1/cmdline && $(tr '\0' ' ' </proc/$1/cmdline) == *"$2"* ]] &&
+        [[ $(awk '{ print $3 }' "/proc/$1/stat" 2>/dev/null) != Z ]]
 }
 
-stop() {
+# Stops the daemon whose pid local_slurm_start recorded in FILE, if that pid
+# still runs NAME (a stale file must not make us signal whatever has the pid now).
+local_slurm_stop_pid() {
+    local file=$1 name=$2 pid i
+    [[ -f $file ]] || return 0
+    pid=$(<"$file")
+    rm -f "$file"
+    [[ $pid =~ ^[0-9]+$ ]] || return 0
+    if local_slurm_alive "$pid" "$name"; then
+        kill "$pid" 2>/dev/null
+        for ((i = 0; i < 100; i++)); do
+            local_slurm_alive "$pid" "$name" || break
+            sleep 0.1
+        done
+        if local_slurm_alive "$pid" "$name"; then
+            echo "local-slurm: $name (pid $pid) did not stop within 10 s; killing it" >&2
+            kill -KILL "$pid" 2>/dev/null
+        fi
+    fi
+    # Reaps it when it is our child (local-slurm.sh sourced); otherwise init does.
+    wait "$pid" 2>/dev/null || true
+}
+
+local_slurm_stop() {
     local dir=$1
     [[ -d $dir ]] || return 0
     dir=$(cd "$dir" && pwd)
@@ -136,16 +154,19 @@ stop() {
         # Jobs first, so that no job step outlives slurmd.
         export SLURM_CONF=$dir/slurm.conf
         if scancel --user="$(id -un)" 2>/dev/null; then
-            wait_for "[[ -z \$(squeue -h 2>/dev/null) ]]" 20 || echo "local-slurm: jobs still listed after scancel" >&2
+            local_slurm_wait_for "[[ -z \$(squeue -h 2>/dev/null) ]]" 20 || echo "local-slurm: jobs still listed after scancel" >&2
         fi
     fi
-    stop_pid "$dir/slurmd.pid"
-    stop_pid "$dir/slurmctld.pid"
-    stop_pid "$dir/munged.pid"
+    local_slurm_stop_pid "$dir/slurmd.pid" slurmd
+    local_slurm_stop_pid "$dir/slurmctld.pid" slurmctld
+    local_slurm_stop_pid "$dir/munged.pid" munged
 }
 
-case ${1-} in
-start) [[ $# == 2 ]] || die "usage: local-slurm.sh start DIR"; start "$2" ;;
-stop) [[ $# == 2 ]] || die "usage: local-slurm.sh stop DIR"; stop "$2" ;;
-*) die "usage: local-slurm.sh start|stop DIR" ;;
-esac
+if [[ ${BASH_SOURCE[0]} == "$0" ]]; then
+    set -euo pipefail
+    case ${1-} in
+    start) [[ $# == 2 ]] || local_slurm_die "usage: local-slurm.sh start DIR"; local_slurm_start "$2" ;;
+    stop) [[ $# == 2 ]] || local_slurm_die "usage: local-slurm.sh stop DIR"; local_slurm_stop "$2" ;;
+    *) local_slurm_die "usage: local-slurm.sh start|stop DIR" ;;
+    esac
+fi
