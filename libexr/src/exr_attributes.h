@@ -5,6 +5,7 @@ namespace orb::exr::attr {
 
 inline constexpr const char* kFilmFormat = "orb:filmFormat";
 inline constexpr const char* kSpp = "orb:spp";
+inline constexpr const char* kSampleRanges = "orb:sampleRanges";
 inline constexpr const char* kTargetSpp = "orb:targetSpp";
 inline constexpr const char* kSeed = "orb:seed";
 inline constexpr const char* kMaxDepth = "orb:maxDepth";

@@ -16,6 +16,7 @@ struct RenderOptions {
     bool list_devices = false;
     std::string device;
     std::optional<std::uint64_t> spp;
+    std::optional<std::string> sample_range;  // "START:COUNT"
     std::optional<double> time_limit;
     std::optional<double> checkpoint;
     std::string resume;

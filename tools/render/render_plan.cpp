@@ -84,6 +84,15 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     plan.config.max_depth = m.max_depth;
 
     plan.target_spp = o.spp ? *o.spp : m.target_spp;
+    if (o.sample_range) {
+        // Finishing an interrupted slice: the file must hold the start of it.
+        const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
+        const render::SampleRanges& held = file.film.sample_ranges;
+        if (held.ranges().size() != 1 || held.first() != slice.first || held.end() > slice.end())
+            throw InputError(path + ": holds the samples " + held.format() + ", not the start of --sample-range " +
+                             *o.sample_range + "; drop --sample-range to continue the file after its last sample");
+        plan.target_spp = slice.count;
+    }
     if (plan.target_spp < file.film.samples_per_pixel)
         throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
                          " samples per pixel, more than the " + std::to_string(plan.target_spp) + " asked for");
@@ -116,6 +125,11 @@ RenderPlan make_render_plan(const RenderOptions& o) {
     plan.config.mode = parse_mode(o.mode.value_or("global"));
     plan.config.max_depth = o.max_depth.value_or(plan.scene.render.max_depth);
     plan.target_spp = o.spp ? *o.spp : static_cast<std::uint64_t>(plan.scene.render.spp);
+    if (o.sample_range) {
+        const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
+        plan.first_sample = slice.first;
+        plan.target_spp = slice.count;
+    }
     plan.passes = o.passes ? exr::parse_passes(*o.passes) : exr::all_passes();
     return plan;
 }
