@@ -78,6 +78,14 @@ RenderStatus inspect_render(const std::string& path) {
     }
     status.spp = static_cast<std::uint64_t>(spp);
     status.target_spp = static_cast<std::uint64_t>(target);
+    // Files from before sample slices (film format 1) hold the samples 0 ... spp-1.
+    const char* ranges = nullptr;
+    int32_t ranges_length = 0;
+    if (exr_attr_get_string(read.context, 0, attr::kSampleRanges, &ranges_length, &ranges) == EXR_ERR_SUCCESS &&
+        ranges && ranges_length >= 0)
+        status.sample_ranges.assign(ranges, static_cast<std::size_t>(ranges_length));
+    else
+        status.sample_ranges = "0:" + std::to_string(status.spp);
     exr_attr_box2i_t window{};
     if (exr_get_data_window(read.context, 0, &window) != EXR_ERR_SUCCESS || window.max.x < window.min.x ||
         window.max.y < window.min.y) {

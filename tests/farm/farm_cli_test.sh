@@ -231,13 +231,17 @@ expect_in "task_frames=(2 4)"
 
 section "re-run: only missing slices"
 mkdir -p shots/orb-farm/slices
-render_complete shots/orb-farm/slices/beauty.0002.s1of2.exr 2
-render_complete shots/orb-farm/slices/beauty.0004.s2of2.exr 3 # stale: 3 samples, the slice has 2
+render_slice() { # PATH START:COUNT
+    "$bin/orb-render" "$scene" --width 8 --height 6 --sample-range "$2" -q -o "$1" || problem "could not render $1"
+}
+render_slice shots/orb-farm/slices/beauty.0002.s1of2.exr 0:2
+render_slice shots/orb-farm/slices/beauty.0004.s2of2.exr 0:2 # stale: slice 2 holds samples 2:2
 run "$farm" "${common[@]}" --spp 4 --slices 2 --dry-run
 expect_status 0
 expect_in "task_frames=(2 4 4)"
 expect_in "task_slices=(2 1 2)"
 expect_in "--collect --frames 2,4 "
+expect_in "frame 4: $work/shots/orb-farm/slices/beauty.0004.s2of2.exr: holds samples 0:2, not 2:2" err
 
 section "re-run: only missing images"
 render_complete shots/beauty.0002.exr 4

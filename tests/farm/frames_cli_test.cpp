@@ -78,7 +78,7 @@ TEST_F(FramesCli, UsageErrors) {
         {{"1-3", "beauty.exr", "--paths"}, "'beauty.exr' has no frame number"},
         {{"1-3", "--paths"}, "--paths needs a PATTERN"},
         {{"1-3", "--missing"}, "--missing needs a PATTERN"},
-        {{"1-3", "b.%04d.exr", "--spp", "4"}, "--spp, --width and --height go with --missing"},
+        {{"1-3", "b.%04d.exr", "--spp", "4"}, "--spp, --samples, --width and --height go with --missing"},
         {{"1-3", "b.%s.exr", "--paths"}, "the only % conversions"},
         {{"1-3", "b.%04d.exr", "--missing", "--spp", "0"}, "--spp"},
     };
@@ -132,6 +132,23 @@ TEST_F(FramesCli, MissingChecksSampleCountAndSizeWhenAsked) {
     EXPECT_EQ(size.out, "1\n2\n");
     EXPECT_THAT(size.err, HasSubstr("is 8x6, not 8x5"));
     EXPECT_EQ(frames({"1-2", path("f.%04d.exr"), "--missing", "--width", "8", "--height", "6"}).out, "");
+}
+
+TEST_F(FramesCli, MissingChecksTheSamplesOfASlice) {
+    render("s.0001.exr", {"--sample-range", "4:3"});
+    EXPECT_EQ(frames({"1", path("s.%04d.exr"), "--missing", "--samples", "4:3"}).out, "");
+    EXPECT_EQ(frames({"1", path("s.%04d.exr"), "--missing", "--samples", "04:003"}).out, "");
+    const ProcessResult other = frames({"1", path("s.%04d.exr"), "--missing", "--samples", "0:3"});
+    EXPECT_EQ(other.out, "1\n");
+    EXPECT_THAT(other.err, HasSubstr("holds samples 4:3, not 0:3"));
+    // A whole render holds 0:spp.
+    render("w.0001.exr", {"--spp", "3"});
+    EXPECT_EQ(frames({"1", path("w.%04d.exr"), "--missing", "--samples", "0:3"}).out, "");
+    for (const char* bad : {"3", "1:0", "a:2", ":2", "1:", "-1:2"}) {
+        const ProcessResult r = frames({"1", path("s.%04d.exr"), "--missing", "--samples", bad});
+        EXPECT_EQ(r.exit_code, 2) << bad;
+        EXPECT_THAT(r.err, HasSubstr("--samples: expected START:COUNT")) << bad;
+    }
 }
 
 TEST_F(FramesCli, AClosedStdoutIsAFailure) {

@@ -9,6 +9,8 @@ std::string why_not_done(const std::string& path, const FrameRequirements& wante
     if (!status.complete) return status.reason;
     if (wanted.spp && status.spp != *wanted.spp)
         return "has " + std::to_string(status.spp) + " samples per pixel, not " + std::to_string(*wanted.spp);
+    if (wanted.samples && status.sample_ranges != *wanted.samples)
+        return "holds samples " + status.sample_ranges + ", not " + *wanted.samples;
     if ((wanted.width && status.width != *wanted.width) || (wanted.height && status.height != *wanted.height))
         return "is " + std::to_string(status.width) + "x" + std::to_string(status.height) + ", not " +
                (wanted.width ? std::to_string(*wanted.width) : std::to_string(status.width)) + "x" +

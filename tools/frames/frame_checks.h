@@ -10,6 +10,7 @@ namespace orb::frames {
 // --spp or size must not keep frames of the old one).
 struct FrameRequirements {
     std::optional<unsigned long long> spp;
+    std::optional<std::string> samples;  // exactly these sample indices, "START:COUNT" (a slice)
     std::optional<int> width, height;
 };
 

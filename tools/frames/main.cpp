@@ -1,9 +1,11 @@
 // orb-frames: expands a frame list (and a frame pattern) for shell loops and
 // job scripts, and with --missing names the frames still to render.
+#include <charconv>
 #include <iostream>
 #include <iterator>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "frame_checks.h"
 #include "orb/cli/frame_spec.h"
@@ -42,12 +44,27 @@ std::string list_text(const std::string& list) {
     return joined;
 }
 
+// "START:COUNT" as orb-render writes it in orb:sampleRanges (no leading zeros).
+std::string canonical_sample_range(const std::string& text) {
+    const auto colon = text.find(':');
+    unsigned long long start = 0, count = 0;
+    const auto number = [](std::string_view part, unsigned long long& value) {
+        const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+        return !part.empty() && ec == std::errc() && end == part.data() + part.size();
+    };
+    if (colon == std::string::npos || !number(std::string_view(text).substr(0, colon), start) ||
+        !number(std::string_view(text).substr(colon + 1), count) || count < 1)
+        throw UsageError("--samples: expected START:COUNT with whole numbers and COUNT >= 1, got '" + text + "'");
+    return std::to_string(start) + ":" + std::to_string(count);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     Settings s;
     std::optional<unsigned long long> spp;
     std::optional<int> width, height;
+    std::optional<std::string> samples;
     return orb::cli::run_tool(
         argc, argv, "orb-frames", "List the frames of a frame list, their file names, or those not yet rendered",
         [&](CLI::App& app) {
@@ -62,6 +79,10 @@ int main(int argc, char** argv) {
             app.add_option("--spp", spp, "With --missing: a frame must also have exactly N samples per pixel")
                 ->option_text("N")
                 ->check(CLI::Range(1ULL, 2147483647ULL));
+            app.add_option("--samples", samples,
+                           "With --missing: a frame must also hold exactly the samples START ... START+COUNT-1 "
+                           "(a slice from orb-render --sample-range)")
+                ->option_text("START:COUNT");
             app.add_option("--width", width, "With --missing: a frame must also be W pixels wide")
                 ->option_text("W")
                 ->check(CLI::Range(1, 1 << 20));
@@ -78,10 +99,12 @@ int main(int argc, char** argv) {
                 "Exit status: 0 success (whether or not frames are missing), 1 output failed, 2 usage error.");
         },
         [&]() -> int {
-            s.wanted = {spp, width, height};
+            if (samples) samples = canonical_sample_range(*samples);
+            s.wanted = {spp, samples, width, height};
             if ((s.paths || s.missing) && s.pattern.empty())
                 throw UsageError(std::string(s.missing ? "--missing" : "--paths") + " needs a PATTERN, e.g. beauty.%04d.exr");
-            if ((spp || width || height) && !s.missing) throw UsageError("--spp, --width and --height go with --missing");
+            if ((spp || samples || width || height) && !s.missing)
+                throw UsageError("--spp, --samples, --width and --height go with --missing");
             if (!s.pattern.empty() && orb::cli::count_frame_fields(s.pattern) == 0)
                 throw UsageError("'" + s.pattern + "' has no frame number: write %04d or #### where it goes");
             const orb::cli::FrameSpec spec = orb::cli::parse_frame_spec(list_text(s.list));

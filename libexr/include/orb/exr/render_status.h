@@ -14,6 +14,7 @@ struct RenderStatus {
     std::string reason;            // why it is not complete ("no such file", "stopped at 12 of 64 samples", ...)
     std::uint64_t spp = 0;         // orb:spp
     std::uint64_t target_spp = 0;  // orb:targetSpp
+    std::string sample_ranges;     // orb:sampleRanges ("0:256", "256:256"); "0:spp" for film format 1
     int width = 0, height = 0;
 };
 
