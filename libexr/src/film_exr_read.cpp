@@ -110,42 +110,86 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
     if (!Imf::hasWorldToNDC(header)) fail(path, "missing header attribute worldToNDC");
     m.world_to_camera = from_imath(Imf::worldToCamera(header));
     m.world_to_ndc = from_imath(Imf::worldToNDC(header));
+    if (const auto* frame = header.findTypedAttribute<Imf::IntAttribute>(attr::kFrame)) {
+        const auto& fps = required<Imf::DoubleAttribute>(header, attr::kFps, path);
+        m.frame = FrameInfo{frame->value(), fps.value()};
+    }
     return m;
 }
 
+// Everything the header says, checked: an orb-render image of a format this
+// Orb reads, a plausible size, consistent sample ranges.
+ExrFilmSummary read_summary(const Imf::Header& header, const std::string& path) {
+    const auto* spp = header.findTypedAttribute<Imf::IntAttribute>(attr::kSpp);
+    if (!spp)
+        fail(path, "not an orb-render image (no orb:spp header attribute); --resume needs an EXR written by orb-render");
+    const auto& format = required<Imf::IntAttribute>(header, attr::kFilmFormat, path);
+    if (format.value() < kOldestReadableFilmFormat || format.value() > kFilmFormatVersion)
+        fail(path, "film format " + std::to_string(format.value()) + " is not one this Orb reads (" +
+                       std::to_string(kOldestReadableFilmFormat) + " to " + std::to_string(kFilmFormatVersion) + ")");
+    if (spp->value() < 1) fail(path, "orb:spp must be at least 1, got " + std::to_string(spp->value()));
+
+    ExrFilmSummary summary;
+    summary.sample_ranges = read_sample_ranges(header, format.value(), spp->value(), path);
+    summary.samples_per_pixel = static_cast<std::uint64_t>(spp->value());
+    const Imath::Box2i window = header.dataWindow();
+    if (window != header.displayWindow() || window.min.x != 0 || window.min.y != 0)
+        fail(path, "data window differs from the display window at the origin; not an orb-render image");
+    const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
+    const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
+    if (width < 1 || height < 1 || width * height > kMaxPixels) fail(path, "implausible image size");
+    summary.width = static_cast<int>(width);
+    summary.height = static_cast<int>(height);
+    summary.metadata = read_metadata(header, path);
+    try {
+        summary.passes = parse_passes(required<Imf::StringAttribute>(header, attr::kPasses, path).value());
+    } catch (const std::invalid_argument& e) {
+        fail(path, std::string(attr::kPasses) + ": " + e.what());
+    }
+    return summary;
+}
+
 }  // namespace
+
+ExrFilmSummary read_film_exr_summary(const std::string& path) {
+    check_readable(path);
+    try {
+        Imf::InputFile file(path.c_str());
+        ExrFilmSummary summary = read_summary(file.header(), path);
+        if (!file.isComplete()) fail(path, "truncated EXR (some scanlines are missing)");
+        // isComplete() only sees the offset table: a file cut short or
+        // damaged inside shows when its blocks are decoded. One channel's
+        // slice is enough for OpenEXR to decode every block.
+        const Imf::ChannelList& channels = file.header().channels();
+        if (channels.begin() == channels.end()) fail(path, "has no channels");
+        const Imath::Box2i window = file.header().dataWindow();
+        std::vector<float> values(static_cast<std::size_t>(summary.width) * summary.height);
+        Imf::FrameBuffer frame;
+        frame.insert(channels.begin().name(),
+                     Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
+                                sizeof(float) * static_cast<std::size_t>(summary.width)));
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+        return summary;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        fail(path, std::string("unreadable or truncated EXR: ") + e.what());
+    }
+}
 
 ExrFilm read_film_exr(const std::string& path) {
     check_readable(path);
     try {
         Imf::InputFile file(path.c_str());
         const Imf::Header& header = file.header();
-
-        const auto* spp = header.findTypedAttribute<Imf::IntAttribute>(attr::kSpp);
-        if (!spp)
-            fail(path, "not an orb-render image (no orb:spp header attribute); --resume needs an EXR written by orb-render");
-        const auto& format = required<Imf::IntAttribute>(header, attr::kFilmFormat, path);
-        if (format.value() < kOldestReadableFilmFormat || format.value() > kFilmFormatVersion)
-            fail(path, "film format " + std::to_string(format.value()) + " is not one this Orb reads (" +
-                           std::to_string(kOldestReadableFilmFormat) + " to " + std::to_string(kFilmFormatVersion) +
-                           ")");
-        if (spp->value() < 1) fail(path, "orb:spp must be at least 1, got " + std::to_string(spp->value()));
-        const render::SampleRanges ranges = read_sample_ranges(header, format.value(), spp->value(), path);
-
+        const ExrFilmSummary summary = read_summary(header, path);
+        const long long width = summary.width, height = summary.height;
         const Imath::Box2i window = header.dataWindow();
-        if (window != header.displayWindow() || window.min.x != 0 || window.min.y != 0)
-            fail(path, "data window differs from the display window at the origin; not an orb-render image");
-        const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
-        const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
-        if (width < 1 || height < 1 || width * height > kMaxPixels) fail(path, "implausible image size");
 
         ExrFilm result;
-        result.metadata = read_metadata(header, path);
-        try {
-            result.passes = parse_passes(required<Imf::StringAttribute>(header, attr::kPasses, path).value());
-        } catch (const std::invalid_argument& e) {
-            fail(path, std::string(attr::kPasses) + ": " + e.what());
-        }
+        result.metadata = summary.metadata;
+        result.passes = summary.passes;
 
         // Every channel the listed passes need, read as FLOAT whatever it is stored as.
         std::map<std::string, std::vector<float>> planes;
@@ -172,8 +216,8 @@ ExrFilm read_film_exr(const std::string& path) {
 
         render::Film& film = result.film;
         film.resize(static_cast<int>(width), static_cast<int>(height));
-        film.samples_per_pixel = static_cast<std::uint64_t>(spp->value());
-        film.sample_ranges = ranges;
+        film.samples_per_pixel = summary.samples_per_pixel;
+        film.sample_ranges = summary.sample_ranges;
         detail::planes_to_film(planes, result.passes, film);
         return result;
     } catch (const InputError&) {

@@ -63,6 +63,12 @@ void add_metadata(Imf::Header& header, const render::Film& film, const ExrMetada
     header.insert(attr::kSceneTime, Imf::DoubleAttribute(m.scene_time));
     header.insert(attr::kVersion, Imf::StringAttribute(m.version));
     header.insert(attr::kPasses, Imf::StringAttribute(format_passes(passes)));
+    if (m.frame) {
+        if (m.frame->number < INT_MIN || m.frame->number > INT_MAX)
+            throw std::invalid_argument("orb:frame does not fit the EXR int attribute");
+        header.insert(attr::kFrame, Imf::IntAttribute(static_cast<int>(m.frame->number)));
+        header.insert(attr::kFps, Imf::DoubleAttribute(m.frame->fps));
+    }
     Imf::addWorldToCamera(header, to_imath(m.world_to_camera));
     Imf::addWorldToNDC(header, to_imath(m.world_to_ndc));
 }

@@ -25,17 +25,18 @@ void DeviceFilm::clear(cl::CommandQueue& queue)
                                 floats_in(info) * sizeof(float));
 }
 
-Film DeviceFilm::read(cl::CommandQueue& queue) const
+void DeviceFilm::read(cl::CommandQueue& queue, Film& film) const
 {
-    Film film;
-    film.resize(width_, height_);
+    bool same_shape = film.width == width_ && film.height == height_;
+    for (const film::ChannelInfo& info : film::kChannels)
+        same_shape = same_shape && film.channel(info.channel).size() == floats_in(info);
+    if (!same_shape) film.resize(width_, height_);
     for (const film::ChannelInfo& info : film::kChannels) {
         std::vector<float>& values = film.channel(info.channel);
         queue.enqueueReadBuffer(buffers_[static_cast<int>(info.channel)], CL_FALSE, 0, values.size() * sizeof(float),
                                 values.data());
     }
     queue.finish();
-    return film;
 }
 
 void DeviceFilm::write(cl::CommandQueue& queue, const Film& film)

@@ -16,8 +16,10 @@ public:
 
     // Every channel at its clear value (enqueued; the queue orders it before later passes).
     void clear(cl::CommandQueue& queue);
-    // Copies the sums back; the sample count and ranges are the caller's to fill in.
-    Film read(cl::CommandQueue& queue) const;
+    // Copies the sums back into `film`, reusing its memory when it has this
+    // size already (a frame loop then touches no fresh pages); the sample
+    // count and ranges are the caller's to fill in.
+    void read(cl::CommandQueue& queue, Film& film) const;
     // Uploads `film`'s channels, which must match this size (std::invalid_argument otherwise).
     void write(cl::CommandQueue& queue, const Film& film);
 

@@ -180,10 +180,10 @@ void DeviceRenderer::wait()
     pending_samples_ = 0;
 }
 
-Film DeviceRenderer::read_film()
+void DeviceRenderer::read_film(Film& film)
 {
     try {
-        return film_.read(session_->queue());
+        film_.read(session_->queue(), film);
     } catch (const cl::Error& error) {
         fail(error, "reading the film back");
     }

@@ -41,7 +41,7 @@ public:
     void enqueue(std::uint64_t first_sample, int count);
     void wait();
 
-    Film read_film();              // the sums; samples and ranges are the caller's
+    void read_film(Film& film);    // the sums, into `film` (its memory reused); samples and ranges are the caller's
     void load_film(const Film& film);  // sums to continue from (centre-ray channels included when it holds samples)
 
     // Samples per pixel a pass should take to last the pass length aimed at

@@ -52,6 +52,7 @@ struct Renderer::Impl {
     std::vector<SampleRanges> device_ranges;  // what each device's film holds
     SampleRanges ranges;                      // their union: what the film holds
     std::uint64_t cursor = 0;                 // where render_pass() continues
+    bool film_clear = true;                   // every device film is at its clear values (new frames skip a clear)
 
     std::vector<int> split(int count) const;
     void wait_all(const std::vector<std::size_t>& busy);
@@ -134,7 +135,9 @@ void Renderer::set_seed(std::uint64_t seed)
 void Renderer::clear(std::uint64_t first_sample)
 {
     Impl& r = *impl_;
-    for (auto& device : r.devices) device->clear_film();
+    if (!r.film_clear)
+        for (auto& device : r.devices) device->clear_film();
+    r.film_clear = true;
     for (SampleRanges& ranges : r.device_ranges) ranges = {};
     r.ranges = {};
     r.cursor = first_sample;
@@ -169,6 +172,7 @@ void Renderer::render_samples(std::uint64_t first_sample, int count)
         throw std::invalid_argument("the film already holds some of the samples " + std::to_string(first_sample) +
                                     ":" + std::to_string(count) + " (it holds " + r.ranges.format() + ")");
 
+    r.film_clear = false;
     // Each device takes the next contiguous slice of the range.
     const std::vector<int> shares = r.split(count);
     std::vector<std::size_t> busy;
@@ -195,26 +199,39 @@ const SampleRanges& Renderer::sample_ranges() const { return impl_->ranges; }
 
 Film Renderer::read_film() const
 {
+    Film film;
+    read_film(film);
+    return film;
+}
+
+void Renderer::read_film(Film& film) const
+{
     Impl& r = *impl_;
-    Film total;
-    total.resize(r.config.width, r.config.height);
+    bool first = true;
     for (std::size_t d = 0; d < r.devices.size(); ++d) {
         if (r.device_ranges[d].empty()) continue;
-        Film part = r.devices[d]->read_film();
+        if (first) {
+            // The common case of one device: straight into `film`, no additions.
+            r.devices[d]->read_film(film);
+            film.samples_per_pixel = r.device_ranges[d].total();
+            film.sample_ranges = r.device_ranges[d];
+            first = false;
+            continue;
+        }
+        Film part;
+        r.devices[d]->read_film(part);
         part.samples_per_pixel = r.device_ranges[d].total();
         part.sample_ranges = r.device_ranges[d];
-        if (total.samples_per_pixel == 0)
-            total = std::move(part);  // the common case of one device: no copy, no additions
-        else
-            total.accumulate(part);
+        film.accumulate(part);
     }
-    return total;
+    if (first) film.resize(r.config.width, r.config.height);  // no samples yet: an empty film
 }
 
 void Renderer::load_film(const Film& film)
 {
     Impl& r = *impl_;
     const SampleRanges held = film.held_ranges();
+    r.film_clear = false;
     r.devices.front()->load_film(film);
     for (std::size_t d = 1; d < r.devices.size(); ++d) r.devices[d]->clear_film();
     for (SampleRanges& ranges : r.device_ranges) ranges = {};

@@ -9,6 +9,7 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <functional>
 #include <list>
 
@@ -109,4 +110,16 @@ TEST(FilmRanges, MissingOrInconsistentRangesAndUnknownFormatsAreRefused) {
 
     rewrite(good, bad, [](Imf::Header& header) { header.insert("orb:filmFormat", Imf::IntAttribute(3)); });
     EXPECT_NE(message_of([&] { read_film_exr(bad); }).find("film format 3"), std::string::npos);
+}
+
+TEST(FilmSummary, TellsAFinishedFileFromOneCutShort) {
+    const std::string path = scratch_path("frame.exr");
+    write_film_exr(path, film_of("0:6"), synthetic_metadata(), {});
+    const ExrFilmSummary summary = read_film_exr_summary(path);
+    EXPECT_EQ(summary.samples_per_pixel, 6u);
+    EXPECT_EQ(summary.metadata.target_spp, 64u);
+    EXPECT_EQ(summary.sample_ranges.format(), "0:6");
+    EXPECT_EQ(summary.width, 4);
+    std::filesystem::resize_file(path, std::filesystem::file_size(path) - 100);
+    EXPECT_THROW(read_film_exr_summary(path), orb::InputError);
 }

@@ -119,7 +119,7 @@ CONF
 
 # The process with pid $1 exists, is not a zombie, and runs program $2.
 local_slurm_alive() {
-    [[ -r /proc/$1/cmdline && $(tr '\0' ' ' </proc/$1/cmdline) == *"$2"* ]] &&
+    [[ $({ tr '\0' ' ' </proc/"$1"/cmdline; } 2>/dev/null) == *"$2"* ]] &&
         [[ $(awk '{ print $3 }' "/proc/$1/stat" 2>/dev/null) != Z ]]
 }
 

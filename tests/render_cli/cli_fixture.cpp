@@ -38,6 +38,21 @@ Scene small_scene() {
     return scene;
 }
 
+Scene moving_ball_scene() {
+    Scene scene = small_scene();
+    AnimationNode node;
+    node.name = "mover";
+    AnimationChannel channel;
+    channel.path = AnimationPath::Translation;
+    channel.interpolation = Interpolation::Linear;
+    channel.times = {0.0, 1.0};
+    channel.values = {{-1.5, 0.7, 0.0, 0.0}, {1.5, 0.7, 0.0, 0.0}};
+    node.channels.push_back(channel);
+    scene.animation.nodes.push_back(node);
+    scene.animation.spheres.push_back(SphereBinding{1, 0, {0.0, 0.0, 0.0}, 0.7});
+    return scene;
+}
+
 void RenderCli::SetUp() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     dir_ = (fs::temp_directory_path() / ("orb-render-cli-" + std::to_string(::getpid())) /

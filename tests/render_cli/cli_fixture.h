@@ -18,6 +18,10 @@ namespace orb::test {
 // something in it. 32x24, 4 spp by default.
 Scene small_scene();
 
+// small_scene() with its red ball moving from x = -1.5 at t = 0 to x = 1.5 at
+// t = 1 s (one node, a linear translation channel).
+Scene moving_ball_scene();
+
 class RenderCli : public ::testing::Test {
 protected:
     void SetUp() override;

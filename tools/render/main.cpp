@@ -6,6 +6,7 @@
 #include "orb/cli/tool_main.h"
 #include "render_options.h"
 #include "render_outputs.h"
+#include "render_frames.h"
 #include "render_plan.h"
 #include "render_run.h"
 
@@ -26,7 +27,13 @@ int main(int argc, char** argv) {
             // it reads a byte or builds a kernel, and the lock taken here also
             // covers reading the file that --resume continues in place.
             RenderOutputs outputs = prepare_render_outputs(options);
-            const RenderPlan plan = make_render_plan(options);
-            return options.benchmark ? run_benchmark(plan, options, outputs) : run_render(plan, options, outputs);
+            RenderPlan plan = make_render_plan(options);
+            if (options.benchmark)
+                return renders_frames(options) ? run_frames_benchmark(plan, options, outputs)
+                                               : run_benchmark(plan, options, outputs);
+            // Frames, and outputs left alone when complete, are prepared one at a time.
+            if (renders_frames(options) || options.skip_existing || options.claim)
+                return run_frames(plan, options, outputs);
+            return run_render(plan, options, outputs);
         });
 }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <utility>
 
 #include "orb/cli/messages.h"
 
@@ -39,8 +40,14 @@ std::string format_duration(double seconds) {
     return text;
 }
 
-ProgressReporter::ProgressReporter(bool quiet, double pixels, double time_limit)
-    : enabled_(!quiet), terminal_(::isatty(STDERR_FILENO) == 1), pixels_(pixels), time_limit_(time_limit) {}
+ProgressReporter::ProgressReporter(bool quiet, double pixels, double time_limit, std::string label, double interval)
+    : enabled_(!quiet),
+      terminal_(::isatty(STDERR_FILENO) == 1),
+      pixels_(pixels),
+      time_limit_(time_limit),
+      label_(std::move(label)),
+      interval_(interval),
+      last_line_(std::chrono::steady_clock::now()) {}
 
 std::string ProgressReporter::status_line(const render::ProgressState& s) const {
     // This run's samples per pixel per second gives the time to the target;
@@ -52,7 +59,8 @@ std::string ProgressReporter::status_line(const render::ProgressState& s) const 
     const double fraction = s.target_spp ? std::min(1.0, double(s.spp) / double(s.target_spp)) : 1.0;
 
     char text[256];
-    std::snprintf(text, sizeof text, "pass %d  %llu/%llu spp (%3.0f%%)  %s  elapsed %s  ETA %s", s.pass,
+    std::snprintf(text, sizeof text, "%spass %d  %llu/%llu spp (%3.0f%%)  %s  elapsed %s  ETA %s", label_.c_str(),
+                  s.pass,
                   static_cast<unsigned long long>(s.spp), static_cast<unsigned long long>(s.target_spp),
                   100.0 * fraction, format_rate(s.samples_per_second).c_str(),
                   format_duration(s.elapsed_seconds).c_str(), format_duration(eta).c_str());
@@ -60,7 +68,15 @@ std::string ProgressReporter::status_line(const render::ProgressState& s) const 
 }
 
 void ProgressReporter::on_pass(const render::ProgressState& state) {
-    if (!enabled_ || !terminal_) return;
+    if (!enabled_) return;
+    if (!terminal_) {
+        // A log gets a plain line now and then, so it shows the render is alive.
+        const auto now = std::chrono::steady_clock::now();
+        if (std::chrono::duration<double>(now - last_line_).count() < interval_) return;
+        last_line_ = now;
+        cli::info(status_line(state));
+        return;
+    }
     // Redraw at most ~10 times a second: short GPU passes come far faster.
     const auto now = std::chrono::steady_clock::now();
     if (line_open_ && now - last_draw_ < std::chrono::milliseconds(100)) return;
@@ -71,6 +87,7 @@ void ProgressReporter::on_pass(const render::ProgressState& state) {
 
 void ProgressReporter::on_checkpoint(const render::ProgressState& state, const std::string& output) {
     if (!enabled_ || terminal_) return;
+    last_line_ = std::chrono::steady_clock::now();
     cli::info("checkpoint " + output + ": " + status_line(state));
 }
 

@@ -1,5 +1,6 @@
-// Progress on stderr: a single redrawn line when stderr is a terminal, one
-// plain line per checkpoint otherwise; nothing under -q.
+// Progress on stderr: a single redrawn line when stderr is a terminal; when
+// it is not (CI and farm logs), a plain line every `interval` seconds and one
+// per checkpoint; nothing under -q.
 #pragma once
 
 #include <chrono>
@@ -16,7 +17,9 @@ std::string format_duration(double seconds);         // "42.0 s", "3 min 05 s"
 class ProgressReporter {
 public:
     // `time_limit` 0 means none; it shortens the ETA when it comes first.
-    ProgressReporter(bool quiet, double pixels, double time_limit);
+    // `label` starts every line ("frame 12: "). `interval` is the time
+    // between plain lines when stderr is not a terminal.
+    ProgressReporter(bool quiet, double pixels, double time_limit, std::string label = "", double interval = 5.0);
 
     void on_pass(const render::ProgressState& state);
     void on_checkpoint(const render::ProgressState& state, const std::string& output);
@@ -29,8 +32,11 @@ private:
     bool terminal_;
     double pixels_;
     double time_limit_;
+    std::string label_;
+    double interval_;
     bool line_open_ = false;
     std::chrono::steady_clock::time_point last_draw_{};
+    std::chrono::steady_clock::time_point last_line_;
 };
 
 }  // namespace orb::render_cli

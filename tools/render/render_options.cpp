@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "orb/cli/exr_output_name.h"
+#include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
 #include "orb/cli/tool_main.h"
 #include "orb/exr/passes.h"
@@ -74,6 +75,8 @@ const char* kExamples = R"(Examples:
   orb-render --resume out.exr scene.json -o out.exr --spp 4096
   orb-render scene.json --sample-range 512:512 -o part2.exr && orb-merge part*.exr -o out.exr
   orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
+  orb-render shot.glb --frames 1-240 -o shots/beauty.%04d.exr
+  orb-render shot.glb --frame 48 -o shots/beauty.####.exr --skip-existing
   orb-render --list-devices
   orb-render --benchmark scenes/cornell.json --width 640 --height 480
 
@@ -113,6 +116,25 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_option("--benchmark-seconds", o.benchmark_seconds, "Timed part of --benchmark (default 5)")
         ->check(kPositiveSeconds);
     app.add_option("--time-at", o.time_at, "Render an animated scene at this time in seconds")->check(kFiniteNumber);
+    app.add_option("--frames", o.frames,
+                   "Render these frames of an animation: 1-240, 1-240x2 (every 2nd), 1,5,9-12; -o needs a frame "
+                   "number, %04d or ####")
+        ->option_text("SPEC");
+    app.add_option("--frame", o.frame, "Render one frame of an animation (time = frame / fps)")
+        ->check(CLI::Range(0L, static_cast<long>(cli::kMaxFrameNumber)));
+    app.add_option("--fps", o.fps, "Frames per second for --frame/--frames (default 24)")->check(kPositiveSeconds);
+    app.add_flag("--same-seed", o.same_seed, "Every frame with --seed itself, not a seed derived from the frame");
+    app.add_flag("--skip-existing", o.skip_existing,
+                 "Leave outputs that are complete (readable, at their target spp) alone; render the others");
+    app.add_flag("--claim", o.claim,
+                 "Claim each frame with OUT.claim before rendering it, so machines sharing the folder split the "
+                 "frames (implies --skip-existing)");
+    app.add_option("--claim-stale-after", o.claim_stale_after,
+                   "Seconds after which another host's claim that was not refreshed is taken over (default 600)")
+        ->check(kPositiveSeconds);
+    app.add_option("--progress-interval", o.progress_interval,
+                   "Seconds between progress lines when stderr is not a terminal (default 5)")
+        ->check(kPositiveSeconds);
     app.add_option("--kernel-dir", o.kernel_dir, "Development: load OpenCL kernels from this folder");
     app.add_flag("--no-cache", o.no_cache, "Do not read or write cached kernel binaries");
     app.footer(kExamples);
@@ -129,11 +151,27 @@ void check_option_combinations(const RenderOptions& o) {
             throw UsageError(std::string("--passes: ") + e.what());
         }
     }
+    if (o.frame && o.frames) throw UsageError("--frame N and --frames SPEC exclude each other");
+    std::size_t frame_count = o.frame ? 1 : 0;
+    if (o.frames) frame_count = cli::parse_frame_spec(*o.frames).size();
+    if (renders_frames(o)) {
+        const char* conflicting = o.time_at            ? "--time-at (the time is frame / fps)"
+                                  : !o.resume.empty() ? "--resume (render incomplete frames again)"
+                                                      : nullptr;
+        if (conflicting) throw UsageError(std::string("--frame/--frames take no ") + conflicting);
+    } else {
+        const char* frame_only = o.fps ? "--fps" : o.same_seed ? "--same-seed" : nullptr;
+        if (frame_only) throw UsageError(std::string(frame_only) + " needs --frame N or --frames SPEC");
+    }
+    if (!o.resume.empty() && (o.skip_existing || o.claim))
+        throw UsageError(std::string(o.claim ? "--claim" : "--skip-existing") + " and --resume exclude each other");
     if (o.benchmark) {
+        if (o.skip_existing || o.claim)
+            throw UsageError("--benchmark writes no image and takes no --skip-existing or --claim");
         const char* conflicting = !o.output.empty() ? "-o"
                                   : !o.resume.empty() ? "--resume"
                                   : o.checkpoint      ? "--checkpoint"
-                                  : o.spp             ? "--spp"
+                                  : o.spp && !renders_frames(o) ? "--spp (but --benchmark --frames takes it, per frame)"
                                   : o.sample_range    ? "--sample-range"
                                   : o.time_limit      ? "--time"
                                   : o.half            ? "--half"
@@ -154,6 +192,15 @@ void check_option_combinations(const RenderOptions& o) {
     if (cli::is_stdio(o.output) && cli::is_stdio(o.stats_json))
         throw UsageError("-o - and --stats-json - cannot both write to stdout");
     if (cli::is_stdio(o.resume)) throw UsageError("--resume needs an EXR file, not -");
+    // Without --frame/--frames, -o is a plain name, '%' and '#' included.
+    if (frame_count > 1 && cli::count_frame_fields(o.output) == 0) {
+        throw UsageError("--frames renders " + std::to_string(frame_count) +
+                         " frames: -o needs a frame number, e.g. shots/beauty.%04d.exr or shots/beauty.####.exr");
+    }
+    if (o.claim && cli::is_stdio(o.output)) throw UsageError("--claim needs an output file, not -o -");
+    if (o.skip_existing && cli::is_stdio(o.output)) throw UsageError("--skip-existing needs an output file, not -o -");
 }
+
+bool renders_frames(const RenderOptions& o) { return o.frame.has_value() || o.frames.has_value(); }
 
 }  // namespace orb::render_cli

@@ -31,6 +31,15 @@ struct RenderOptions {
     bool benchmark = false;
     double benchmark_seconds = 5.0;
     std::optional<double> time_at;
+    // Animations (frame_plan.h).
+    std::optional<std::string> frames;  // --frames SPEC
+    std::optional<long> frame;          // --frame N
+    std::optional<double> fps;
+    bool same_seed = false;
+    bool skip_existing = false;
+    bool claim = false;
+    double claim_stale_after = 600;   // seconds without a refresh before another host's claim is taken over
+    double progress_interval = 5;     // seconds between progress lines when stderr is not a terminal
     std::string kernel_dir;
     bool no_cache = false;
 };
@@ -39,5 +48,8 @@ void add_render_options(CLI::App& app, RenderOptions& options);
 
 // Combinations CLI11 cannot express; throws orb::cli::UsageError.
 void check_option_combinations(const RenderOptions& options);
+
+// True for --frame or --frames.
+bool renders_frames(const RenderOptions& options);
 
 }  // namespace orb::render_cli

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "frame_plan.h"
+#include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
@@ -105,7 +107,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 
 RenderPlan make_render_plan(const RenderOptions& o) {
     RenderPlan plan;
-    const Scene imported = import_from(o.scene, plan.scene_label);
+    Scene imported = import_from(o.scene, plan.scene_label);
 
     plan.config.device = o.device;
     plan.config.kernel_dir = o.kernel_dir;
@@ -116,22 +118,46 @@ RenderPlan make_render_plan(const RenderOptions& o) {
         apply_resume(o, imported, plan);
         return plan;
     }
-    plan.scene_time = o.time_at.value_or(0.0);
-    plan.scene = pose(imported, plan.scene_time, plan.scene_label);
-    plan.scene_hash = scene_content_hash(plan.scene);
-    plan.config.width = o.width.value_or(plan.scene.render.width);
-    plan.config.height = o.height.value_or(plan.scene.render.height);
+    // The render block (size, spp, depth) is not animated: any pose has the rest pose's.
+    const RenderSettings& settings = imported.render;
+    plan.config.width = o.width.value_or(settings.width);
+    plan.config.height = o.height.value_or(settings.height);
     plan.config.seed = o.seed.value_or(0);
     plan.config.mode = parse_mode(o.mode.value_or("global"));
-    plan.config.max_depth = o.max_depth.value_or(plan.scene.render.max_depth);
-    plan.target_spp = o.spp ? *o.spp : static_cast<std::uint64_t>(plan.scene.render.spp);
+    plan.config.max_depth = o.max_depth.value_or(settings.max_depth);
+    plan.target_spp = o.spp ? *o.spp : static_cast<std::uint64_t>(settings.spp);
     if (o.sample_range) {
         const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
         plan.first_sample = slice.first;
         plan.target_spp = slice.count;
     }
     plan.passes = o.passes ? exr::parse_passes(*o.passes) : exr::all_passes();
+    if (renders_frames(o)) {
+        if (o.frame) {
+            plan.frames = {*o.frame};
+        } else {
+            const cli::FrameSpec spec = cli::parse_frame_spec(*o.frames);
+            plan.frames.assign(spec.begin(), spec.end());
+        }
+        plan.fps = o.fps.value_or(kDefaultFps);
+        plan.same_seed = o.same_seed;
+        plan.base_seed = plan.config.seed;
+        plan.imported = std::move(imported);
+        pose_frame(plan, plan.frames.front());
+        return plan;
+    }
+    plan.scene_time = o.time_at.value_or(0.0);
+    plan.scene = pose(imported, plan.scene_time, plan.scene_label);
+    plan.scene_hash = scene_content_hash(plan.scene);
     return plan;
+}
+
+void pose_frame(RenderPlan& plan, long frame) {
+    plan.scene_time = frame_time(frame, plan.fps);
+    plan.scene = pose(plan.imported, plan.scene_time, plan.scene_label);
+    plan.scene_hash = scene_content_hash(plan.scene);
+    plan.config.seed = plan.same_seed ? plan.base_seed : frame_seed(plan.base_seed, frame);
+    plan.frame = exr::FrameInfo{frame, plan.fps};
 }
 
 exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
@@ -147,6 +173,7 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.world_to_camera = exr::world_to_camera(plan.scene.camera);
     m.world_to_ndc = exr::world_to_ndc(plan.scene.camera, plan.config.width, plan.config.height);
     if (plan.resumed) m.render_seconds = plan.resumed->metadata.render_seconds;
+    m.frame = plan.frame;
     return m;
 }
 

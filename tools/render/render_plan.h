@@ -25,12 +25,25 @@ struct RenderPlan {
     std::vector<exr::Pass> passes;
     bool half = false;
     std::optional<exr::ExrFilm> resumed;  // the film to continue from
+
+    // Animations (--frame/--frames): the frames in order, the scene as read
+    // (posed anew for each frame by pose_frame), and the seed they derive from.
+    std::vector<long> frames;
+    double fps = 0;
+    bool same_seed = false;
+    std::uint64_t base_seed = 0;
+    Scene imported;
+    std::optional<exr::FrameInfo> frame;  // the frame `scene` is posed at
 };
 
 // Reads and imports the scene, then applies the command line (and for
 // --resume the file's header). Throws orb::InputError for bad input or a
 // resume that would not continue the same render.
 RenderPlan make_render_plan(const RenderOptions& options);
+
+// Poses the plan at `frame`: the scene at frame / fps (checked against the
+// scene limits again), its hash, the frame's seed. Throws orb::InputError.
+void pose_frame(RenderPlan& plan, long frame);
 
 // The orb:* metadata for an image of this plan (render seconds and device filled by the caller).
 exr::ExrMetadata plan_metadata(const RenderPlan& plan);

@@ -4,7 +4,9 @@
 
 namespace orb::render_cli {
 
-std::string stats_json(const RunStats& s) {
+namespace {
+
+nlohmann::ordered_json to_json(const RunStats& s) {
     nlohmann::ordered_json device{{"index", s.device.index},
                                   {"name", s.device.name},
                                   {"platform", s.device.platform},
@@ -23,6 +25,18 @@ std::string stats_json(const RunStats& s) {
                              {"device_memory_bytes", s.device_memory_bytes},
                              {"stop_reason", s.stop_reason},
                              {"output", s.output}};
+    if (s.frame) j["frame"] = *s.frame;
+    return j;
+}
+
+}  // namespace
+
+std::string stats_json(const RunStats& s) { return to_json(s).dump(2) + "\n"; }
+
+std::string frames_stats_json(const std::vector<RunStats>& frames, const std::vector<long>& skipped) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const RunStats& frame : frames) list.push_back(to_json(frame));
+    nlohmann::ordered_json j{{"frames", list}, {"skipped", skipped}};
     return j.dump(2) + "\n";
 }
 

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "orb/render/device.h"
 
@@ -21,8 +23,12 @@ struct RunStats {
     std::string stop_reason;         // "spp", "time", "interrupted" or "benchmark"
     std::string output;              // "" for --benchmark
     std::string sample_ranges;       // the sample indices in the image, "0:64"; "" for --benchmark
+    std::optional<long> frame;       // --frame/--frames: the frame number
 };
 
 std::string stats_json(const RunStats& stats);
+
+// --frames: {"frames": [one object per frame rendered], "skipped": [...]}.
+std::string frames_stats_json(const std::vector<RunStats>& frames, const std::vector<long>& skipped);
 
 }  // namespace orb::render_cli

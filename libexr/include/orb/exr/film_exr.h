@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,13 @@ namespace orb::exr {
 // [0, orb:spp) and is still read.
 inline constexpr int kFilmFormatVersion = 2;
 inline constexpr int kOldestReadableFilmFormat = 1;
+
+// The frame of an animation a render is (orb-render --frame/--frames).
+struct FrameInfo {
+    long number = 0;  // orb:frame
+    double fps = 0;   // orb:fps; the scene time is number / fps
+    bool operator==(const FrameInfo&) const = default;
+};
 
 // What a render was made from; stored as orb:* header attributes.
 // The sample count and the sample indices are the film's own (orb:spp,
@@ -36,6 +44,7 @@ struct ExrMetadata {
     double scene_time = 0;         // orb:sceneTime, the animation time rendered (--time-at)
     Matrix44 world_to_camera{};    // worldToCamera (standard attribute)
     Matrix44 world_to_ndc{};       // worldToNDC (standard attribute)
+    std::optional<FrameInfo> frame;  // orb:frame and orb:fps, present only for frames of an animation
 };
 
 enum class ExrCompression { None, Zip, Piz };
@@ -62,6 +71,22 @@ struct ExrFilm {
     std::vector<Pass> passes;  // from orb:passes, every one checked present
     bool half = false;         // some recovered channel is stored as HALF
 };
+
+// What read_film_exr() learns from the header, checked the same way, and
+// that every block of pixels decodes (a file cut short or damaged inside is
+// an error), without keeping the pixels: enough to tell whether a frame is
+// finished (--skip-existing).
+struct ExrFilmSummary {
+    int width = 0;
+    int height = 0;
+    std::uint64_t samples_per_pixel = 0;  // orb:spp
+    render::SampleRanges sample_ranges;   // orb:sampleRanges
+    ExrMetadata metadata;
+    std::vector<Pass> passes;
+};
+
+// Throws orb::InputError as read_film_exr() does, "truncated" included.
+ExrFilmSummary read_film_exr_summary(const std::string& path);
 
 // Reads an orb-render EXR. Throws orb::InputError naming `path` for a missing,
 // unreadable, truncated, non-EXR or non-Orb file, or one missing a channel.

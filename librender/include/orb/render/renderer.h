@@ -79,6 +79,9 @@ public:
 
     // The film: every device's sums added, with the sample count and ranges.
     Film read_film() const;
+    // The same into `film`, reusing its memory when it has this size (frame
+    // after frame, a reused film costs no fresh pages).
+    void read_film(Film& film) const;
     // Continue from these sums: render_pass() then follows the film's
     // highest sample index. The film must have this renderer's size.
     void load_film(const Film& film);

@@ -1,0 +1,112 @@
+#include "render_film.h"
+
+#include "interrupt.h"
+#include "orb/cli/messages.h"
+#include "orb/exr/film_exr.h"
+#include "progress_reporter.h"
+
+namespace orb::render_cli {
+namespace {
+
+class ImageWriter {
+public:
+    ImageWriter(const RenderPlan& plan, cli::OutputFile& output, const render::Renderer& renderer)
+        : output_(output), renderer_(renderer), metadata_(plan_metadata(plan)) {
+        previous_seconds_ = metadata_.render_seconds;
+        metadata_.device = device_label(renderer.device());
+        for (std::size_t i = 1; i < renderer.devices().size(); ++i)
+            metadata_.device += "; " + device_label(renderer.devices()[i]);
+        options_.half = plan.half;
+        options_.passes = plan.passes;
+    }
+
+    FinalImage image(double seconds_this_run, render::Film reuse = {}) {
+        FinalImage image{std::move(reuse), metadata_, options_};
+        renderer_.read_film(image.film);
+        image.metadata.render_seconds = previous_seconds_ + seconds_this_run;
+        return image;
+    }
+    void write(double seconds_this_run) { output_.write(image(seconds_this_run).encode()); }
+
+private:
+    cli::OutputFile& output_;
+    const render::Renderer& renderer_;
+    exr::ExrMetadata metadata_;
+    exr::ExrWriteOptions options_;
+    double previous_seconds_ = 0;
+};
+
+}  // namespace
+
+std::string device_label(const render::DeviceInfo& d) { return d.name + " (" + d.platform + ")"; }
+
+const char* stop_reason_name(render::StopReason reason) {
+    switch (reason) {
+        case render::StopReason::ReachedSpp: return "spp";
+        case render::StopReason::ReachedTime: return "time";
+        case render::StopReason::Interrupted: return "interrupted";
+    }
+    return "?";
+}
+
+FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, const RenderOptions& options,
+                        cli::OutputFile& image, const std::string& label, FrameClaim* claim, render::Film reuse) {
+    const std::uint64_t start_spp = renderer.samples_per_pixel();
+    ImageWriter writer(plan, image, renderer);
+    ProgressReporter progress(cli::quiet(), static_cast<double>(renderer.pixel_count()),
+                              options.time_limit.value_or(0), label, options.progress_interval);
+
+    render::ProgressiveLimits limits;
+    limits.target_spp = plan.target_spp;
+    limits.max_seconds = options.time_limit.value_or(0);
+    limits.checkpoint_seconds = options.checkpoint.value_or(0);
+    render::ProgressiveCallbacks callbacks;
+    callbacks.on_pass = [&](const render::ProgressState& state) {
+        progress.on_pass(state);
+        if (claim) claim->refresh();
+    };
+    callbacks.on_checkpoint = [&](const render::ProgressState& state) {
+        // A checkpoint that cannot be written (a full disk, say) must not
+        // cost the render; the final write reports for good if it persists.
+        try {
+            writer.write(state.elapsed_seconds);
+            progress.on_checkpoint(state, image.display_name());
+        } catch (const std::exception& e) {
+            cli::warning(std::string("checkpoint not written: ") + e.what());
+        }
+    };
+
+    FilmOutcome outcome;
+    render::ProgressState final_state;
+    outcome.reason = render::render_progressively(renderer, limits, callbacks, interrupt_requested(), &final_state);
+    progress.finish(final_state);
+    if (renderer.samples_per_pixel() == 0) return outcome;
+    outcome.image = writer.image(final_state.elapsed_seconds, std::move(reuse));
+    outcome.rendered = true;
+
+    RunStats& stats = outcome.stats;
+    stats.device = renderer.device();
+    stats.width = plan.config.width;
+    stats.height = plan.config.height;
+    stats.device_memory_bytes = renderer.device_memory_bytes();
+    stats.spp = renderer.samples_per_pixel();
+    stats.spp_this_run = stats.spp - start_spp;
+    stats.passes = final_state.pass;
+    stats.seconds = final_state.elapsed_seconds;
+    stats.samples_per_second = final_state.samples_per_second;
+    stats.stop_reason = stop_reason_name(outcome.reason);
+    stats.output = image.path();
+    stats.sample_ranges = renderer.sample_ranges().format();
+    if (plan.frame) stats.frame = plan.frame->number;
+    return outcome;
+}
+
+std::string film_summary(const FilmOutcome& outcome, const render::Renderer& renderer, const cli::OutputFile& image) {
+    const render::SampleRanges& held = renderer.sample_ranges();
+    const bool from_zero = held.ranges().size() == 1 && held.first() == 0;
+    return std::to_string(outcome.stats.spp) + " spp" + (from_zero ? "" : " (samples " + held.format() + ")") +
+           " in " + format_duration(outcome.stats.seconds) + " (" + format_rate(outcome.stats.samples_per_second) +
+           ") -> " + image.display_name();
+}
+
+}  // namespace orb::render_cli

@@ -1,0 +1,49 @@
+// One image: the progressive loop on a renderer that holds the scene, with
+// checkpoints and progress, then the final write. Shared by a single render
+// and by every frame of an animation.
+#pragma once
+
+#include <string>
+
+#include "frame_claim.h"
+#include "orb/cli/output_file.h"
+#include "orb/exr/film_exr.h"
+#include "orb/render/progressive.h"
+#include "orb/render/renderer.h"
+#include "render_options.h"
+#include "render_plan.h"
+#include "run_stats.h"
+
+namespace orb::render_cli {
+
+std::string device_label(const render::DeviceInfo& device);
+const char* stop_reason_name(render::StopReason reason);
+
+// The final image of a render, ready to be encoded and written.
+struct FinalImage {
+    render::Film film;
+    exr::ExrMetadata metadata;
+    exr::ExrWriteOptions options;
+    std::string encode() const { return exr::encode_film_exr(film, metadata, options); }
+};
+
+struct FilmOutcome {
+    render::StopReason reason = render::StopReason::ReachedSpp;
+    bool rendered = false;  // false when stopped before the first pass finished
+    RunStats stats;
+    FinalImage image;       // when rendered; the caller writes it
+};
+
+// Renders `plan` to its target on `renderer` (its scene, seed and film set
+// up by the caller), writing checkpoints to `image`, and returns the final
+// image for the caller to write, read into `reuse` (whose memory a frame
+// loop hands back frame after frame). `label` starts the progress lines; a
+// `claim` is refreshed while rendering.
+FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, const RenderOptions& options,
+                        cli::OutputFile& image, const std::string& label, FrameClaim* claim,
+                        render::Film reuse = {});
+
+// "64 spp (samples 64:64) in 2.1 s (1.3 Msamples/s) -> out.exr"
+std::string film_summary(const FilmOutcome& outcome, const render::Renderer& renderer, const cli::OutputFile& image);
+
+}  // namespace orb::render_cli
