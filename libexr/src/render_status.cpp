@@ -5,7 +5,8 @@
 #include <filesystem>
 #include <system_error>
 
-#include "exr_attributes.h"
+#include "orb/exr/film_exr.h"
+#include "orb/scene/error.h"
 
 namespace orb::exr {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 // carries our own reason instead.
 void ignore_error(exr_const_context_t, exr_result_t, const char*) {}
 
-// Closes the context however inspect_render returns.
+// Closes the context however the check returns.
 struct ReadContext {
     exr_context_t context = nullptr;
     ~ReadContext() {
@@ -22,82 +23,61 @@ struct ReadContext {
     }
 };
 
-// Every chunk's recorded offset and size lie inside the file: the check that
-// catches a file cut short anywhere (Imf::InputFile::isComplete only looks at
-// the offset table, which a file missing its last bytes still has whole).
-bool chunks_inside_file(exr_const_context_t context, const exr_attr_box2i_t& window, std::uintmax_t file_size) {
+// Every block's recorded offset and size lie inside the file: what catches a
+// file cut short anywhere without decoding it (Imf::InputFile::isComplete
+// looks only at the offset table, which a file missing its last bytes still
+// has whole). Empty when they do, else why not.
+std::string blocks_outside_file(const std::string& path) {
+    std::error_code ec;
+    const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
+    if (ec) return "unreadable: " + ec.message();
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.error_handler_fn = ignore_error;
+    ReadContext read;
+    exr_attr_box2i_t window{};
     int32_t lines_per_chunk = 0;
-    if (exr_get_scanlines_per_chunk(context, 0, &lines_per_chunk) != EXR_ERR_SUCCESS || lines_per_chunk < 1)
-        return false;
+    if (exr_start_read(&read.context, path.c_str(), &init) != EXR_ERR_SUCCESS ||
+        exr_get_data_window(read.context, 0, &window) != EXR_ERR_SUCCESS ||
+        exr_get_scanlines_per_chunk(read.context, 0, &lines_per_chunk) != EXR_ERR_SUCCESS || lines_per_chunk < 1)
+        return "unreadable EXR";
     for (long long y = window.min.y; y <= window.max.y; y += lines_per_chunk) {
         exr_chunk_info_t chunk{};
-        if (exr_read_scanline_chunk_info(context, 0, static_cast<int>(y), &chunk) != EXR_ERR_SUCCESS) return false;
-        if (chunk.data_offset > file_size || chunk.packed_size > file_size - chunk.data_offset) return false;
+        if (exr_read_scanline_chunk_info(read.context, 0, static_cast<int>(y), &chunk) != EXR_ERR_SUCCESS ||
+            chunk.data_offset > file_size || chunk.packed_size > file_size - chunk.data_offset)
+            return "truncated or damaged (some scanlines are missing)";
     }
-    return true;
+    return "";
 }
 
 }  // namespace
 
-RenderStatus inspect_render(const std::string& path) {
+RenderStatus inspect_render(const std::string& path, RenderCheck check) {
     RenderStatus status;
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) {
+    status.exists = std::filesystem::exists(path, ec);
+    if (!status.exists) {
         status.reason = "no such file";
         return status;
     }
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        status.reason = "not a regular file";
+    ExrFilmSummary summary;
+    try {
+        summary = check == RenderCheck::Pixels ? read_film_exr_summary(path) : read_film_exr_header(path);
+    } catch (const InputError& e) {
+        // The message names the file first; the reason is what follows.
+        const std::string message = e.what();
+        status.reason = message.rfind(path + ": ", 0) == 0 ? message.substr(path.size() + 2) : message;
         return status;
     }
-    const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
-    if (ec) {
-        status.reason = "unreadable: " + ec.message();
-        return status;
+    if (check == RenderCheck::Structure) {
+        status.reason = blocks_outside_file(path);
+        if (!status.reason.empty()) return status;
     }
-
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.error_handler_fn = ignore_error;
-    ReadContext read;
-    if (exr_start_read(&read.context, path.c_str(), &init) != EXR_ERR_SUCCESS) {
-        status.reason = "not an orb-render EXR (not a readable OpenEXR file)";
-        return status;
-    }
-    exr_storage_t storage{};
-    int32_t parts = 0;
-    if (exr_get_count(read.context, &parts) != EXR_ERR_SUCCESS || parts != 1 ||
-        exr_get_storage(read.context, 0, &storage) != EXR_ERR_SUCCESS || storage != EXR_STORAGE_SCANLINE) {
-        status.reason = "not an orb-render EXR (orb-render writes one scanline part)";
-        return status;
-    }
-    int32_t spp = 0, target = 0;
-    if (exr_attr_get_int(read.context, 0, attr::kSpp, &spp) != EXR_ERR_SUCCESS ||
-        exr_attr_get_int(read.context, 0, attr::kTargetSpp, &target) != EXR_ERR_SUCCESS || spp < 1 || target < 1) {
-        status.reason = "not an orb-render EXR (no orb:spp and orb:targetSpp)";
-        return status;
-    }
-    status.spp = static_cast<std::uint64_t>(spp);
-    status.target_spp = static_cast<std::uint64_t>(target);
-    // Files from before sample slices (film format 1) hold the samples 0 ... spp-1.
-    const char* ranges = nullptr;
-    int32_t ranges_length = 0;
-    if (exr_attr_get_string(read.context, 0, attr::kSampleRanges, &ranges_length, &ranges) == EXR_ERR_SUCCESS &&
-        ranges && ranges_length >= 0)
-        status.sample_ranges.assign(ranges, static_cast<std::size_t>(ranges_length));
-    else
-        status.sample_ranges = "0:" + std::to_string(status.spp);
-    exr_attr_box2i_t window{};
-    if (exr_get_data_window(read.context, 0, &window) != EXR_ERR_SUCCESS || window.max.x < window.min.x ||
-        window.max.y < window.min.y) {
-        status.reason = "not an orb-render EXR (no data window)";
-        return status;
-    }
-    status.width = static_cast<int>(static_cast<long long>(window.max.x) - window.min.x + 1);
-    status.height = static_cast<int>(static_cast<long long>(window.max.y) - window.min.y + 1);
-    if (!chunks_inside_file(read.context, window, file_size)) {
-        status.reason = "truncated or damaged (some scanlines are missing)";
-        return status;
-    }
+    status.readable = true;
+    status.spp = summary.samples_per_pixel;
+    status.target_spp = summary.metadata.target_spp;
+    status.sample_ranges = summary.sample_ranges.format();
+    status.width = summary.width;
+    status.height = summary.height;
     if (status.spp < status.target_spp) {
         status.reason = "stopped at " + std::to_string(status.spp) + " of " + std::to_string(status.target_spp) +
                         " samples per pixel";

@@ -109,8 +109,9 @@ TEST_F(FramesCli, MissingNamesFramesThatAreNotCompleteRenders) {
     // Files that exist but do not count are explained; an absent one is not.
     EXPECT_THAT(r.err, HasSubstr("frame 4: " + path("f.0004.exr") + ": stopped at "));
     EXPECT_THAT(r.err, HasSubstr("of 100000 samples per pixel"));
-    EXPECT_THAT(r.err, HasSubstr("frame 5: " + path("f.0005.exr") + ": not an orb-render EXR"));
-    EXPECT_THAT(r.err, HasSubstr("frame 6: " + path("f.0006.exr") + ": not a regular file"));
+    EXPECT_THAT(r.err, HasSubstr("frame 5: " + path("f.0005.exr") + ": not an OpenEXR file"));
+    EXPECT_THAT(r.err, HasSubstr("frame 6: " + path("f.0006.exr") + ": is a directory"));
+    EXPECT_THAT(r.err, HasSubstr("frame 3: " + path("f.0003.exr") + ": truncated or damaged"));
     EXPECT_THAT(r.err, HasSubstr("frame 3: " + path("f.0003.exr")));
     EXPECT_THAT(r.err, ::testing::Not(HasSubstr("frame 2:")));
     EXPECT_THAT(r.err, ::testing::Not(HasSubstr("frame 1:")));

@@ -1,7 +1,6 @@
-// Whether an EXR that orb-render wrote is a finished render, read from its
-// header and offset table only (no pixels), so that checking a long sequence
-// of large frames stays cheap (the offset table and chunk headers). Tools that skip finished work (orb-frames
-// --missing, orb-farm) share this one definition of "finished".
+// Whether an EXR that orb-render wrote is a finished render: the one
+// definition that orb-render --skip-existing, orb-frames --missing and
+// orb-farm share.
 #pragma once
 
 #include <cstdint>
@@ -9,20 +8,30 @@
 
 namespace orb::exr {
 
+// How closely to look. Both check the header as read_film_exr() does and
+// that the render reached its target; they differ in how they find a file
+// that is cut short or damaged:
+//   Structure: every block's offset and size lie inside the file (reads the
+//              header, the offset table and the block headers: milliseconds
+//              for any size, so a farm can check a whole sequence at once);
+//   Pixels:    every block decodes (reads and decompresses the whole image,
+//              about a second for a 1920x1080 frame of all passes; catches
+//              damage inside a block too). orb-render uses it before it
+//              skips a frame.
+enum class RenderCheck { Structure, Pixels };
+
 struct RenderStatus {
-    bool complete = false;
-    std::string reason;            // why it is not complete ("no such file", "stopped at 12 of 64 samples", ...)
-    std::uint64_t spp = 0;         // orb:spp
-    std::uint64_t target_spp = 0;  // orb:targetSpp
-    std::string sample_ranges;     // orb:sampleRanges ("0:256", "256:256"); "0:spp" for film format 1
+    bool exists = false;            // a file (or something) is at the path
+    bool readable = false;          // an orb-render EXR whose header and blocks pass the check
+    bool complete = false;          // readable, and orb:spp reached orb:targetSpp
+    std::string reason;             // why not complete: "no such file", "stopped at 12 of 64 samples per pixel", ...
+    std::uint64_t spp = 0;          // orb:spp
+    std::uint64_t target_spp = 0;   // orb:targetSpp
+    std::string sample_ranges;      // orb:sampleRanges ("0:256", "256:256"); "0:spp" for film format 1
     int width = 0, height = 0;
 };
 
-// Complete means: a readable OpenEXR file with orb-render's orb:spp and
-// orb:targetSpp attributes, orb:spp >= orb:targetSpp (an interrupted or
-// time-limited render stops short of its target), and every scanline present
-// (a file cut short anywhere is not complete). Never throws for a bad file; the
-// reason says what is wrong.
-RenderStatus inspect_render(const std::string& path);
+// Never throws for a bad file; `reason` says what is wrong.
+RenderStatus inspect_render(const std::string& path, RenderCheck check = RenderCheck::Structure);
 
 }  // namespace orb::exr
