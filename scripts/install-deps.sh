@@ -12,6 +12,8 @@ packages=(
   libopenexr-dev libopenimageio-dev libopencolorio-dev
   # tests: GoogleTest, schema validation, reference image tools
   libgtest-dev python3-jsonschema openimageio-tools opencolorio-tools
+  # tests: orb-farm on a one-node Slurm cluster started in a temporary folder
+  slurm-wlm munge
 )
 if [[ "${ORB_WITH_FUZZ:-0}" == 1 ]]; then packages+=(clang libclang-rt-dev); fi
 

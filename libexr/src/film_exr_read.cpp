@@ -156,6 +156,20 @@ ExrFilmSummary read_summary(const Imf::Header& header, const std::string& path) 
 
 }  // namespace
 
+ExrFilmSummary read_film_exr_header(const std::string& path) {
+    check_readable(path);
+    try {
+        Imf::InputFile file(path.c_str());
+        ExrFilmSummary summary = read_summary(file.header(), path);
+        if (!file.isComplete()) fail(path, "truncated EXR (some scanlines are missing)");
+        return summary;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        fail(path, std::string("unreadable or truncated EXR: ") + e.what());
+    }
+}
+
 ExrFilmSummary read_film_exr_summary(const std::string& path) {
     check_readable(path);
     try {

@@ -43,7 +43,10 @@ TEST(FrameSpec, SingleFrame) { EXPECT_THAT(frames("12"), ElementsAre(12)); }
 
 TEST(FrameSpec, RangeIncludesBothEnds) { EXPECT_THAT(frames("1-4"), ElementsAre(1, 2, 3, 4)); }
 
-TEST(FrameSpec, RangeOfOneFrame) { EXPECT_THAT(frames("5-5"), ElementsAre(5)); }
+TEST(FrameSpec, RangeOfOneFrame) {
+    EXPECT_THAT(frames("5-5"), ElementsAre(5));
+    EXPECT_THAT(frames("0-0"), ElementsAre(0));
+}
 
 TEST(FrameSpec, StepStartsAtFirstAndStopsAtOrBeforeLast) {
     EXPECT_THAT(frames("1-10x3"), ElementsAre(1, 4, 7, 10));
@@ -57,6 +60,7 @@ TEST(FrameSpec, KeepsWrittenOrderAndDropsRepeats) {
     // Every fourth frame first, then the rest: the preview-first order a user asks for.
     EXPECT_THAT(frames("1-9x4,1-5"), ElementsAre(1, 5, 9, 2, 3, 4));
     EXPECT_THAT(frames("3,3,3"), ElementsAre(3));
+    EXPECT_THAT(frames("9-10,1,10"), ElementsAre(9, 10, 1));
 }
 
 TEST(FrameSpec, SpacesAroundItemsAreIgnored) { EXPECT_THAT(frames(" 1 , 3-4 "), ElementsAre(1, 3, 4)); }
@@ -86,7 +90,7 @@ TEST(FrameSpec, ErrorsQuoteTheTextAndSayWhatIsExpected) {
 
 TEST(FrameSpec, MalformedListsAreUsageErrors) {
     for (const char* bad : {"", " ", ",", "1,", ",1", "1,,2", "a", "1-", "-3", "1-2-3", "3-1", "1-5x0", "1-5x",
-                            "5x2", "+1", "1.5", "0x10", "1 2", "1-5x-1", "-1-3", "99999999999999999999"}) {
+                            "5x2", "+1", "1.5", "0x10", "1 2", "1-5x-1", "-1-3", "99999999999999999999", "1234567890"}) {
         EXPECT_NE(spec_error(bad), "") << "'" << bad << "' was accepted";
     }
 }

@@ -16,6 +16,7 @@
 #include "orb/cli/output_overlap.h"
 #include "orb/cli/tool_main.h"
 #include "orb/exr/film_exr.h"
+#include "orb/exr/render_status.h"
 #include "orb/scene/error.h"
 #include "progress_reporter.h"
 #include "render_film.h"
@@ -27,20 +28,15 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Why `path` is not a finished render, or nothing when it is one: a readable
-// orb-render EXR, every scanline present, holding its target spp.
+// Why `path` is not a finished render, or nothing when it is one (the one
+// definition of finished, orb::exr::inspect_render; every block decoded,
+// since a frame skipped by mistake costs more than reading it).
 std::optional<std::string> unfinished(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return "it does not exist";
-    try {
-        const exr::ExrFilmSummary summary = exr::read_film_exr_summary(path);
-        if (summary.samples_per_pixel < summary.metadata.target_spp)
-            return "it holds " + std::to_string(summary.samples_per_pixel) + " of its " +
-                   std::to_string(summary.metadata.target_spp) + " spp";
-        return std::nullopt;
-    } catch (const InputError& e) {
-        return std::string("it is unreadable (") + e.what() + ")";
-    }
+    const exr::RenderStatus status = exr::inspect_render(path, exr::RenderCheck::Pixels);
+    if (status.complete) return std::nullopt;
+    if (!status.exists) return "it does not exist";
+    if (!status.readable) return "it is unreadable (" + path + ": " + status.reason + ")";
+    return "it holds " + std::to_string(status.spp) + " of its " + std::to_string(status.target_spp) + " spp";
 }
 
 // A missing or read-only folder fails at once, not at the first frame that

@@ -35,6 +35,7 @@ struct Settings {
     int bits = 0;
     bool no_dither = false;
     std::string frames;
+    bool skip_existing = false;
     bool contact_sheet = false;
     ColorOptions color;
 };
@@ -46,12 +47,13 @@ struct Job {
 std::vector<Job> plan_jobs(const Settings& s) {
     std::vector<Job> jobs;
     if (!s.frames.empty()) {
-        if (s.inputs.size() != 1 || orb::cli::count_frame_fields(s.inputs[0]) == 0)
+        if (s.inputs.size() != 1 || s.inputs[0] == "-" || orb::cli::count_frame_fields(s.inputs[0]) == 0)
             throw UsageError("--frames needs one input pattern with a frame number, e.g. beauty.%04d.exr");
-        if (orb::cli::count_frame_fields(s.output) == 0)
+        if (s.output == "-" || orb::cli::count_frame_fields(s.output) == 0)
             throw UsageError("--frames needs an output pattern with a frame number, e.g. -o beauty.%04d.png");
-        for (int f : orb::cli::parse_frame_spec(s.frames))
-            jobs.push_back({orb::cli::expand_frame_pattern(s.inputs[0], f), orb::cli::expand_frame_pattern(s.output, f)});
+        for (int frame : orb::cli::parse_frame_spec(s.frames))
+            jobs.push_back({orb::cli::expand_frame_pattern(s.inputs[0], frame),
+                            orb::cli::expand_frame_pattern(s.output, frame)});
         return jobs;
     }
     if (s.inputs.size() == 1) return {{s.inputs[0], s.output}};
@@ -75,6 +77,22 @@ void refuse_overlaps(const std::vector<Job>& jobs, const Settings& s) {
     }
     if (!s.color.config_path.empty()) inputs.push_back({"--config", s.color.config_path});
     orb::cli::refuse_overlapping_paths(inputs, outputs);
+}
+
+// --skip-existing: an output that is a regular file OpenImageIO reads to the
+// end is left alone. Outputs are renamed into place only once complete, so
+// a file that does not read was damaged later; it is made again. A device or
+// FIFO is always written.
+bool is_complete_output(const std::string& path) {
+    std::error_code ec;
+    if (path == "-" || !fs::is_regular_file(path, ec)) return false;
+    try {
+        load_image(path);
+        return true;
+    } catch (const std::exception& e) {
+        orb::cli::warning(std::string(e.what()) + "; making it again");
+        return false;
+    }
 }
 
 void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
@@ -127,7 +145,11 @@ int main(int argc, char** argv) {
                 ->option_text("N")
                 ->check(orb::cli::one_of({8, 16, 32}));
             app.add_flag("--no-dither", s.no_dither, "Round instead of dithering when quantising to 8 bits");
-            app.add_option("--frames", s.frames, "Frames for pattern inputs/outputs (%04d or ####): 1-240, 1-240x2, 1,5,9-12")->option_text("SPEC");
+            app.add_option("--frames", s.frames,
+                           "Frames for pattern inputs/outputs (%04d or ####): 1-240, 1-240x2, 1,5,9-12")
+                ->option_text("LIST");
+            app.add_flag("--skip-existing", s.skip_existing,
+                         "Leave outputs that already exist and read as images alone (their inputs may be gone)");
             app.add_flag("--contact-sheet", s.contact_sheet, "Lay out all passes of the input in one labelled image");
             app.footer(
                 "Examples:\n"
@@ -138,6 +160,7 @@ int main(int argc, char** argv) {
                 "  orb-tonemap render.exr --pass normal -o normals.png\n"
                 "  orb-tonemap render.exr --contact-sheet -o passes.png\n"
                 "  orb-tonemap beauty.%04d.exr --frames 1-240 -o png/beauty.%04d.png\n"
+                "  orb-tonemap beauty.####.exr --frames 1-240 --skip-existing -o png/beauty.####.png\n"
                 "  orb-tonemap a.exr b.exr c.exr -o previews/ --format jpg\n"
                 "  orb-tonemap render.exr -o - --format png > render.png\n"
                 "  orb-tonemap --list\n"
@@ -156,20 +179,24 @@ int main(int argc, char** argv) {
             const std::vector<Job> jobs = plan_jobs(s);
             refuse_overlaps(jobs, s);
             const ColorConfig config = load_color_config(s.color);
-            if (jobs.size() == 1) {
-                tonemap_one(jobs[0], s, config);
-                return 0;
-            }
             // Sequences: a bad frame is reported and the rest still get done.
-            int failures = 0;
+            int failures = 0, skipped = 0;
             for (const Job& job : jobs) {
+                if (s.skip_existing && is_complete_output(job.output)) {
+                    ++skipped;
+                    continue;
+                }
                 try {
                     tonemap_one(job, s, config);
                 } catch (const std::exception& e) {
+                    if (jobs.size() == 1) throw;  // one image: run_tool maps the error to its exit code
                     orb::cli::error(e.what());
                     ++failures;
                 }
             }
+            if (skipped)
+                orb::cli::info("skipped " + std::to_string(skipped) + " of " + std::to_string(jobs.size()) +
+                               (skipped == 1 ? " output that exists" : " outputs that exist"));
             if (failures) orb::cli::error(std::to_string(failures) + " of " + std::to_string(jobs.size()) + " images failed");
             return failures ? orb::cli::kFailure : orb::cli::kSuccess;
         });

@@ -89,6 +89,12 @@ struct ExrFilmSummary {
 // Throws orb::InputError as read_film_exr() does, "truncated" included.
 ExrFilmSummary read_film_exr_summary(const std::string& path);
 
+// The same header checks without decoding any pixels (milliseconds for any
+// size of image); the offset table must be whole, but a file cut short
+// inside its last blocks passes. orb::exr::inspect_render (render_status.h)
+// adds the check that every block lies inside the file.
+ExrFilmSummary read_film_exr_header(const std::string& path);
+
 // Reads an orb-render EXR. Throws orb::InputError naming `path` for a missing,
 // unreadable, truncated, non-EXR or non-Orb file, or one missing a channel.
 ExrFilm read_film_exr(const std::string& path);

@@ -1,0 +1,366 @@
+#!/usr/bin/env bash
+# orb-farm without a cluster: usage errors, the --dry-run script, what a
+# re-run submits, and the submission itself against fake sbatch, squeue,
+# scancel and scontrol commands that record what they were asked.
+#
+#   farm_cli_test.sh BIN_DIR SCENES_DIR
+#
+# BIN_DIR holds orb-farm next to orb-render, orb-frames and orb-tonemap.
+set -uo pipefail
+
+bin=$(cd "$1" && pwd)
+scenes=$(cd "$2" && pwd)
+farm=$bin/orb-farm
+scene=$scenes/bounce.gltf
+work=$(mktemp -d "${TMPDIR:-/tmp}/orb-farm-cli.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+
+failures=0
+checks=0
+current="(setup)"
+problem() {
+    printf 'FAIL [%s]: %s\n' "$current" "$*" >&2
+    failures=$((failures + 1))
+}
+section() { current=$1; }
+
+# run CMD...: runs it, keeping status, stdout and stderr.
+run() {
+    "$@" >"$work/out" 2>"$work/err"
+    status=$?
+    out=$(<"$work/out")
+    err=$(<"$work/err")
+}
+expect_status() {
+    checks=$((checks + 1))
+    [[ $status == "$1" ]] || problem "exit status $status, expected $1; stderr: $err"
+}
+expect_in() { # TEXT WHERE(out|err)
+    checks=$((checks + 1))
+    local text=$1 where=${2:-out}
+    [[ ${!where} == *"$text"* ]] || problem "$where lacks '$text'; $where was: ${!where}"
+}
+expect_not_in() {
+    checks=$((checks + 1))
+    local text=$1 where=${2:-out}
+    [[ ${!where} != *"$text"* ]] || problem "$where has '$text'; $where was: ${!where}"
+}
+expect_file() {
+    checks=$((checks + 1))
+    [[ -e $1 ]] || problem "no file $1"
+}
+expect_no_file() {
+    checks=$((checks + 1))
+    [[ ! -e $1 ]] || problem "unexpected file $1"
+}
+
+# A complete 8x6 render of the example animation at PATH with N samples.
+render_complete() {
+    "$bin/orb-render" "$scene" --width 8 --height 6 --spp "$2" -q -o "$1" || problem "could not render $1"
+}
+
+# Renders of one job's script: the `exec` line replaced by a print of frame and samples.
+task_assignments() { # SCRIPT TASK-COUNT
+    local script=$1 count=$2 i
+    for ((i = 0; i < count; i++)); do
+        SLURM_ARRAY_TASK_ID=$i SLURM_ARRAY_JOB_ID=1 bash -c "$(sed 's/^exec .*/echo "$frame $slice $first:$count"/' <<<"$script")" 2>/dev/null
+    done
+}
+
+# The text between the Nth "<<'ORB_FARM_SCRIPT'" and its end marker.
+nth_script() { # N TEXT
+    awk -v n="$1" '/<<.ORB_FARM_SCRIPT.$/ { k++; if (k == n) { on = 1; next } } /^ORB_FARM_SCRIPT$/ { on = 0 } on' <<<"$2"
+}
+
+common=("$scene" --frames 1-4 -o shots/beauty.%04d.exr --width 8 --height 6)
+
+# ---------------------------------------------------------------------------
+section "usage errors"
+usage_case() { # MESSAGE ARGS...
+    local message=$1
+    shift
+    run "$farm" "$@"
+    current="usage: $*"
+    expect_status 2
+    expect_in "orb-farm: error: " err
+    expect_in "$message" err
+    expect_in "Run with --help" err
+    [[ -z $out ]] || problem "stdout not empty: $out"
+}
+usage_case "no SCENE" --frames 1-4 -o b.%04d.exr
+usage_case "no frames: give --frames" "$scene" -o b.%04d.exr
+usage_case "no output: give -o PATTERN" "$scene" --frames 1-4
+usage_case "frame list '3-1': the range 3-1 ends before it starts" "$scene" --frames 3-1 -o b.%04d.exr
+usage_case "'b.exr' has no frame number" "$scene" --frames 1-4 -o b.exr
+usage_case "PATTERN must end in .exr" "$scene" --frames 1-4 -o b.%04d.png
+usage_case "put the frame number in the file name, not in a folder name" "$scene" --frames 1-4 -o s/%04d/b.exr
+usage_case "--slices 2 needs --spp N" "${common[@]}" --slices 2
+usage_case "--slices 5 is more than --spp 4" "${common[@]}" --slices 5 --spp 4
+usage_case "--slices: expected a whole number >= 1, got '0'" "${common[@]}" --slices 0
+usage_case "--spp: expected a whole number >= 1, got '1e3'" "${common[@]}" --spp 1e3
+usage_case "--width: expected a whole number >= 1, got '-3'" "$scene" --frames 1 -o b.%04d.exr --width=-3
+usage_case "--fps: expected a positive number, got 'abc'" "${common[@]}" --fps abc
+usage_case "--fps: expected a positive number, got '0'" "${common[@]}" --fps 0
+usage_case "--tonemap exr would overwrite the rendered frames" "${common[@]}" --tonemap exr
+usage_case "--poll: expected a whole number of seconds >= 1" "${common[@]}" --poll 0
+usage_case "--time-limit: expected a Slurm time" "${common[@]}" --time-limit soon
+usage_case "unknown option '--bogus'" "${common[@]}" --bogus
+usage_case "--dry-run submits nothing to wait for" "${common[@]}" --dry-run --wait
+usage_case "--sbatch-arg --array=1-3: orb-farm sets that option itself" "${common[@]}" --sbatch-arg=--array=1-3
+usage_case "--sbatch-arg: expected an sbatch option" "${common[@]}" --sbatch-arg account
+usage_case "--keep-slices takes no value" "${common[@]}" --keep-slices=yes
+usage_case "--frames needs a value" "$scene" -o b.%04d.exr --frames
+usage_case "one SCENE only" "${common[@]}" other.json
+usage_case "the scene must be a file the nodes can read, not stdin" - --frames 1 -o b.%04d.exr
+
+section "failures and help"
+run "$farm" missing.json --frames 1 -o b.%04d.exr
+expect_status 1
+expect_in "orb-farm: error: missing.json: no such readable file" err
+run "$farm" --help
+expect_status 0
+expect_in "Usage: orb-farm SCENE --frames LIST -o PATTERN"
+run "$farm" --version
+expect_status 0
+expect_in "orb-farm (Orb) "
+
+# ---------------------------------------------------------------------------
+section "dry run: frames x slices"
+# No Slurm command on PATH: a dry run needs none, and must create nothing.
+run env PATH=/usr/bin:/bin "$farm" "${common[@]}" --slices 2 --spp 16 --tonemap png --partition gpu \
+    --gres gpu:2 --time-limit 10:00 --cpus-per-task 4 --max-running 3 --sbatch-arg=--account=anim \
+    --dry-run -- --mode direct --seed 7
+expect_status 0
+expect_no_file shots
+expect_in "# 8 render task(s): slices of 4 frame(s), 2 slices a frame"
+expect_in "# 1 collect job, frames 1-4"
+expect_in "--array=0-7%3"
+expect_in "--gres=gpu:2"
+expect_in "--time=10:00"
+expect_in "--cpus-per-task=4"
+expect_in "--partition=gpu"
+expect_in "--output=$work/shots/orb-farm/logs/render-%A_%a.log"
+expect_in "--output=$work/shots/orb-farm/logs/collect-%j.log"
+expect_in "--job-name=orb-farm:beauty "
+expect_in "--job-name=orb-farm:beauty:collect"
+expect_in "--dependency=afterany:\$render_job_1 <<"
+expect_in "task_frames=(1 1 2 2 3 3 4 4)"
+expect_in "task_slices=(1 2 1 2 1 2 1 2)"
+expect_in "--sample-range \"\$first:\$count\" -o $work/shots/orb-farm/slices/beauty.%04d.s\${slice}of2.exr --mode direct --seed 7"
+expect_in "--collect --frames 1-4 -o $work/shots/beauty.%04d.exr --slices 2 --spp 16 --width 8 --height 6 --tonemap png"
+checks=$((checks + 1))
+[[ $(grep -c -- '--account=anim' <<<"$out") == 2 ]] || problem "--account=anim is not on both sbatch lines"
+# Only the render tasks ask for GPUs.
+checks=$((checks + 1))
+[[ $(grep -c -- '--gres' <<<"$out") == 1 ]] || problem "--gres is on more than the render job"
+render_script=$(nth_script 1 "$out")
+run task_assignments "$render_script" 8
+expect_in "1 1 0:8
+1 2 8:8
+2 1 0:8
+2 2 8:8
+3 1 0:8
+3 2 8:8
+4 1 0:8
+4 2 8:8"
+# The dry run is itself a shell script.
+checks=$((checks + 1))
+bash -n <<<"$(PATH=/usr/bin:/bin "$farm" "${common[@]}" --slices 2 --spp 16 --dry-run)" || problem "the dry run is not valid shell"
+
+section "dry run: uneven slices cover every sample once"
+run "$farm" "$scene" --frames 7 -o shots/b.%04d.exr --slices 3 --spp 10 --dry-run
+expect_status 0
+run task_assignments "$(nth_script 1 "$out")" 3
+expect_in "7 1 0:3
+7 2 3:3
+7 3 6:4"
+
+section "dry run: one task per frame"
+run "$farm" "$scene" --frames 1-9x4,2 -o shots/b.####.exr --spp 32 --fps 30 --dry-run
+expect_status 0
+expect_in "# 4 render task(s), frames 1-2,5,9"
+expect_in "task_frames=(1 5 9 2)"
+expect_in "--frame \"\$frame\" --fps 30 --spp 32 -o $work/shots/b.####.exr"
+expect_not_in "collect"
+expect_not_in "--sample-range"
+
+section "dry run: more tasks than MaxArraySize"
+mkdir -p "$work/fake-slurm"
+cat >"$work/fake-slurm/scontrol" <<'EOF'
+#!/bin/bash
+[[ $* == "show config" ]] && printf 'Configuration data as of now\nMaxArraySize            = 3\nMaxJobCount = 10000\n'
+EOF
+chmod +x "$work/fake-slurm/scontrol"
+run env PATH="$work/fake-slurm:$PATH" "$farm" "${common[@]}" --slices 2 --spp 4 --dry-run
+expect_status 0
+expect_in "render_job_1=\$(sbatch"
+expect_in "render_job_3=\$(sbatch"
+expect_not_in "render_job_4"
+expect_in "--dependency=afterany:\$render_job_1:\$render_job_2:\$render_job_3"
+checks=$((checks + 1))
+[[ $(grep -c -- '--array=0-2 ' <<<"$out") == 2 && $(grep -c -- '--array=0-1 ' <<<"$out") == 1 ]] ||
+    problem "8 tasks with MaxArraySize 3 are not arrays of 3, 3 and 2"
+chunk_tasks=""
+for n in 1 2 3; do
+    script=$(nth_script "$n" "$out")
+    chunk_tasks+=$(task_assignments "$script" "$(grep -o 'task_frames=([^)]*)' <<<"$script" | wc -w)")$'\n'
+done
+checks=$((checks + 1))
+[[ $chunk_tasks == $'1 1 0:2\n1 2 2:2\n2 1 0:2\n2 2 2:2\n3 1 0:2\n3 2 2:2\n4 1 0:2\n4 2 2:2\n' ]] ||
+    problem "the three arrays do not cover the 8 tasks once each: $chunk_tasks"
+
+# ---------------------------------------------------------------------------
+section "re-run: only missing frames"
+mkdir -p shots
+render_complete shots/beauty.0001.exr 4
+render_complete shots/beauty.0003.exr 4
+"$bin/orb-render" "$scene" --width 8 --height 6 --spp 100000 --time 0.05 -q -o shots/beauty.0004.exr
+run "$farm" "${common[@]}" --spp 4 --dry-run
+expect_status 0
+expect_in "task_frames=(2 4)"
+expect_in "--array=0-1 "
+expect_in "frame 4: $work/shots/beauty.0004.exr: stopped at" err
+# Another sample count makes every frame stale.
+run "$farm" "${common[@]}" --spp 5 --dry-run
+expect_in "task_frames=(1 2 3 4)"
+expect_in "has 4 samples per pixel, not 5" err
+# Without --spp any complete frame counts.
+run "$farm" "${common[@]}" --dry-run
+expect_in "task_frames=(2 4)"
+
+section "re-run: only missing slices"
+mkdir -p shots/orb-farm/slices
+render_slice() { # PATH START:COUNT
+    "$bin/orb-render" "$scene" --width 8 --height 6 --sample-range "$2" -q -o "$1" || problem "could not render $1"
+}
+render_slice shots/orb-farm/slices/beauty.0002.s1of2.exr 0:2
+render_slice shots/orb-farm/slices/beauty.0004.s2of2.exr 0:2 # stale: slice 2 holds samples 2:2
+run "$farm" "${common[@]}" --spp 4 --slices 2 --dry-run
+expect_status 0
+expect_in "task_frames=(2 4 4)"
+expect_in "task_slices=(2 1 2)"
+expect_in "--collect --frames 2,4 "
+expect_in "frame 4: $work/shots/orb-farm/slices/beauty.0004.s2of2.exr: holds samples 0:2, not 2:2" err
+
+section "re-run: only missing images"
+render_complete shots/beauty.0002.exr 4
+render_complete shots/beauty.0004.exr 4
+for f in 1 3 4; do echo image >shots/beauty.000$f.png; done
+run "$farm" "${common[@]}" --spp 4 --tonemap png --dry-run
+expect_status 0
+expect_not_in "render_job"
+expect_in "collect_job=\$(sbatch"
+expect_in "--collect --frames 2 "
+expect_not_in "--dependency"
+echo image >shots/beauty.0002.png
+run "$farm" "${common[@]}" --spp 4 --tonemap png --dry-run
+expect_status 0
+expect_in "all 4 frames are complete, with their png images; nothing to submit" err
+[[ -z $out ]] || problem "a dry run with nothing to do printed a script: $out"
+rm -f shots/*.png
+
+# ---------------------------------------------------------------------------
+section "collect: makes images and reports what is missing"
+run "$farm" --collect --frames 1-4 -o shots/beauty.%04d.exr --spp 4 --tonemap png
+expect_status 0
+for f in 1 2 3 4; do expect_file "shots/beauty.000$f.png"; done
+expect_in "all 4 frames are complete, with their png images" err
+rm shots/beauty.0003.exr
+run "$farm" --collect --frames 1-4 -o shots/beauty.%04d.exr --spp 4
+expect_status 1
+expect_in "orb-farm: error: 1 of 4 frames are not complete: 3" err
+expect_in "frame 3: $work/shots/beauty.0003.exr" err
+expect_in "(no task of it was submitted by orb-farm)" err
+expect_in "run the same orb-farm command again" err
+
+# ---------------------------------------------------------------------------
+section "submission against fake Slurm commands"
+fake=$work/fake-slurm
+rm -rf shots "$fake"
+mkdir -p "$fake"
+cat >"$fake/sbatch" <<'EOF'
+#!/bin/bash
+# Records the options and the script; answers with the next job id, or fails on request.
+d=$(dirname "$0")
+n=$(( $(cat "$d/count" 2>/dev/null || echo 0) + 1 ))
+echo "$n" >"$d/count"
+if [[ -f $d/fail-at && $(<"$d/fail-at") == "$n" ]]; then
+    echo "sbatch: error: Batch job submission failed: Invalid partition name specified" >&2
+    exit 1
+fi
+printf '%s\n' "$@" >"$d/job-$((100 + n)).args"
+cat >"$d/job-$((100 + n)).sh"
+echo "$((100 + n))"
+EOF
+cat >"$fake/squeue" <<'EOF'
+#!/bin/bash
+# The queue: the file "queue" for -u; for -j, one line of "states" per call until it runs out.
+d=$(dirname "$0")
+echo "$*" >>"$d/squeue.calls"
+if [[ $* == *" -u "* || $* == "-h -u"* ]]; then cat "$d/queue" 2>/dev/null; exit 0; fi
+if [[ -s $d/states ]]; then head -n 1 "$d/states" | tr ' ' '\n'; sed -i 1d "$d/states"; fi
+exit 0
+EOF
+cat >"$fake/scancel" <<'EOF'
+#!/bin/bash
+echo "$*" >>"$(dirname "$0")/scancel.calls"
+EOF
+chmod +x "$fake"/*
+fake_path="$fake:$PATH"
+
+run env PATH="$fake_path" "$farm" "${common[@]}" --slices 2 --spp 4 --tonemap png
+expect_status 0
+expect_in "101
+102"
+expect_in "submitted 8 render task(s): slices of 4 frame(s), 2 slices a frame as job 101" err
+expect_in "submitted the collect job 102 for frame(s) 1-4, after job 101" err
+expect_file "$fake/job-101.sh"
+checks=$((checks + 1))
+grep -qx -- "--dependency=afterany:101" "$fake/job-102.args" || problem "the collect job does not wait for the render job"
+grep -qx -- "--comment=orb-farm $work/shots/beauty.%04d.exr" "$fake/job-101.args" || problem "no orb-farm comment on the render job"
+expect_file shots/orb-farm/logs/render-101.sh
+expect_file shots/orb-farm/logs/collect-102.sh
+checks=$((checks + 1))
+cmp -s "$fake/job-101.sh" shots/orb-farm/logs/render-101.sh || problem "the saved render script differs from the submitted one"
+checks=$((checks + 1))
+[[ $(sed -n 3p shots/orb-farm/logs/render-101.tasks) == "101_2 2 1 $work/shots/orb-farm/logs/render-101_2.log" ]] ||
+    problem "task table line 3: $(sed -n 3p shots/orb-farm/logs/render-101.tasks)"
+
+section "a second submission while the first is queued"
+printf '101 orb-farm %s\n102 orb-farm %s\n7 orb-farm %s\n' "$work/shots/beauty.%04d.exr" \
+    "$work/shots/beauty.%04d.exr" "$work/other/beauty.%04d.exr" >"$fake/queue"
+run env PATH="$fake_path" "$farm" "${common[@]}" --slices 2 --spp 4
+expect_status 1
+expect_in "job(s) 101 102 for $work/shots/beauty.%04d.exr are still queued or running" err
+expect_no_file "$fake/job-103.sh"
+run env PATH="$fake_path" "$farm" "${common[@]}" --slices 2 --spp 4 --force -q
+expect_status 0
+expect_in "103
+104"
+[[ -z $err ]] || problem "-q printed: $err"
+rm -f "$fake/queue"
+
+section "sbatch refuses the collect job"
+echo 6 >"$fake/fail-at"
+run env PATH="$fake_path" "$farm" "${common[@]}" --slices 2 --spp 4
+expect_status 1
+expect_in "sbatch refused the collect job: sbatch: error: Batch job submission failed: Invalid partition name specified" err
+expect_in "cancelled job(s) 105 submitted before it" err
+checks=$((checks + 1))
+[[ $(tail -n 1 "$fake/scancel.calls") == 105 ]] || problem "scancel was not asked to cancel job 105"
+rm -f "$fake/fail-at"
+
+section "--wait reports frames that did not arrive"
+printf 'PENDING PENDING RUNNING\nRUNNING\n' >"$fake/states"
+run env PATH="$fake_path" "$farm" "${common[@]}" --spp 4 --wait --poll 1
+expect_status 1
+expect_in "waiting: 2 pending, 1 running" err
+expect_in "waiting: 1 running" err
+expect_in "orb-farm: error: 4 of 4 frames are not complete: 1-4" err
+expect_in "log $work/shots/orb-farm/logs/render-107_0.log does not exist: the task never started" err
+checks=$((checks + 1))
+grep -q -- "-h -r -j 107 -o %T" "$fake/squeue.calls" || problem "--wait did not ask squeue about job 107"
+
+printf '%d checks, %d failed\n' "$checks" "$failures"
+((failures == 0))

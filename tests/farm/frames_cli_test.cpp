@@ -1,0 +1,164 @@
+// orb-frames run as a real executable: frame lists and paths for shell loops,
+// and --missing, which decides what orb-farm submits, on real orb-render EXRs.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "process.h"
+
+namespace fs = std::filesystem;
+using orb::test::ProcessResult;
+using orb::test::run_process;
+using ::testing::HasSubstr;
+
+namespace {
+
+const std::string kScene = std::string(ORB_SCENES_DIR) + "/bounce.gltf";
+
+class FramesCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("orb-frames-cli-" + std::to_string(::getpid())) / info->name();
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    ProcessResult frames(std::vector<std::string> args, const std::string& stdin_path = "") const {
+        args.insert(args.begin(), ORB_FRAMES_EXE);
+        return run_process(args, stdin_path);
+    }
+
+    // A small render of the example animation into `name` (8x6 pixels).
+    void render(const std::string& name, std::vector<std::string> extra) const {
+        std::vector<std::string> args{ORB_RENDER_EXE, kScene, "--width", "8", "--height", "6", "-q", "-o", path(name)};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ProcessResult r = run_process(args);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(FramesCli, PrintsTheFramesOfAListInOrder) {
+    const ProcessResult r = frames({"1-7x3,2,4"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, "1\n4\n7\n2\n");
+}
+
+TEST_F(FramesCli, PrintsPathsOfAPattern) {
+    const ProcessResult r = frames({"9-11", "shots/beauty.####.exr", "--paths"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, "shots/beauty.0009.exr\nshots/beauty.0010.exr\nshots/beauty.0011.exr\n");
+}
+
+TEST_F(FramesCli, ReadsTheListFromStdin) {
+    std::ofstream(path("list")) << "3\n1 2,\n\n10-11\n";
+    const ProcessResult r = frames({"-"}, path("list"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, "3\n1\n2\n10\n11\n");
+}
+
+TEST_F(FramesCli, UsageErrors) {
+    struct Case {
+        std::vector<std::string> args;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {{"3-1"}, "frame list '3-1': the range 3-1 ends before it starts"},
+        {{"1-3", "beauty.exr", "--paths"}, "'beauty.exr' has no frame number"},
+        {{"1-3", "--paths"}, "--paths needs a PATTERN"},
+        {{"1-3", "--missing"}, "--missing needs a PATTERN"},
+        {{"1-3", "b.%04d.exr", "--spp", "4"}, "--spp, --samples, --width and --height go with --missing"},
+        {{"1-3", "b.%s.exr", "--paths"}, "the only % conversions"},
+        {{"1-3", "b.%04d.exr", "--missing", "--spp", "0"}, "--spp"},
+    };
+    for (const Case& c : cases) {
+        const ProcessResult r = frames(c.args);
+        EXPECT_EQ(r.exit_code, 2) << c.message << "\n" << r.err;
+        EXPECT_THAT(r.err, HasSubstr(c.message));
+        EXPECT_EQ(r.out, "");
+    }
+    const ProcessResult empty = frames({"-"});  // stdin is /dev/null
+    EXPECT_EQ(empty.exit_code, 2);
+    EXPECT_THAT(empty.err, HasSubstr("no frames on stdin"));
+}
+
+TEST_F(FramesCli, MissingNamesFramesThatAreNotCompleteRenders) {
+    render("f.0001.exr", {"--spp", "2"});                    // complete
+    render("f.0003.exr", {"--spp", "2"});                    // complete, then cut short below
+    render("f.0004.exr", {"--spp", "100000", "--time", "0.05"});  // stopped by its time limit
+    std::ofstream(path("f.0005.exr")) << "not an EXR";
+    fs::create_directory(path("f.0006.exr"));
+    // Frame 2 is absent. Frame 3 loses its last bytes (a copy that died half way).
+    const auto size = fs::file_size(path("f.0003.exr"));
+    fs::resize_file(path("f.0003.exr"), size - 64);
+
+    const ProcessResult r = frames({"1-6", path("f.%04d.exr"), "--missing"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, "2\n3\n4\n5\n6\n");
+    // Files that exist but do not count are explained; an absent one is not.
+    EXPECT_THAT(r.err, HasSubstr("frame 4: " + path("f.0004.exr") + ": stopped at "));
+    EXPECT_THAT(r.err, HasSubstr("of 100000 samples per pixel"));
+    EXPECT_THAT(r.err, HasSubstr("frame 5: " + path("f.0005.exr") + ": not an OpenEXR file"));
+    EXPECT_THAT(r.err, HasSubstr("frame 6: " + path("f.0006.exr") + ": is a directory"));
+    EXPECT_THAT(r.err, HasSubstr("frame 3: " + path("f.0003.exr") + ": truncated or damaged"));
+    EXPECT_THAT(r.err, HasSubstr("frame 3: " + path("f.0003.exr")));
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("frame 2:")));
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("frame 1:")));
+
+    const ProcessResult quiet = frames({"1-6", path("f.%04d.exr"), "--missing", "-q", "--paths"});
+    EXPECT_EQ(quiet.exit_code, 0);
+    EXPECT_EQ(quiet.err, "");
+    EXPECT_THAT(quiet.out, HasSubstr(path("f.0002.exr") + "\n"));
+}
+
+TEST_F(FramesCli, MissingChecksSampleCountAndSizeWhenAsked) {
+    render("f.0001.exr", {"--spp", "2"});
+    render("f.0002.exr", {"--spp", "3"});
+    EXPECT_EQ(frames({"1-2", path("f.%04d.exr"), "--missing"}).out, "");
+    const ProcessResult spp = frames({"1-2", path("f.%04d.exr"), "--missing", "--spp", "3"});
+    EXPECT_EQ(spp.out, "1\n");
+    EXPECT_THAT(spp.err, HasSubstr("has 2 samples per pixel, not 3"));
+    const ProcessResult size = frames({"1-2", path("f.%04d.exr"), "--missing", "--width", "8", "--height", "5"});
+    EXPECT_EQ(size.out, "1\n2\n");
+    EXPECT_THAT(size.err, HasSubstr("is 8x6, not 8x5"));
+    EXPECT_EQ(frames({"1-2", path("f.%04d.exr"), "--missing", "--width", "8", "--height", "6"}).out, "");
+}
+
+TEST_F(FramesCli, MissingChecksTheSamplesOfASlice) {
+    render("s.0001.exr", {"--sample-range", "4:3"});
+    EXPECT_EQ(frames({"1", path("s.%04d.exr"), "--missing", "--samples", "4:3"}).out, "");
+    EXPECT_EQ(frames({"1", path("s.%04d.exr"), "--missing", "--samples", "04:003"}).out, "");
+    const ProcessResult other = frames({"1", path("s.%04d.exr"), "--missing", "--samples", "0:3"});
+    EXPECT_EQ(other.out, "1\n");
+    EXPECT_THAT(other.err, HasSubstr("holds samples 4:3, not 0:3"));
+    // A whole render holds 0:spp.
+    render("w.0001.exr", {"--spp", "3"});
+    EXPECT_EQ(frames({"1", path("w.%04d.exr"), "--missing", "--samples", "0:3"}).out, "");
+    for (const char* bad : {"3", "1:0", "a:2", ":2", "1:", "-1:2"}) {
+        const ProcessResult r = frames({"1", path("s.%04d.exr"), "--missing", "--samples", bad});
+        EXPECT_EQ(r.exit_code, 2) << bad;
+        EXPECT_THAT(r.err, HasSubstr("--samples: expected START:COUNT")) << bad;
+    }
+}
+
+TEST_F(FramesCli, AClosedStdoutIsAFailure) {
+    // SIGPIPE is ignored by every Orb tool: a closed pipe must be an error, not silence.
+    const ProcessResult r = run_process({"/bin/bash", "-c", std::string(ORB_FRAMES_EXE) + " 1-200000 | head -n 1"});
+    EXPECT_EQ(r.out, "1\n");
+    const ProcessResult status = run_process(
+        {"/bin/bash", "-c", "set -o pipefail; " + std::string(ORB_FRAMES_EXE) + " 1-200000 | head -n 1 >/dev/null"});
+    EXPECT_EQ(status.exit_code, 1) << status.err;
+}
+
+}  // namespace
