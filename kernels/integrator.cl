@@ -79,7 +79,15 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
                         uint2 seed, int max_depth, int mode)
 {
     const Hit hit = intersect_scene(scene, path->o, path->d, path->self);
-    if (hit.id < 0) return false;
+    if (hit.id < 0) {
+        // Escaped: the environment's radiance (kernels/environment.cl). Alpha
+        // stays 0: it is the coverage of spheres, so a render composites over a plate.
+        const float env_pick_pdf = mode == IntegratorMode_Direct ? 1.0f : scene->environment.light_probability;
+        add_by_diffuse_count(out, path->diffuse_vertices,
+                             path->beta * escaped_radiance(scene, path->d, path->from_diffuse, path->from_pdf,
+                                                           env_pick_pdf));
+        return false;
+    }
     const ShadingSphere m = load_sphere(scene, hit.id);
     const float3 d = path->d;
     const float3 p = path->o + hit.t * d;
@@ -124,8 +132,8 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
         if (mode == IntegratorMode_Direct) {
             for (int i = 0; i < light_count; ++i)
                 add_by_diffuse_count(out, vertices,
-                                     path->beta * estimate_direct_light(scene, scene->lights[i].sphere, 1.0f, p, n, hit.id,
-                                                                        m.color, r.u0, r.u1));
+                                     path->beta * estimate_light(scene, scene->lights[i].sphere, 1.0f, p, n, hit.id,
+                                                                 m.color, r.u0, r.u1));
         } else if (light_count > 0) {
             // One uniform number picks the light by power (the alias table)
             // and, rescaled to [0, 1) again, samples it.
@@ -136,9 +144,9 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
             // (the same picks and pdfs, fewer loads; 2% on an H100).
             const float u = fmin(scaled - (float)slot, 0x1.fffffep-1f);
             add_by_diffuse_count(out, vertices,
-                                 path->beta * estimate_direct_light(scene, scene->lights[slot].sphere,
-                                                                    1.0f / (float)light_count, p, n, hit.id, m.color, u,
-                                                                    r.u1));
+                                 path->beta * estimate_light(scene, scene->lights[slot].sphere,
+                                                             1.0f / (float)light_count, p, n, hit.id, m.color, u,
+                                                             r.u1));
 #else
             const float rest = scaled - (float)slot;
             SCENE_MEM const LightRecord* entry = &scene->lights[slot];
@@ -149,8 +157,8 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
                                  0x1.fffffep-1f);
             SCENE_MEM const LightRecord* light = &scene->lights[pick];
             add_by_diffuse_count(out, vertices,
-                                 path->beta * estimate_direct_light(scene, light->sphere, light->probability, p, n,
-                                                                    hit.id, m.color, u, r.u1));
+                                 path->beta * estimate_light(scene, light->sphere, light->probability, p, n,
+                                                             hit.id, m.color, u, r.u1));
 #endif
         }
     }
@@ -204,6 +212,7 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     scene.light_count = params.scene.light_count;
     scene.outside_packet_count = params.scene.outside_packet_count;
     scene.bvh_node_count = params.scene.bvh_node_count;
+    scene.environment = params.environment;
 
     const CameraParams cam = params.camera;
     const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);

@@ -133,6 +133,7 @@ void Renderer::Impl::fill_fixed_params(const Camera& camera)
 {
     params.camera = layout_camera(camera, config.width, config.height);
     params.scene = scene.counts;
+    params.environment = scene.environment;
     device::RenderSettings& settings = params.settings;
     settings.width = config.width;
     settings.height = config.height;

@@ -49,6 +49,12 @@ private:
     std::vector<std::string> warnings_;
 };
 
+// ---- an asset without light (gltf_default_light.cpp) ----
+
+// Gives a scene that has no light the default uniform environment
+// (kDefaultEnvironmentRadiance), with a warning naming --no-default-light.
+void add_default_light(Scene& scene, Diagnostics& diagnostics);
+
 // ---- what Orb drops (gltf_ignored.cpp) ----
 
 // Counts what the imported content uses that Orb does not render, for one

@@ -42,7 +42,17 @@ struct GltfImportOptions {
     // Directional lights become a distant large emitter (else: a warning).
     bool directional_lights = false;
     LightUnits light_units = LightUnits::Photometric;
+    // An asset that brings no light at all (no punctual light imported, no
+    // emissive material on a sphere) gets the default environment,
+    // kDefaultEnvironmentRadiance, with a warning (docs/gltf.md).
+    bool default_light = true;
 };
+
+// The default environment's uniform radiance: under it a diffuse surface of
+// albedo a has radiance exactly a (nothing else lights it), so every base
+// colour shows at its own value, the neutral look of a glTF viewer, and
+// white maps to display white.
+inline constexpr double kDefaultEnvironmentRadiance = 1.0;
 
 struct GltfImportResult {
     Scene scene;
