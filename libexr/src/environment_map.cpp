@@ -78,14 +78,18 @@ EnvironmentImage read_environment_exr(const std::string& path) {
         const std::ptrdiff_t x_stride = 3 * sizeof(float), y_stride = x_stride * static_cast<std::ptrdiff_t>(width);
         const std::ptrdiff_t origin = -(static_cast<std::ptrdiff_t>(window.min.x) * x_stride +
                                         static_cast<std::ptrdiff_t>(window.min.y) * y_stride);
+        // A frame buffer holds each channel once: grey (Y) is read into R and copied.
+        const bool grey = names[0] == names[1];
         Imf::FrameBuffer frame;
-        for (int c = 0; c < 3; ++c) {
+        for (int c = 0; c < (grey ? 1 : 3); ++c) {
             char* first = reinterpret_cast<char*>(image.rgb.data() + c);
             frame.insert(names[c], Imf::Slice(Imf::FLOAT, first + origin, x_stride, y_stride));
         }
         if (!file.isComplete()) fail(path, "truncated EXR (some scanlines or tiles are missing)");
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
+        if (grey)
+            for (std::size_t i = 0; i < image.rgb.size(); i += 3) image.rgb[i + 1] = image.rgb[i + 2] = image.rgb[i];
         return image;
     } catch (const InputError&) {
         throw;
