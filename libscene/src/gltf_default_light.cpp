@@ -6,16 +6,16 @@
 
 namespace orb::gltf {
 
-void add_default_light(Scene& scene, Diagnostics& diagnostics) {
+void add_default_light(Scene& scene, const std::string& source, std::vector<std::string>& notices) {
     if (scene_has_light(scene)) return;
     const double l = kDefaultEnvironmentRadiance;
     scene.environment = Environment{};
     scene.environment.kind = EnvironmentKind::Color;
     scene.environment.color = {l, l, l};
-    diagnostics.warn(diagnostics.source() +
-                     ": the asset has no light (no KHR_lights_punctual light imported, no emissive material); added a "
-                     "uniform white environment of radiance " + detail::format_number(l) +
-                     " (--no-default-light leaves the scene unlit)");
+    notices.push_back(source +
+                      ": the asset has no light (no KHR_lights_punctual light imported, no emissive material); added a "
+                      "uniform white environment of radiance " + detail::format_number(l) +
+                      " (--no-default-light leaves the scene unlit)");
 }
 
 }  // namespace orb::gltf

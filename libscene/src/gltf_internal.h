@@ -52,8 +52,9 @@ private:
 // ---- an asset without light (gltf_default_light.cpp) ----
 
 // Gives a scene that has no light the default uniform environment
-// (kDefaultEnvironmentRadiance), with a warning naming --no-default-light.
-void add_default_light(Scene& scene, Diagnostics& diagnostics);
+// (kDefaultEnvironmentRadiance), with a notice naming --no-default-light.
+// It loses nothing, so it is a notice, not a warning that --strict refuses.
+void add_default_light(Scene& scene, const std::string& source, std::vector<std::string>& notices);
 
 // ---- what Orb drops (gltf_ignored.cpp) ----
 

@@ -92,6 +92,7 @@ int run(Arguments& args) {
     orb::ImportResult imported =
         orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
     report_losses(imported.warnings, args.strict, source);
+    for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
 
     std::string text;

@@ -32,6 +32,7 @@ Scene import_from(const std::string& path, std::string& label) {
         cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
     ImportResult imported = import_scene(bytes, label, base_dir);
     for (const std::string& message : imported.warnings) cli::warning(message);
+    for (const std::string& message : imported.notices) cli::warning(message);
     // The map's texels join the scene before it is hashed (they are part of its identity) and rendered.
     exr::load_environment_map(imported.scene, base_dir, label);
     if (!scene_has_light(imported.scene))

@@ -56,7 +56,8 @@ inline constexpr double kDefaultEnvironmentRadiance = 1.0;
 
 struct GltfImportResult {
     Scene scene;
-    std::vector<std::string> warnings;
+    std::vector<std::string> warnings;  // what the import left out or changed (fatal under --strict)
+    std::vector<std::string> notices;   // what it added that the asset does not say (the default light); never fatal
 };
 
 // `source` names the input in messages; external buffers are read only from
