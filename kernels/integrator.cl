@@ -7,8 +7,17 @@
 // still traced, for the emission it may hit (the BSDF half of the MIS pair at
 // that vertex), but it scatters no further.
 
-// Russian roulette applies from this scattering event on.
+// Russian roulette applies from this scattering event on (a build option
+// for experiments: -DRR_START_EVENT=N).
+#ifndef RR_START_EVENT
 #define RR_START_EVENT 2
+#endif
+// A path whose throughput (refraction's scaling divided out) is at least
+// this survives the roulette for sure; below it, it survives with
+// probability throughput / RR_THRESHOLD.
+#ifndef RR_THRESHOLD
+#define RR_THRESHOLD 1.0f
+#endif
 
 typedef struct {
     float3 emission;  // paths with no diffuse vertex (emitters seen directly or through specular chains)
@@ -173,7 +182,7 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
         // scaling of refraction is divided out of q (as pbrt-v4's etaScale):
         // inside glass beta carries (1/1.5)^2, which is no loss of energy, and
         // paths there would otherwise die 2.25 times too often.
-        const float q = fmin(1.0f, beta_max / eta2);
+        const float q = fmin(1.0f, beta_max / (eta2 * RR_THRESHOLD));
         if (r.u4 >= q) return false;
         beta *= 1.0f / q;
     }
@@ -190,9 +199,46 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
     return true;
 }
 
+// What one finished camera path adds to each summed channel of the film
+// (ORB_FILM_CHANNELS in film_channels.h; a new channel gets its line here).
+// A sample whose radiance is not finite (never expected) would poison the
+// pixel's sums for good, so it adds no light at all.
+inline void film_add_sample(FilmSums* sums, const PathSample* s)
+{
+    float3 emission = s->emission, direct = s->direct, indirect = s->indirect;
+    float3 radiance = (emission + direct) + indirect;
+    if (!all(isfinite(radiance))) emission = direct = indirect = radiance = (float3)(0.0f);
+    sums->radiance += radiance;
+    sums->alpha += s->alpha;
+    sums->direct += direct;
+    sums->indirect += indirect;
+    sums->emission += emission;
+    sums->albedo += s->albedo;
+    sums->normal += s->normal;
+    sums->radiance_sq += radiance * radiance;
+}
+
+// The centre-ray channels: not averages, but what the ray through the pixel
+// centre and the lens centre hits.
+inline FilmCentre film_centre_ray(const SceneView* scene, const CameraParams* cam, int x, int y, int width,
+                                  int height)
+{
+    CameraParams pinhole = *cam;
+    pinhole.lens_radius = 0.0f;
+    float3 o, d;
+    camera_ray(&pinhole, (float)x + 0.5f, (float)y + 0.5f, width, height, 0.0f, 0.0f, &o, &d);
+    const Hit hit = intersect_scene(scene, o, d, -1);
+    FilmCentre centre;
+    centre.depth = hit.id < 0 ? INFINITY : hit.t;
+    // The tables are in BVH order; the id pass names the scene's sphere.
+    centre.object_id = hit.id < 0 ? -1.0f : (float)scene->spheres[hit.id].scene_index;
+    return centre;
+}
+
 // The signature is generated from ORB_RENDER_PASS_ARGUMENTS (device_types.h),
-// the list the host binds from: film sums, scene tables, then the parameters.
-#define ORB_KERNEL_FILM_ARG(name) __global float* name,
+// the list the host binds from: film buffers (one per row of the channel
+// table), scene tables, then the parameters.
+#define ORB_KERNEL_FILM_ARG(name, ...) __global float* film_##name,
 #define ORB_KERNEL_TABLE_ARG(type, name) SCENE_MEM const type* name,
 #define ORB_KERNEL_PARAMS_ARG(type, name) type name
 __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG))
@@ -221,10 +267,8 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     const ulong first_sample = ((ulong)params.pass.first_sample_hi << 32) | (ulong)params.pass.first_sample_lo;
     const int sample_count = params.pass.sample_count;
 
-    float3 sum_radiance = (float3)(0.0f), sum_radiance_sq = (float3)(0.0f);
-    float3 sum_direct = (float3)(0.0f), sum_indirect = (float3)(0.0f), sum_emission = (float3)(0.0f);
-    float3 sum_albedo = (float3)(0.0f), sum_normal = (float3)(0.0f);
-    float sum_alpha = 0.0f;
+    FilmSums sums;
+    film_sums_clear(&sums);
 
     // Path regeneration: one flat loop of ray casts, where a finished path
     // hands over to the pass's next sample at once. On GPUs the threads of a
@@ -237,45 +281,16 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     if (sample_count > 0) begin_camera_path(&cam, x, y, width, height, pixel, sample, seed, &path, &s);
     while (i < sample_count) {
         if (extend_path(&scene, &path, &s, pixel, sample, seed, max_depth, mode)) continue;
-
-        float3 radiance = (s.emission + s.direct) + s.indirect;
-        if (!all(isfinite(radiance))) {
-            // Never expected; a non-finite sample would poison the pixel's sum forever.
-            s.emission = s.direct = s.indirect = radiance = (float3)(0.0f);
-        }
-        sum_radiance += radiance;
-        sum_radiance_sq += radiance * radiance;
-        sum_direct += s.direct;
-        sum_indirect += s.indirect;
-        sum_emission += s.emission;
-        sum_albedo += s.albedo;
-        sum_normal += s.normal;
-        sum_alpha += s.alpha;
-
+        film_add_sample(&sums, &s);
         if (++i < sample_count) {
             sample = first_sample + (ulong)i;
             begin_camera_path(&cam, x, y, width, height, pixel, sample, seed, &path, &s);
         }
     }
-
-    film_add3(film_radiance, pixel, sum_radiance);
-    film_add3(film_radiance_sq, pixel, sum_radiance_sq);
-    film_add3(film_direct, pixel, sum_direct);
-    film_add3(film_indirect, pixel, sum_indirect);
-    film_add3(film_emission, pixel, sum_emission);
-    film_add3(film_albedo, pixel, sum_albedo);
-    film_add3(film_normal, pixel, sum_normal);
-    film_add1(film_alpha, pixel, sum_alpha);
+    ORB_FILM_ADD_SUMS
 
     if (params.pass.write_centre_ray) {
-        // Depth and object id are not averages: they come from the pixel-centre ray.
-        CameraParams pinhole = cam;  // through the lens centre
-        pinhole.lens_radius = 0.0f;
-        float3 o, d;
-        camera_ray(&pinhole, (float)x + 0.5f, (float)y + 0.5f, width, height, 0.0f, 0.0f, &o, &d);
-        const Hit hit = intersect_scene(&scene, o, d, -1);
-        film_depth[pixel] = hit.id < 0 ? INFINITY : hit.t;
-        // The tables are in BVH order; the id pass names the scene's sphere.
-        film_object_id[pixel] = hit.id < 0 ? -1.0f : (float)scene.spheres[hit.id].scene_index;
+        const FilmCentre centre = film_centre_ray(&scene, &cam, x, y, width, height);
+        ORB_FILM_SET_CENTRE
     }
 }

@@ -39,8 +39,10 @@ typedef struct {
 
 inline float bits24_to_unit(uint bits24) { return (float)bits24 * 0x1p-24f; }
 
-// Block 0 is the camera (pixel jitter, lens); block k >= 1 is scattering event k.
-inline Rand5 rng_block(uint pixel, ulong sample, uint block, uint2 seed)
+// The independent sampler (--sampler independent): five fresh numbers per
+// (pixel, sample, block). kernels/sampler.cl chooses between it and the
+// low-discrepancy sampler.
+inline Rand5 philox_block(uint pixel, ulong sample, uint block, uint2 seed)
 {
     const uint4 ctr = (uint4)(block, (uint)sample, (uint)(sample >> 32), pixel);
     const uint4 x = philox4x32(ctr, seed);

@@ -5,10 +5,12 @@ namespace orb::exr::attr {
 
 inline constexpr const char* kFilmFormat = "orb:filmFormat";
 inline constexpr const char* kSpp = "orb:spp";
+inline constexpr const char* kSampleRanges = "orb:sampleRanges";
 inline constexpr const char* kTargetSpp = "orb:targetSpp";
 inline constexpr const char* kSeed = "orb:seed";
 inline constexpr const char* kMaxDepth = "orb:maxDepth";
 inline constexpr const char* kMode = "orb:mode";
+inline constexpr const char* kSampler = "orb:sampler";
 inline constexpr const char* kDevice = "orb:device";
 inline constexpr const char* kRenderSeconds = "orb:renderSeconds";
 inline constexpr const char* kSceneFile = "orb:sceneFile";

@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace orb::exr::detail {
 namespace {
 
+using film::ChannelInfo;
+using film::StoredAs;
 using Sums = std::vector<float>;
+using Planes = std::map<std::string, std::vector<float>>;
 
 // Means are computed in double and rounded once, so mean * n gives the sum
 // back within a float rounding or two.
@@ -20,59 +22,95 @@ std::vector<float> mean_channel(const Sums& sums, int components, int component,
     return out;
 }
 
-void add_mean_planes(std::vector<Plane>& planes, const std::vector<std::string>& names, const Sums& sums,
-                     double n) {
-    const int components = static_cast<int>(names.size());
-    for (int c = 0; c < components; ++c) planes.push_back({names[c], false, mean_channel(sums, components, c, n)});
-}
-
 // Variance of the pixel mean: the unbiased sample variance divided by n,
 // (sum_sq/n - mean^2) * n/(n-1) / n. Zero with fewer than two samples,
 // where it is unknown (and where sum_sq = mean^2 recovers exactly).
-std::vector<float> variance_channel(const render::Film& film, int component, std::uint64_t n) {
-    std::vector<float> out(film.pixel_count(), 0.0f);
+std::vector<float> variance_channel(const Sums& sums, const Sums& sums_sq, int components, int component,
+                                    std::uint64_t n) {
+    std::vector<float> out(sums.size() / components, 0.0f);
     if (n < 2) return out;
     const double nd = static_cast<double>(n);
     for (std::size_t i = 0; i < out.size(); ++i) {
-        const double mean = static_cast<double>(film.radiance[i * 3 + component]) / nd;
-        const double mean_sq = static_cast<double>(film.radiance_sq[i * 3 + component]) / nd;
+        const double mean = static_cast<double>(sums[i * components + component]) / nd;
+        const double mean_sq = static_cast<double>(sums_sq[i * components + component]) / nd;
         out[i] = static_cast<float>(std::max(0.0, mean_sq - mean * mean) / (nd - 1.0));
     }
     return out;
 }
 
-void add_normal_planes(std::vector<Plane>& planes, const render::Film& film, double n) {
-    const std::size_t pixels = film.pixel_count();
-    Plane x{"N.X", false, std::vector<float>(pixels)}, y{"N.Y", false, std::vector<float>(pixels)},
-        z{"N.Z", false, std::vector<float>(pixels)}, length{"orb.normalLength", true, std::vector<float>(pixels)};
+// The mean normalised (0 where it is 0), then its length.
+void add_unit_vector_planes(std::vector<Plane>& planes, const ChannelInfo& channel, const Sums& sums, double n) {
+    const int components = channel.components;
+    const std::size_t pixels = sums.size() / components;
+    std::vector<Plane> out;
+    for (int c = 0; c <= components; ++c)
+        out.push_back({channel.exr_names[c], c == components, std::vector<float>(pixels)});
     for (std::size_t i = 0; i < pixels; ++i) {
-        const double m[3] = {film.normal[i * 3] / n, film.normal[i * 3 + 1] / n, film.normal[i * 3 + 2] / n};
-        const double l = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-        const double scale = l > 0 ? 1.0 / l : 0.0;
-        x.values[i] = static_cast<float>(m[0] * scale);
-        y.values[i] = static_cast<float>(m[1] * scale);
-        z.values[i] = static_cast<float>(m[2] * scale);
-        length.values[i] = static_cast<float>(l);
+        double mean[3] = {0, 0, 0};
+        double length_sq = 0;
+        for (int c = 0; c < components; ++c) {
+            mean[c] = sums[i * components + c] / n;
+            length_sq += mean[c] * mean[c];
+        }
+        const double length = std::sqrt(length_sq);
+        const double scale = length > 0 ? 1.0 / length : 0.0;
+        for (int c = 0; c < components; ++c) out[c].values[i] = static_cast<float>(mean[c] * scale);
+        out[components].values[i] = static_cast<float>(length);
     }
-    planes.push_back(std::move(x));
-    planes.push_back(std::move(y));
-    planes.push_back(std::move(z));
-    planes.push_back(std::move(length));
+    for (Plane& plane : out) planes.push_back(std::move(plane));
 }
 
-const std::vector<float>& plane(const std::map<std::string, std::vector<float>>& planes, const std::string& name) {
+std::vector<float> component_values(const Sums& values, int components, int component) {
+    std::vector<float> out(values.size() / components);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = values[i * components + component];
+    return out;
+}
+
+const std::vector<float>& plane(const Planes& planes, const std::string& name) {
     auto it = planes.find(name);
     if (it == planes.end()) throw std::logic_error("channel " + name + " was not read");
     return it->second;
 }
 
-void recover_sums(const std::map<std::string, std::vector<float>>& planes, const std::vector<std::string>& names,
-                  double n, Sums& sums) {
-    const std::size_t components = names.size();
-    for (std::size_t c = 0; c < components; ++c) {
-        const auto& means = plane(planes, names[c]);
+void recover_means(const Planes& planes, const ChannelInfo& channel, double n, Sums& sums) {
+    const int components = channel.components;
+    for (int c = 0; c < components; ++c) {
+        const auto& means = plane(planes, channel.exr_names[c]);
         for (std::size_t i = 0; i < means.size(); ++i)
             sums[i * components + c] = static_cast<float>(static_cast<double>(means[i]) * n);
+    }
+}
+
+void recover_unit_vector(const Planes& planes, const ChannelInfo& channel, double n, Sums& sums) {
+    const int components = channel.components;
+    const auto& length = plane(planes, channel.exr_names[components]);
+    for (int c = 0; c < components; ++c) {
+        const auto& unit = plane(planes, channel.exr_names[c]);
+        for (std::size_t i = 0; i < unit.size(); ++i)
+            sums[i * components + c] = static_cast<float>(static_cast<double>(unit[i]) * length[i] * n);
+    }
+}
+
+// sum_sq = n ((n-1) var + mean^2), from the paired channel's stored mean.
+void recover_second_moment(const Planes& planes, const ChannelInfo& channel, double n, Sums& sums_sq) {
+    const ChannelInfo& paired = film::info(channel.paired);
+    const int components = channel.components;
+    for (int c = 0; c < components; ++c) {
+        const auto& variance = plane(planes, channel.exr_names[c]);
+        const auto& mean = plane(planes, paired.exr_names[c]);
+        for (std::size_t i = 0; i < variance.size(); ++i) {
+            const double m = mean[i];
+            sums_sq[i * components + c] =
+                static_cast<float>(n * ((n - 1.0) * static_cast<double>(variance[i]) + m * m));
+        }
+    }
+}
+
+void recover_values(const Planes& planes, const ChannelInfo& channel, Sums& values) {
+    const int components = channel.components;
+    for (int c = 0; c < components; ++c) {
+        const auto& stored = plane(planes, channel.exr_names[c]);
+        for (std::size_t i = 0; i < stored.size(); ++i) values[i * components + c] = stored[i];
     }
 }
 
@@ -83,71 +121,46 @@ std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pa
     const double n = static_cast<double>(film.samples_per_pixel);
     std::vector<Plane> planes;
     for (Pass pass : passes) {
-        switch (pass) {
-            case Pass::Beauty: {
-                add_mean_planes(planes, {"R", "G", "B"}, film.radiance, n);
-                planes.push_back({"A", false, mean_channel(film.alpha, 1, 0, n)});
-                break;
+        for (const ChannelInfo* channel : pass_film_channels(pass)) {
+            const Sums& sums = film.channel(channel->channel);
+            const int components = channel->components;
+            switch (channel->stored_as) {
+                case StoredAs::Mean:
+                    for (int c = 0; c < components; ++c)
+                        planes.push_back({channel->exr_names[c], false, mean_channel(sums, components, c, n)});
+                    break;
+                case StoredAs::UnitVector: add_unit_vector_planes(planes, *channel, sums, n); break;
+                case StoredAs::VarianceOfMean:
+                    for (int c = 0; c < components; ++c)
+                        planes.push_back({channel->exr_names[c], false,
+                                          variance_channel(film.channel(channel->paired), sums, components, c,
+                                                           film.samples_per_pixel)});
+                    break;
+                case StoredAs::Value:
+                    for (int c = 0; c < components; ++c)
+                        planes.push_back({channel->exr_names[c], true, component_values(sums, components, c)});
+                    break;
             }
-            case Pass::Direct: add_mean_planes(planes, pass_channels(pass), film.direct, n); break;
-            case Pass::Indirect: add_mean_planes(planes, pass_channels(pass), film.indirect, n); break;
-            case Pass::Emission: add_mean_planes(planes, pass_channels(pass), film.emission, n); break;
-            case Pass::Albedo: add_mean_planes(planes, pass_channels(pass), film.albedo, n); break;
-            case Pass::Normal: add_normal_planes(planes, film, n); break;
-            case Pass::Depth: planes.push_back({"Z", true, film.depth}); break;
-            case Pass::Variance: {
-                const auto names = pass_channels(pass);
-                for (int c = 0; c < 3; ++c) planes.push_back({names[c], false, variance_channel(film, c, film.samples_per_pixel)});
-                break;
-            }
-            case Pass::Id: planes.push_back({"id", true, film.object_id}); break;
         }
     }
     return planes;
 }
 
-void planes_to_film(const std::map<std::string, std::vector<float>>& planes, const std::vector<Pass>& passes,
-                    render::Film& film) {
-    const std::uint64_t count = film.samples_per_pixel;
-    const double n = static_cast<double>(count);
+void planes_to_film(const Planes& planes, const std::vector<Pass>& passes, render::Film& film) {
+    const double n = static_cast<double>(film.samples_per_pixel);
     for (Pass pass : passes) {
-        switch (pass) {
-            case Pass::Beauty:
-                recover_sums(planes, {"R", "G", "B"}, n, film.radiance);
-                recover_sums(planes, {"A"}, n, film.alpha);
-                break;
-            case Pass::Direct: recover_sums(planes, pass_channels(pass), n, film.direct); break;
-            case Pass::Indirect: recover_sums(planes, pass_channels(pass), n, film.indirect); break;
-            case Pass::Emission: recover_sums(planes, pass_channels(pass), n, film.emission); break;
-            case Pass::Albedo: recover_sums(planes, pass_channels(pass), n, film.albedo); break;
-            case Pass::Normal: {
-                const auto& length = plane(planes, "orb.normalLength");
-                const std::string names[3] = {"N.X", "N.Y", "N.Z"};
-                for (int c = 0; c < 3; ++c) {
-                    const auto& unit = plane(planes, names[c]);
-                    for (std::size_t i = 0; i < unit.size(); ++i)
-                        film.normal[i * 3 + c] = static_cast<float>(static_cast<double>(unit[i]) * length[i] * n);
-                }
-                break;
+        for (const ChannelInfo* channel : pass_film_channels(pass)) {
+            Sums& sums = film.channel(channel->channel);
+            switch (channel->stored_as) {
+                case StoredAs::Mean: recover_means(planes, *channel, n, sums); break;
+                case StoredAs::UnitVector: recover_unit_vector(planes, *channel, n, sums); break;
+                case StoredAs::VarianceOfMean:
+                    // Needs the paired channel's mean, from its own pass.
+                    if (contains(passes, film::info(channel->paired).layer))
+                        recover_second_moment(planes, *channel, n, sums);
+                    break;
+                case StoredAs::Value: recover_values(planes, *channel, sums); break;
             }
-            case Pass::Depth: film.depth = plane(planes, "Z"); break;
-            case Pass::Variance: {
-                // sum_sq = n ((n-1) var + mean^2), from the stored mean; needs beauty.
-                if (!contains(passes, Pass::Beauty)) break;
-                const std::string mean_names[3] = {"R", "G", "B"};
-                const auto names = pass_channels(pass);
-                for (int c = 0; c < 3; ++c) {
-                    const auto& variance = plane(planes, names[c]);
-                    const auto& mean = plane(planes, mean_names[c]);
-                    for (std::size_t i = 0; i < variance.size(); ++i) {
-                        const double m = mean[i];
-                        film.radiance_sq[i * 3 + c] =
-                            static_cast<float>(n * ((n - 1.0) * static_cast<double>(variance[i]) + m * m));
-                    }
-                }
-                break;
-            }
-            case Pass::Id: film.object_id = plane(planes, "id"); break;
         }
     }
 }

@@ -1,5 +1,7 @@
 // Converting between the film's sums and the per-pixel values stored in the
-// EXR (means, the variance of the mean, normalised normals), and back.
+// EXR, channel by channel as the film's channel table says (its stored_as
+// column: means, the variance of the mean, unit vectors with their length,
+// values), and back.
 #pragma once
 
 #include <map>

@@ -31,6 +31,12 @@ constexpr long long kMaxPixels = 1LL << 28;
     throw InputError(path + ": " + message);
 }
 
+std::string format_names(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ",") + name;
+    return text;
+}
+
 template <typename Attribute>
 const Attribute& required(const Imf::Header& header, const char* name, const std::string& path) {
     const Attribute* attribute = header.findTypedAttribute<Attribute>(name);
@@ -69,6 +75,23 @@ void check_readable(const std::string& path) {
     if (deep) fail(path, "is a deep EXR, not an orb-render image");
 }
 
+// The samples the file holds: orb:sampleRanges (format 2 on), which must
+// count orb:spp samples; a format 1 file holds the first orb:spp.
+render::SampleRanges read_sample_ranges(const Imf::Header& header, int format, int spp, const std::string& path) {
+    if (format < 2) return render::SampleRanges(render::SampleRange{0, static_cast<std::uint64_t>(spp)});
+    const std::string& text = required<Imf::StringAttribute>(header, attr::kSampleRanges, path).value();
+    render::SampleRanges ranges;
+    try {
+        ranges = render::SampleRanges::parse(text);
+    } catch (const std::invalid_argument& e) {
+        fail(path, std::string(attr::kSampleRanges) + ": " + e.what());
+    }
+    if (ranges.total() != static_cast<std::uint64_t>(spp))
+        fail(path, std::string(attr::kSampleRanges) + " " + text + " holds " + std::to_string(ranges.total()) +
+                       " samples per pixel but orb:spp is " + std::to_string(spp));
+    return ranges;
+}
+
 ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
     ExrMetadata m;
     m.target_spp = static_cast<std::uint64_t>(std::max(0, required<Imf::IntAttribute>(header, attr::kTargetSpp, path).value()));
@@ -77,6 +100,11 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
     m.mode = required<Imf::StringAttribute>(header, attr::kMode, path).value();
     if (m.mode != "global" && m.mode != "direct")
         fail(path, std::string(attr::kMode) + " must be global or direct, got '" + m.mode + "'");
+    // Files from before there was a choice were rendered with independent numbers.
+    const auto* sampler = header.findTypedAttribute<Imf::StringAttribute>(attr::kSampler);
+    m.sampler = sampler ? sampler->value() : "independent";
+    if (m.sampler != "sobol" && m.sampler != "independent")
+        fail(path, std::string(attr::kSampler) + " must be sobol or independent, got '" + m.sampler + "'");
     m.device = required<Imf::StringAttribute>(header, attr::kDevice, path).value();
     m.render_seconds = required<Imf::DoubleAttribute>(header, attr::kRenderSeconds, path).value();
     m.scene_file = required<Imf::StringAttribute>(header, attr::kSceneFile, path).value();
@@ -102,10 +130,12 @@ ExrFilm read_film_exr(const std::string& path) {
         if (!spp)
             fail(path, "not an orb-render image (no orb:spp header attribute); --resume needs an EXR written by orb-render");
         const auto& format = required<Imf::IntAttribute>(header, attr::kFilmFormat, path);
-        if (format.value() != kFilmFormatVersion)
-            fail(path, "film format " + std::to_string(format.value()) + " is not the one this Orb reads (" +
-                           std::to_string(kFilmFormatVersion) + ")");
+        if (format.value() < kOldestReadableFilmFormat || format.value() > kFilmFormatVersion)
+            fail(path, "film format " + std::to_string(format.value()) + " is not one this Orb reads (" +
+                           std::to_string(kOldestReadableFilmFormat) + " to " + std::to_string(kFilmFormatVersion) +
+                           ")");
         if (spp->value() < 1) fail(path, "orb:spp must be at least 1, got " + std::to_string(spp->value()));
+        const render::SampleRanges ranges = read_sample_ranges(header, format.value(), spp->value(), path);
 
         const Imath::Box2i window = header.dataWindow();
         if (window != header.displayWindow() || window.min.x != 0 || window.min.y != 0)
@@ -148,6 +178,7 @@ ExrFilm read_film_exr(const std::string& path) {
         render::Film& film = result.film;
         film.resize(static_cast<int>(width), static_cast<int>(height));
         film.samples_per_pixel = static_cast<std::uint64_t>(spp->value());
+        film.sample_ranges = ranges;
         detail::planes_to_film(planes, result.passes, film);
         return result;
     } catch (const InputError&) {
@@ -164,8 +195,16 @@ void require_resumable(const ExrFilm& file, const std::vector<Pass>& wanted, con
         if (!contains(file.passes, pass))
             fail(path, std::string("has no ") + pass_name(pass) + " pass to continue (it holds " +
                            format_passes(file.passes) + ")");
-    if (contains(wanted, Pass::Variance) && !contains(file.passes, Pass::Beauty))
-        fail(path, "the variance pass cannot be continued without the beauty pass (R,G,B) in the same file");
+    // A variance is continued from its sum of squares, which needs the mean it is the variance of.
+    for (Pass pass : wanted)
+        for (const film::ChannelInfo* channel : pass_film_channels(pass)) {
+            if (channel->stored_as != film::StoredAs::VarianceOfMean) continue;
+            const Pass needed = film::info(channel->paired).layer;
+            if (!contains(file.passes, needed))
+                fail(path, std::string("the ") + pass_name(pass) + " pass cannot be continued without the " +
+                               pass_name(needed) + " pass (" + format_names(pass_channels(needed)) +
+                               ") in the same file");
+        }
 }
 
 }  // namespace orb::exr

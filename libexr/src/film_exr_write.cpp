@@ -51,10 +51,12 @@ void add_metadata(Imf::Header& header, const render::Film& film, const ExrMetada
                   const std::vector<Pass>& passes) {
     header.insert(attr::kFilmFormat, Imf::IntAttribute(kFilmFormatVersion));
     header.insert(attr::kSpp, Imf::IntAttribute(checked_int(film.samples_per_pixel, "orb:spp")));
+    header.insert(attr::kSampleRanges, Imf::StringAttribute(film.held_ranges().format()));
     header.insert(attr::kTargetSpp, Imf::IntAttribute(checked_int(m.target_spp, "orb:targetSpp")));
     header.insert(attr::kSeed, Imf::StringAttribute(std::to_string(m.seed)));
     header.insert(attr::kMaxDepth, Imf::IntAttribute(m.max_depth));
     header.insert(attr::kMode, Imf::StringAttribute(m.mode));
+    header.insert(attr::kSampler, Imf::StringAttribute(m.sampler));
     header.insert(attr::kDevice, Imf::StringAttribute(m.device));
     header.insert(attr::kRenderSeconds, Imf::DoubleAttribute(m.render_seconds));
     header.insert(attr::kSceneFile, Imf::StringAttribute(m.scene_file));

@@ -6,49 +6,38 @@
 namespace orb::exr {
 
 const std::vector<Pass>& all_passes() {
-    static const std::vector<Pass> passes{Pass::Beauty, Pass::Direct, Pass::Indirect, Pass::Emission, Pass::Albedo,
-                                          Pass::Normal, Pass::Depth,  Pass::Variance, Pass::Id};
+    static const std::vector<Pass> passes = [] {
+        std::vector<Pass> list;
+        for (const film::LayerInfo& layer : film::kLayers) list.push_back(layer.layer);
+        return list;
+    }();
     return passes;
 }
 
-const char* pass_name(Pass pass) {
-    switch (pass) {
-        case Pass::Beauty: return "beauty";
-        case Pass::Direct: return "direct";
-        case Pass::Indirect: return "indirect";
-        case Pass::Emission: return "emission";
-        case Pass::Albedo: return "albedo";
-        case Pass::Normal: return "normal";
-        case Pass::Depth: return "depth";
-        case Pass::Variance: return "variance";
-        case Pass::Id: return "id";
-    }
-    return "?";
+const char* pass_name(Pass pass) { return film::info(pass).name; }
+
+std::vector<const film::ChannelInfo*> pass_film_channels(Pass pass) {
+    std::vector<const film::ChannelInfo*> channels;
+    for (const film::ChannelInfo& channel : film::kChannels)
+        if (channel.layer == pass) channels.push_back(&channel);
+    return channels;
 }
 
 std::vector<std::string> pass_channels(Pass pass) {
-    auto rgb = [](const std::string& layer) {
-        return std::vector<std::string>{layer + ".R", layer + ".G", layer + ".B"};
-    };
-    switch (pass) {
-        case Pass::Beauty: return {"R", "G", "B", "A"};
-        case Pass::Direct: return rgb("direct");
-        case Pass::Indirect: return rgb("indirect");
-        case Pass::Emission: return rgb("emission");
-        case Pass::Albedo: return rgb("albedo");
-        case Pass::Normal: return {"N.X", "N.Y", "N.Z"};
-        case Pass::Depth: return {"Z"};
-        case Pass::Variance: return rgb("variance");
-        case Pass::Id: return {"id"};
-    }
-    return {};
+    std::vector<std::string> names;
+    for (const film::ChannelInfo* channel : pass_film_channels(pass))
+        for (int i = 0; i < channel->shown_exr_names(); ++i) names.push_back(channel->exr_names[i]);
+    return names;
 }
 
 std::vector<std::string> pass_resume_channels(Pass pass) {
     // N is normalised for viewers; the length of the mean normal (below 1
     // where the pixel straddles an edge or a miss) is what the sum needs back.
-    if (pass == Pass::Normal) return {"orb.normalLength"};
-    return {};
+    std::vector<std::string> names;
+    for (const film::ChannelInfo* channel : pass_film_channels(pass))
+        for (int i = channel->shown_exr_names(); i < channel->exr_name_count; ++i)
+            names.push_back(channel->exr_names[i]);
+    return names;
 }
 
 bool contains(const std::vector<Pass>& passes, Pass pass) {

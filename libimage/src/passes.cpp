@@ -1,5 +1,7 @@
 #include "orb/image/passes.h"
 
+#include "orb/kernels/film_channels.h"
+
 #include <algorithm>
 #include <cctype>
 #include <optional>
@@ -142,19 +144,30 @@ std::optional<Pass> find_pass(const Image& image, const std::string& requested) 
 
 }  // namespace
 
+// orb-render's layers and their kinds: the film's channel table
+// (kernels/include/orb/kernels/film_channels.h).
 const std::vector<std::string>& canonical_pass_names() {
-    static const std::vector<std::string> names = {"beauty", "direct",  "indirect", "emission", "albedo",
-                                                   "normal", "depth",   "variance", "id"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> list;
+        for (const film::LayerInfo& layer : film::kLayers) list.push_back(layer.name);
+        return list;
+    }();
     return names;
 }
 
 PassKind kind_of_pass(const std::string& canonical_name) {
     const std::string n = lower(canonical_name);
-    if (n == "normal") return PassKind::Normal;
-    if (n == "depth") return PassKind::Depth;
-    if (n == "id") return PassKind::Id;
-    if (n == "variance") return PassKind::Variance;
-    return PassKind::Color;
+    for (const film::LayerInfo& layer : film::kLayers) {
+        if (n != layer.name) continue;
+        switch (layer.kind) {
+            case film::LayerKind::Color: return PassKind::Color;
+            case film::LayerKind::Normal: return PassKind::Normal;
+            case film::LayerKind::Depth: return PassKind::Depth;
+            case film::LayerKind::Id: return PassKind::Id;
+            case film::LayerKind::Variance: return PassKind::Variance;
+        }
+    }
+    return PassKind::Color;  // a colour layer of another renderer's file
 }
 
 const char* kind_name(PassKind kind) {

@@ -5,7 +5,7 @@
 
 namespace orb::render {
 
-BenchmarkResult run_benchmark(Renderer& renderer, double seconds)
+BenchmarkResult run_benchmark(PassRenderer& renderer, double seconds)
 {
     using clock = std::chrono::steady_clock;
     const auto elapsed_since = [](clock::time_point t) { return std::chrono::duration<double>(clock::now() - t).count(); };
@@ -26,8 +26,7 @@ BenchmarkResult run_benchmark(Renderer& renderer, double seconds)
         ++result.passes;
     } while (elapsed_since(start) < seconds);
     result.seconds = elapsed_since(start);
-    const RenderConfig& config = renderer.config();
-    result.samples = spp * static_cast<std::uint64_t>(config.width) * static_cast<std::uint64_t>(config.height);
+    result.samples = spp * renderer.pixel_count();
     result.samples_per_second = static_cast<double>(result.samples) / result.seconds;
     return result;
 }

@@ -119,6 +119,28 @@ DeviceInfo choose_device(const std::string& selector)
     throw std::runtime_error("no OpenCL device matches '" + selector + "'; the devices are:" + choices_text(devices));
 }
 
+std::vector<DeviceInfo> choose_devices(const std::string& selector)
+{
+    if (lowercase(selector) == "all") return list_devices();
+    if (selector.find(',') == std::string::npos) return {choose_device(selector)};
+    std::vector<DeviceInfo> chosen;
+    std::size_t start = 0;
+    while (start <= selector.size()) {
+        std::size_t comma = selector.find(',', start);
+        if (comma == std::string::npos) comma = selector.size();
+        const std::string entry = selector.substr(start, comma - start);
+        start = comma + 1;
+        if (entry.empty()) throw std::runtime_error("--device " + selector + ": an empty entry in the list");
+        DeviceInfo device = choose_device(entry);
+        for (const DeviceInfo& d : chosen)
+            if (d.index == device.index)
+                throw std::runtime_error("--device " + selector + ": device " + std::to_string(d.index) + " (" +
+                                         d.name + ") is named twice");
+        chosen.push_back(std::move(device));
+    }
+    return chosen;
+}
+
 cl::Device opencl_device(int index)
 {
     const auto devices = all_devices();

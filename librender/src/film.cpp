@@ -1,9 +1,24 @@
 #include "orb/render/film.h"
 
-#include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace orb::render {
+namespace {
+
+using Member = std::vector<float> Film::*;
+
+constexpr Member kMembers[] = {
+#define ORB_FILM_MEMBER_POINTER(name, ...) &Film::name,
+    ORB_FILM_CHANNELS(ORB_FILM_MEMBER_POINTER)
+#undef ORB_FILM_MEMBER_POINTER
+};
+static_assert(std::size(kMembers) == film::kChannels.size());
+
+}  // namespace
+
+std::vector<float>& Film::channel(film::Channel c) { return this->*kMembers[static_cast<int>(c)]; }
+const std::vector<float>& Film::channel(film::Channel c) const { return this->*kMembers[static_cast<int>(c)]; }
 
 void Film::resize(int w, int h)
 {
@@ -11,12 +26,15 @@ void Film::resize(int w, int h)
     width = w;
     height = h;
     samples_per_pixel = 0;
-    const size_t n = pixel_count();
-    for (std::vector<float>* set : {&radiance, &radiance_sq, &direct, &indirect, &emission, &albedo, &normal})
-        set->assign(n * 3, 0.0f);
-    alpha.assign(n, 0.0f);
-    depth.assign(n, std::numeric_limits<float>::infinity());
-    object_id.assign(n, -1.0f);
+    sample_ranges = {};
+    for (const film::ChannelInfo& info : film::kChannels)
+        channel(info.channel).assign(pixel_count() * static_cast<std::size_t>(info.components), info.clear);
+}
+
+SampleRanges Film::held_ranges() const
+{
+    if (!sample_ranges.empty() || samples_per_pixel == 0) return sample_ranges;
+    return SampleRanges(SampleRange{0, samples_per_pixel});
 }
 
 void Film::accumulate(const Film& other)
@@ -24,24 +42,29 @@ void Film::accumulate(const Film& other)
     if (other.width != width || other.height != height)
         throw std::invalid_argument("cannot add a " + std::to_string(other.width) + "x" + std::to_string(other.height) +
                                     " film to a " + std::to_string(width) + "x" + std::to_string(height) + " one");
-    const bool this_empty = samples_per_pixel == 0;
-    const auto add = [](std::vector<float>& into, const std::vector<float>& from) {
-        if (into.size() != from.size()) throw std::invalid_argument("film channel sizes differ");
-        for (size_t i = 0; i < into.size(); ++i) into[i] += from[i];
-    };
-    add(radiance, other.radiance);
-    add(radiance_sq, other.radiance_sq);
-    add(direct, other.direct);
-    add(indirect, other.indirect);
-    add(emission, other.emission);
-    add(albedo, other.albedo);
-    add(normal, other.normal);
-    add(alpha, other.alpha);
-    if (this_empty) {
-        depth = other.depth;
-        object_id = other.object_id;
+    if (other.samples_per_pixel == 0) return;
+    SampleRanges ranges = held_ranges();
+    const SampleRanges others = other.held_ranges();
+    ranges.add(others);  // throws for overlapping samples
+
+    // The same-in-every-slice channels come from the film with the lowest sample index.
+    const bool take_others = samples_per_pixel == 0 || others.first() < held_ranges().first();
+    for (const film::ChannelInfo& info : film::kChannels) {
+        std::vector<float>& into = channel(info.channel);
+        const std::vector<float>& from = other.channel(info.channel);
+        if (into.size() != from.size())
+            throw std::invalid_argument(std::string("film channel ") + info.name + " sizes differ");
+        switch (info.merge) {
+            case film::MergeRule::Sum:
+                for (std::size_t i = 0; i < into.size(); ++i) into[i] += from[i];
+                break;
+            case film::MergeRule::Same:
+                if (take_others) into = from;
+                break;
+        }
     }
     samples_per_pixel += other.samples_per_pixel;
+    sample_ranges = std::move(ranges);
 }
 
 }  // namespace orb::render

@@ -30,7 +30,7 @@ cl::Buffer read_only_buffer(const cl::Context& context, const std::vector<T>& re
 std::uint64_t scene_table_bytes(const SceneTables& tables)
 {
     std::uint64_t total = 0;
-#define ORB_BYTES_FILM(name)
+#define ORB_BYTES_FILM(...)
 #define ORB_BYTES_TABLE(type, name) total += buffer_bytes(tables.name);
 #define ORB_BYTES_PARAMS(type, name)
     ORB_RENDER_PASS_ARGUMENTS(ORB_BYTES_FILM, ORB_BYTES_TABLE, ORB_BYTES_PARAMS)
@@ -43,7 +43,7 @@ std::uint64_t scene_table_bytes(const SceneTables& tables)
 SceneBuffers upload_scene(const cl::Context& context, const SceneTables& tables)
 {
     SceneBuffers buffers;
-#define ORB_UPLOAD_FILM(name)
+#define ORB_UPLOAD_FILM(...)
 #define ORB_UPLOAD_TABLE(type, name) buffers.name = read_only_buffer(context, tables.name);
 #define ORB_UPLOAD_PARAMS(type, name)
     ORB_RENDER_PASS_ARGUMENTS(ORB_UPLOAD_FILM, ORB_UPLOAD_TABLE, ORB_UPLOAD_PARAMS)
@@ -61,7 +61,7 @@ void bind_buffers(cl::Kernel& kernel, const DeviceFilm& film, const SceneBuffers
                                  "orb binds " + std::to_string(index(PassArg::count)) +
                                  "; do the kernels (--kernel-dir) come from another version?");
     for (std::size_t i = 0; i < kFilmArgs.size(); ++i) kernel.setArg(index(kFilmArgs[i]), film.buffers()[i]);
-#define ORB_BIND_FILM(name)
+#define ORB_BIND_FILM(...)
 #define ORB_BIND_TABLE(type, name) kernel.setArg(index(PassArg::name), scene.name);
 #define ORB_BIND_PARAMS(type, name)
     ORB_RENDER_PASS_ARGUMENTS(ORB_BIND_FILM, ORB_BIND_TABLE, ORB_BIND_PARAMS)

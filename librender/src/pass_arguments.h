@@ -16,7 +16,7 @@ namespace orb::render {
 
 // render_pass's argument indices, in the kernel's order.
 enum class PassArg : cl_uint {
-#define ORB_PASS_ARG_FILM(name) name,
+#define ORB_PASS_ARG_FILM(name, ...) film_##name,
 #define ORB_PASS_ARG_TABLE(type, name) name,
 #define ORB_PASS_ARG_PARAMS(type, name) name,
     ORB_RENDER_PASS_ARGUMENTS(ORB_PASS_ARG_FILM, ORB_PASS_ARG_TABLE, ORB_PASS_ARG_PARAMS)
@@ -28,18 +28,18 @@ enum class PassArg : cl_uint {
 
 // The film arguments, which take DeviceFilm::buffers() in order.
 inline constexpr std::array kFilmArgs{
-#define ORB_FILM_ARG_FILM(name) PassArg::name,
+#define ORB_FILM_ARG_FILM(name, ...) PassArg::film_##name,
 #define ORB_FILM_ARG_OTHER(...)
     ORB_RENDER_PASS_ARGUMENTS(ORB_FILM_ARG_FILM, ORB_FILM_ARG_OTHER, ORB_FILM_ARG_OTHER)
 #undef ORB_FILM_ARG_FILM
 #undef ORB_FILM_ARG_OTHER
 };
-static_assert(kFilmArgs.size() == DeviceFilm::kBufferCount, "render_pass takes one argument per film buffer");
+static_assert(kFilmArgs.size() == DeviceFilm::kBufferCount, "render_pass takes one argument per film channel");
 
 // How many __constant arguments render_pass has when the scene tables are
 // placed in constant memory: one per table (the parameters go by value).
 // The device must allow that many (CL_DEVICE_MAX_CONSTANT_ARGS).
-#define ORB_COUNT_FILM(name)
+#define ORB_COUNT_FILM(...)
 #define ORB_COUNT_TABLE(type, name) +1
 #define ORB_COUNT_PARAMS(type, name)
 inline constexpr cl_uint kSceneTableCount =
@@ -50,7 +50,7 @@ inline constexpr cl_uint kSceneTableCount =
 
 // One read-only device buffer per scene table.
 struct SceneBuffers {
-#define ORB_SCENE_BUFFER_FILM(name)
+#define ORB_SCENE_BUFFER_FILM(...)
 #define ORB_SCENE_BUFFER_TABLE(type, name) cl::Buffer name;
 #define ORB_SCENE_BUFFER_PARAMS(type, name)
     ORB_RENDER_PASS_ARGUMENTS(ORB_SCENE_BUFFER_FILM, ORB_SCENE_BUFFER_TABLE, ORB_SCENE_BUFFER_PARAMS)

@@ -11,6 +11,8 @@ public:
 
     void record(int samples, double seconds);
     int suggested() const;
+    // Seconds per sample per pixel, smoothed over the passes timed; 0 before the first.
+    double seconds_per_sample() const { return seconds_per_sample_; }
 
 private:
     double target_seconds_;

@@ -16,7 +16,7 @@ double seconds_between(Clock::time_point a, Clock::time_point b) {
 // Samples for the next pass: one for the very first pass, so a first image
 // (checkpoint) exists as early as possible; then the device's suggestion,
 // shrunk so a time budget is not overrun by much, never past the target.
-std::uint64_t next_pass_samples(const Renderer& renderer, const ProgressiveLimits& limits, const ProgressState& state,
+std::uint64_t next_pass_samples(const PassRenderer& renderer, const ProgressiveLimits& limits, const ProgressState& state,
                                 double seconds_per_sample_per_pixel) {
     const std::uint64_t remaining = limits.target_spp - state.spp;
     std::uint64_t samples =
@@ -31,12 +31,12 @@ std::uint64_t next_pass_samples(const Renderer& renderer, const ProgressiveLimit
 
 }  // namespace
 
-StopReason render_progressively(Renderer& renderer, const ProgressiveLimits& limits,
+StopReason render_progressively(PassRenderer& renderer, const ProgressiveLimits& limits,
                                 const ProgressiveCallbacks& callbacks, const std::atomic<bool>& stop_requested,
                                 ProgressState* final_state) {
     const Clock::time_point start = Clock::now();
     const std::uint64_t start_spp = renderer.samples_per_pixel();
-    const double pixels = static_cast<double>(renderer.config().width) * renderer.config().height;
+    const double pixels = static_cast<double>(renderer.pixel_count());
 
     ProgressState state;
     state.spp = start_spp;

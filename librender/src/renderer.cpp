@@ -1,206 +1,240 @@
 #include "orb/render/renderer.h"
 
-#include <chrono>
-#include <cstdlib>
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <set>
 #include <stdexcept>
+#include <thread>
 
-#include "device_film.h"
-#include "opencl_devices.h"
-#include "pass_arguments.h"
-#include "pass_tuner.h"
-#include "program_build.h"
-#include "program_source.h"
+#include "device_renderer.h"
+#include "device_session.h"
 #include "scene_layout.h"
 
 namespace orb::render {
-
 namespace {
 
-// NVIDIA's compiler gives render_pass about 109 registers, which limits how
-// many warps an SM keeps in flight. Capping them at 80 (no spills) measured
-// 4.47 -> 4.73 G samples/s at 640x480 and 4.79 -> 5.21 G at 1920x1080 on an
-// H100 (docs/performance.md); 64 and below lose again.
-std::string nvidia_register_cap(const cl::Device& device)
-{
-    const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
-    return extensions.find("cl_nv_compiler_options") != std::string::npos ? " -cl-nv-maxrregcount=80" : "";
-}
-
-// Pass lengths aimed at: short on GPUs so no display watchdog fires and
-// progress stays smooth; longer on CPUs, where per-pass overhead matters more.
-constexpr double kGpuPassSeconds = 0.05;
-constexpr double kCpuPassSeconds = 0.25;
-
-[[noreturn]] void rethrow_as_runtime_error(const cl::Error& error, const std::string& what)
-{
-    throw std::runtime_error(what + ": " + describe_cl_error(error));
-}
-
-}  // namespace
-
-struct Renderer::Impl {
-    DeviceInfo info;
-    RenderConfig config;
-    cl::Device device;
-    cl::Context context;
-    cl::CommandQueue queue;
-    cl::Program program;
-    cl::Kernel kernel;
-    SceneLayout scene;
-    SceneBuffers scene_buffers;
-    std::unique_ptr<DeviceFilm> film;
-    device::RenderPassParams params{};  // all but params.pass is fixed for the render
-    cl::NDRange local_size;
-    cl::NDRange global_size;
-    std::uint64_t spp = 0;
-    bool centre_ray_pending = true;  // depth/id of the pixel-centre ray not yet on the film
-    PassTuner tuner{kCpuPassSeconds};
-
-    Impl(const Scene& input, const RenderConfig& cfg);
-    void choose_work_sizes();
-    void fill_fixed_params(const Camera& camera);
-};
-
-Renderer::Impl::Impl(const Scene& input, const RenderConfig& cfg) : config(cfg)
+void check_config(const RenderConfig& config)
 {
     if (config.width <= 0 || config.height <= 0)
         throw std::invalid_argument("image size must be positive, got " + std::to_string(config.width) + "x" +
                                     std::to_string(config.height));
     if (config.max_depth < 0) throw std::invalid_argument("max depth must not be negative");
-    scene = layout_scene(input, config.use_bvh);
-    fill_fixed_params(input.camera);
-    info = choose_device(config.device);
-    tuner = PassTuner(info.is_gpu ? kGpuPassSeconds : kCpuPassSeconds);
-    try {
-        device = opencl_device(info.index);
-        context = cl::Context(device);
-        queue = cl::CommandQueue(context, device);
-
-        // Small scenes live in constant memory (cached, broadcast to a whole
-        // warp on GPUs); larger ones in global memory. In constant memory
-        // every scene table is one __constant argument of render_pass, and
-        // all of them together must fit the constant buffer size (which some
-        // drivers apply per buffer, others to the sum).
-        const cl_ulong constant_limit = device.getInfo<CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE>();
-        const cl_uint constant_args = device.getInfo<CL_DEVICE_MAX_CONSTANT_ARGS>();
-        const bool constant_scene =
-            scene_table_bytes(scene.tables) <= constant_limit && kSceneTableCount <= constant_args;
-        // Unsafe math (reassociation, fast division) gave +8% on an H100 and
-        // nothing measurable on PoCL; the analytic tests pass with it.
-        std::string options = std::string("-cl-std=CL1.2 -cl-mad-enable -cl-unsafe-math-optimizations") +
-                              " -DORB_SCENE_SPACE=" + (constant_scene ? "__constant" : "__global") +
-                              (info.is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
-                              // A scene without a tree gets a program without traversal code.
-                              (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
-                              (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
-                              nvidia_register_cap(device);
-        if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
-        program = build_program(context, device, program_source(config.kernel_dir), options,
-                                config.use_binary_cache)
-                      .program;
-        kernel = cl::Kernel(program, "render_pass");
-
-        scene_buffers = upload_scene(context, scene.tables);
-        film = std::make_unique<DeviceFilm>(context, config.width, config.height);
-        film->clear(queue);
-        choose_work_sizes();
-        bind_buffers(kernel, *film, scene_buffers);
-    } catch (const cl::Error& error) {
-        rethrow_as_runtime_error(error, "OpenCL setup on " + info.name + " failed");
-    }
 }
 
-void Renderer::Impl::choose_work_sizes()
+// Splits `count` samples over devices in proportion to `weights`, rounding
+// by largest remainder so that the shares add up to `count`.
+std::vector<int> split_in_proportion(int count, const std::vector<double>& weights)
 {
-    // One work-item per pixel. GPUs: 16x8 tiles keep a warp on neighbouring
-    // pixels, whose paths stay coherent. CPUs (PoCL runs a work-group as a
-    // loop on one core): short rows give the scheduler many groups to share.
-    size_t lx = info.is_gpu ? 16 : 8, ly = info.is_gpu ? 8 : 1;
-    if (const char* env = std::getenv("ORB_LOCAL_SIZE")) {  // development knob for tuning, "XxY"
-        unsigned ex = 0, ey = 0;
-        if (std::sscanf(env, "%ux%u", &ex, &ey) == 2 && ex > 0 && ey > 0) lx = ex, ly = ey;
+    double total = 0;
+    for (double w : weights) total += w;
+    std::vector<int> shares(weights.size(), 0);
+    std::vector<std::pair<double, std::size_t>> remainders;
+    int given = 0;
+    for (std::size_t d = 0; d < weights.size(); ++d) {
+        const double exact = count * weights[d] / total;
+        shares[d] = static_cast<int>(std::floor(exact));
+        given += shares[d];
+        remainders.push_back({exact - shares[d], d});
     }
-    const size_t max_group = kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device);
-    while (lx * ly > max_group && ly > 1) ly /= 2;
-    while (lx * ly > max_group && lx > 1) lx /= 2;
-    local_size = cl::NDRange(lx, ly);
-    const auto round_up = [](size_t n, size_t m) { return (n + m - 1) / m * m; };
-    global_size = cl::NDRange(round_up(static_cast<size_t>(config.width), lx),
-                              round_up(static_cast<size_t>(config.height), ly));
+    std::stable_sort(remainders.begin(), remainders.end(), [](auto a, auto b) { return a.first > b.first; });
+    for (std::size_t i = 0; given < count; ++i, ++given) shares[remainders[i % remainders.size()].second] += 1;
+    return shares;
 }
 
-void Renderer::Impl::fill_fixed_params(const Camera& camera)
+}  // namespace
+
+struct Renderer::Impl {
+    RenderConfig config;
+    std::vector<DeviceInfo> infos;
+    std::vector<std::unique_ptr<DeviceRenderer>> devices;
+    std::vector<SampleRanges> device_ranges;  // what each device's film holds
+    SampleRanges ranges;                      // their union: what the film holds
+    std::uint64_t cursor = 0;                 // where render_pass() continues
+
+    std::vector<int> split(int count) const;
+    void wait_all(const std::vector<std::size_t>& busy);
+};
+
+std::vector<int> Renderer::Impl::split(int count) const
 {
-    params.camera = layout_camera(camera, config.width, config.height);
-    params.scene = scene.counts;
-    params.environment = scene.environment;
-    device::RenderSettings& settings = params.settings;
-    settings.width = config.width;
-    settings.height = config.height;
-    settings.max_depth = config.max_depth;
-    settings.mode = static_cast<int>(config.mode);
-    settings.seed_lo = static_cast<device::uint>(config.seed & 0xffffffffu);
-    settings.seed_hi = static_cast<device::uint>(config.seed >> 32);
+    if (devices.size() == 1) return {count};
+    // Measured speeds once every device has been timed; equal shares before.
+    std::vector<double> weights;
+    for (const auto& device : devices) weights.push_back(device->seconds_per_sample());
+    const bool all_timed = std::all_of(weights.begin(), weights.end(), [](double s) { return s > 0; });
+    for (double& w : weights) w = all_timed ? 1.0 / w : 1.0;
+    return split_in_proportion(count, weights);
 }
 
-Renderer::Renderer(const Scene& scene, const RenderConfig& config) : impl_(std::make_unique<Impl>(scene, config)) {}
+void Renderer::Impl::wait_all(const std::vector<std::size_t>& busy)
+{
+    if (busy.size() == 1) {
+        devices[busy[0]]->wait();
+        return;
+    }
+    // One waiting thread per device, so each device's time is its own (the
+    // split of the next pass depends on it), not the time until the slowest
+    // device ahead of it in a sequential wait finished.
+    std::vector<std::exception_ptr> errors(busy.size());
+    std::vector<std::thread> waiters;
+    for (std::size_t i = 0; i < busy.size(); ++i)
+        waiters.emplace_back([&, i] {
+            try {
+                devices[busy[i]]->wait();
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        });
+    for (std::thread& waiter : waiters) waiter.join();
+    for (const std::exception_ptr& error : errors)
+        if (error) std::rethrow_exception(error);
+}
+
+Renderer::Renderer(const Scene& scene, const RenderConfig& config) : impl_(std::make_unique<Impl>())
+{
+    Impl& r = *impl_;
+    check_config(config);
+    r.config = config;
+    // The scene is checked before any device is touched, so bad input fails fast.
+    const SceneLayout layout = layout_scene(scene, config.use_bvh);
+    const device::CameraParams camera = layout_camera(scene.camera, config.width, config.height);
+    r.infos = choose_devices(config.device);
+    const SessionOptions options{config.kernel_dir, config.use_binary_cache};
+    for (const DeviceInfo& info : r.infos) {
+        r.devices.push_back(std::make_unique<DeviceRenderer>(DeviceSession::open(info, options), config));
+        r.devices.back()->set_scene(layout, camera);
+    }
+    r.device_ranges.resize(r.devices.size());
+}
+
 Renderer::~Renderer() = default;
 
-const DeviceInfo& Renderer::device() const { return impl_->info; }
+const DeviceInfo& Renderer::device() const { return impl_->infos.front(); }
+const std::vector<DeviceInfo>& Renderer::devices() const { return impl_->infos; }
 const RenderConfig& Renderer::config() const { return impl_->config; }
-int Renderer::suggested_samples_per_pass() const { return impl_->tuner.suggested(); }
-std::uint64_t Renderer::samples_per_pixel() const { return impl_->spp; }
+
+void Renderer::set_scene(const Scene& scene)
+{
+    Impl& r = *impl_;
+    const SceneLayout layout = layout_scene(scene, r.config.use_bvh);
+    const device::CameraParams camera = layout_camera(scene.camera, r.config.width, r.config.height);
+    for (auto& device : r.devices) device->set_scene(layout, camera);
+    clear();
+}
+
+void Renderer::set_seed(std::uint64_t seed)
+{
+    impl_->config.seed = seed;
+    for (auto& device : impl_->devices) device->set_seed(seed);
+    clear();
+}
+
+void Renderer::clear(std::uint64_t first_sample)
+{
+    Impl& r = *impl_;
+    for (auto& device : r.devices) device->clear_film();
+    for (SampleRanges& ranges : r.device_ranges) ranges = {};
+    r.ranges = {};
+    r.cursor = first_sample;
+}
+
+int Renderer::suggested_samples_per_pass() const
+{
+    // The devices run side by side, so each can take a pass of its own length.
+    int total = 0;
+    for (const auto& device : impl_->devices)
+        total = static_cast<int>(std::min<long long>(std::numeric_limits<int>::max() / 2,
+                                                     static_cast<long long>(total) + device->suggested_samples_per_pass()));
+    return total;
+}
 
 void Renderer::render_pass(int samples)
 {
     if (samples < 0) throw std::invalid_argument("a pass cannot add a negative number of samples");
-    if (samples == 0) return;
-    Impl& r = *impl_;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-        device::PassRange& pass = r.params.pass;
-        pass.first_sample_lo = static_cast<device::uint>(r.spp & 0xffffffffu);
-        pass.first_sample_hi = static_cast<device::uint>(r.spp >> 32);
-        pass.sample_count = samples;
-        pass.write_centre_ray = r.centre_ray_pending ? 1 : 0;
-        bind_params(r.kernel, r.params);
-        r.queue.enqueueNDRangeKernel(r.kernel, cl::NullRange, r.global_size, r.local_size);
-        r.queue.finish();
-    } catch (const cl::Error& error) {
-        rethrow_as_runtime_error(error, "a render pass on " + r.info.name + " failed");
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.spp += static_cast<std::uint64_t>(samples);
-    r.centre_ray_pending = false;
-    r.tuner.record(samples, seconds);
+    render_samples(impl_->cursor, samples);
 }
+
+void Renderer::render_samples(std::uint64_t first_sample, int count)
+{
+    if (count < 0) throw std::invalid_argument("a pass cannot add a negative number of samples");
+    if (count == 0) return;
+    Impl& r = *impl_;
+    const SampleRange range{first_sample, static_cast<std::uint64_t>(count)};
+    if (first_sample > std::numeric_limits<std::uint64_t>::max() - range.count)
+        throw std::invalid_argument("samples " + std::to_string(first_sample) + " + " + std::to_string(count) +
+                                    " run past the last sample index 2^64-1");
+    if (r.ranges.overlaps(range))
+        throw std::invalid_argument("the film already holds some of the samples " + std::to_string(first_sample) +
+                                    ":" + std::to_string(count) + " (it holds " + r.ranges.format() + ")");
+
+    // Each device takes the next contiguous slice of the range.
+    const std::vector<int> shares = r.split(count);
+    std::vector<std::size_t> busy;
+    std::uint64_t next = first_sample;
+    for (std::size_t d = 0; d < r.devices.size(); ++d) {
+        if (shares[d] == 0) continue;
+        r.devices[d]->enqueue(next, shares[d]);
+        r.device_ranges[d].add(SampleRange{next, static_cast<std::uint64_t>(shares[d])});
+        next += static_cast<std::uint64_t>(shares[d]);
+        busy.push_back(d);
+    }
+    r.wait_all(busy);
+    r.ranges.add(range);
+    r.cursor = range.end();
+}
+
+std::uint64_t Renderer::samples_per_pixel() const { return impl_->ranges.total(); }
+std::uint64_t Renderer::pixel_count() const
+{
+    return static_cast<std::uint64_t>(impl_->config.width) * static_cast<std::uint64_t>(impl_->config.height);
+}
+std::uint64_t Renderer::next_sample() const { return impl_->cursor; }
+const SampleRanges& Renderer::sample_ranges() const { return impl_->ranges; }
 
 Film Renderer::read_film() const
 {
-    try {
-        Film film = impl_->film->read(impl_->queue);
-        film.samples_per_pixel = impl_->spp;
-        return film;
-    } catch (const cl::Error& error) {
-        rethrow_as_runtime_error(error, "reading the film back from " + impl_->info.name + " failed");
+    Impl& r = *impl_;
+    Film total;
+    total.resize(r.config.width, r.config.height);
+    for (std::size_t d = 0; d < r.devices.size(); ++d) {
+        if (r.device_ranges[d].empty()) continue;
+        Film part = r.devices[d]->read_film();
+        part.samples_per_pixel = r.device_ranges[d].total();
+        part.sample_ranges = r.device_ranges[d];
+        if (total.samples_per_pixel == 0)
+            total = std::move(part);  // the common case of one device: no copy, no additions
+        else
+            total.accumulate(part);
     }
+    return total;
 }
 
 void Renderer::load_film(const Film& film)
 {
-    try {
-        impl_->film->write(impl_->queue, film);
-    } catch (const cl::Error& error) {
-        rethrow_as_runtime_error(error, "uploading the film to " + impl_->info.name + " failed");
-    }
-    impl_->spp = film.samples_per_pixel;
-    impl_->centre_ray_pending = film.samples_per_pixel == 0;
+    Impl& r = *impl_;
+    const SampleRanges held = film.held_ranges();
+    r.devices.front()->load_film(film);
+    for (std::size_t d = 1; d < r.devices.size(); ++d) r.devices[d]->clear_film();
+    for (SampleRanges& ranges : r.device_ranges) ranges = {};
+    r.device_ranges.front() = held;
+    r.ranges = held;
+    r.cursor = held.end();
 }
 
 std::uint64_t Renderer::device_memory_bytes() const
 {
-    const Impl& r = *impl_;
-    return r.film->bytes() + scene_table_bytes(r.scene.tables);
+    std::uint64_t total = 0;
+    for (const auto& device : impl_->devices) total += device->device_memory_bytes();
+    return total;
+}
+
+int Renderer::programs_built() const
+{
+    int total = 0;
+    for (const auto& device : impl_->devices) total += device->programs_built();
+    return total;
 }
 
 }  // namespace orb::render

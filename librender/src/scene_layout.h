@@ -12,7 +12,7 @@ namespace orb::render {
 // One vector per scene table of render_pass, generated from the kernel's
 // argument list so that a new table appears here without an edit.
 struct SceneTables {
-#define ORB_SCENE_TABLES_FILM(name)
+#define ORB_SCENE_TABLES_FILM(...)
 #define ORB_SCENE_TABLES_TABLE(type, name) std::vector<device::type> name;
 #define ORB_SCENE_TABLES_PARAMS(type, name)
     ORB_RENDER_PASS_ARGUMENTS(ORB_SCENE_TABLES_FILM, ORB_SCENE_TABLES_TABLE, ORB_SCENE_TABLES_PARAMS)

@@ -1,5 +1,5 @@
 // Shared set-up for the output-safety tests: a scratch folder per test, the
-// four tools, a tiny scene and EXR to feed them, and the special files the
+// tools, a tiny scene and EXR to feed them, and the special files the
 // tests write into (device nodes, FIFOs, tmpfs mounts), all made inside the
 // scratch folder and removed with it.
 #pragma once

@@ -38,6 +38,7 @@ TEST_F(OutputSafety, EveryToolWritesIntoANullDeviceAndLeavesTheNodeAlone) {
         {"orb-import", {scene, "-o", null}},
         {"orb-tonemap", {exr, "-o", null, "--format", "png", "-q"}},
         {"orb-diff", {exr, exr, "--json", null, "--diff-image", null, "-q"}},
+        {"orb-merge", {exr, "-o", null, "-q"}},
     };
     for (const auto& [name, args] : runs) {
         const ProcessResult r = run(name, args);
@@ -56,7 +57,8 @@ TEST_F(OutputSafety, AFullDeviceIsAWriteErrorNamingTheFile) {
     for (const auto& [name, args, code] : std::vector<std::tuple<std::string, std::vector<std::string>, int>>{
              {"orb-render", render, 1},
              {"orb-import", {scene, "-o", full}, 1},
-             {"orb-diff", {tiny_exr(), path("in.exr"), "--json", full, "-q"}, 2}}) {
+             {"orb-diff", {tiny_exr(), path("in.exr"), "--json", full, "-q"}, 2},
+             {"orb-merge", {path("in.exr"), "-o", full, "-q"}, 1}}) {
         const ProcessResult r = run(name, args);
         EXPECT_EQ(r.exit_code, code) << name << ": " << r.err;
         EXPECT_THAT(r.err, HasSubstr(full + ": cannot write")) << name;

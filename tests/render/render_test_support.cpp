@@ -1,5 +1,8 @@
 #include "render_test_support.h"
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -102,6 +105,32 @@ std::vector<std::size_t> all_pixels(const Film& film)
     std::vector<std::size_t> out(film.pixel_count());
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = i;
     return out;
+}
+
+void expect_same_up_to_rounding(const std::vector<float>& a, const std::vector<float>& b, std::uint64_t samples,
+                                const char* what, double magnitude_bound)
+{
+    ASSERT_EQ(a.size(), b.size()) << what;
+    const double relative = static_cast<double>(samples) * std::ldexp(1.0, -24);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const double magnitude = std::max({magnitude_bound, std::abs(double(a[i])), std::abs(double(b[i]))});
+        ASSERT_NEAR(a[i], b[i], relative * magnitude + 1e-30) << what << " [" << i << "]";
+    }
+}
+
+void expect_same_films_up_to_rounding(const Film& a, const Film& b)
+{
+    ASSERT_EQ(a.samples_per_pixel, b.samples_per_pixel);
+    const std::uint64_t n = a.samples_per_pixel;
+    for (const film::ChannelInfo& info : film::kChannels) {
+        if (info.accumulation == film::Accumulation::CentreRay) {
+            EXPECT_EQ(a.channel(info.channel), b.channel(info.channel)) << info.name;
+            continue;
+        }
+        // Normals are unit vectors, whose components cancel in the sum.
+        const double bound = info.stored_as == film::StoredAs::UnitVector ? static_cast<double>(n) : 0.0;
+        expect_same_up_to_rounding(a.channel(info.channel), b.channel(info.channel), n, info.name, bound);
+    }
 }
 
 }  // namespace orb::render::test

@@ -40,4 +40,15 @@ std::vector<std::size_t> interior_pixels_of(const Film& film, int id);
 
 std::vector<std::size_t> all_pixels(const Film& film);
 
+// Sums of the same samples added in a different grouping (passes, slices,
+// devices) differ only by float rounding: at most about n * 2^-24 of the sum
+// of the magnitudes. For non-negative sets that is the sum itself; for
+// normals (components in [-1, 1], which cancel) pass magnitude_bound = n.
+void expect_same_up_to_rounding(const std::vector<float>& a, const std::vector<float>& b, std::uint64_t samples,
+                                const char* what, double magnitude_bound = 0);
+
+// Every channel of two films of the same samples, as above; the centre-ray
+// channels exactly.
+void expect_same_films_up_to_rounding(const Film& a, const Film& b);
+
 }  // namespace orb::render::test

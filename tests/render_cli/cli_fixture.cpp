@@ -62,6 +62,12 @@ ProcessResult RenderCli::render(const std::vector<std::string>& args, const std:
     return run_process(argv, stdin_path, stdout_path);
 }
 
+ProcessResult RenderCli::merge(const std::vector<std::string>& args) const {
+    std::vector<std::string> argv{ORB_MERGE_EXE};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return run_process(argv);
+}
+
 std::vector<std::string> RenderCli::files() const {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());

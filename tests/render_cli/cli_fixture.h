@@ -29,6 +29,9 @@ protected:
     ProcessResult render(const std::vector<std::string>& args, const std::string& stdin_path = "",
                          const std::string& stdout_path = "") const;
 
+    // orb-merge with these arguments.
+    ProcessResult merge(const std::vector<std::string>& args) const;
+
     // Files in the scratch folder, to check nothing partial was left behind.
     std::vector<std::string> files() const;
 

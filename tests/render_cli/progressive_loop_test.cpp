@@ -14,12 +14,7 @@ namespace {
 struct LoopTest : ::testing::Test {
     void SetUp() override { fake::control() = {}; }
 
-    Renderer make_renderer() {
-        RenderConfig config;
-        config.width = 10;
-        config.height = 10;
-        return Renderer(orb::Scene{}, config);
-    }
+    fake::FakeRenderer make_renderer() { return fake::FakeRenderer(10 * 10); }
     std::atomic<bool> never{false};
 };
 
@@ -29,7 +24,7 @@ std::uint64_t total(const std::vector<int>& passes) { return std::accumulate(pas
 
 TEST_F(LoopTest, FirstPassIsOneSampleThenSuggestedSizesClampedToTheTarget) {
     fake::control().suggested = 4;
-    Renderer renderer = make_renderer();
+    fake::FakeRenderer renderer = make_renderer();
     ProgressiveLimits limits;
     limits.target_spp = 11;
     ProgressState state;
@@ -41,7 +36,7 @@ TEST_F(LoopTest, FirstPassIsOneSampleThenSuggestedSizesClampedToTheTarget) {
 }
 
 TEST_F(LoopTest, ResumedSamplesCountTowardTheTarget) {
-    Renderer renderer = make_renderer();
+    fake::FakeRenderer renderer = make_renderer();
     Film resumed;
     resumed.samples_per_pixel = 9;
     renderer.load_film(resumed);
@@ -59,7 +54,7 @@ TEST_F(LoopTest, ResumedSamplesCountTowardTheTarget) {
 TEST_F(LoopTest, StopsAtTheTimeLimitWithoutOverrunningByMuch) {
     fake::control().seconds_per_sample = 0.01;
     fake::control().suggested = 50;  // 0.5 s passes unless shortened
-    Renderer renderer = make_renderer();
+    fake::FakeRenderer renderer = make_renderer();
     ProgressiveLimits limits;
     limits.target_spp = 1000000;
     limits.max_seconds = 0.3;
@@ -77,7 +72,7 @@ TEST_F(LoopTest, StopFlagEndsTheLoopAfterThePassInFlight) {
     fake::control().during_pass = [&](int index) {
         if (index == 2) stop = true;  // raised while the third pass runs
     };
-    Renderer renderer = make_renderer();
+    fake::FakeRenderer renderer = make_renderer();
     ProgressiveLimits limits;
     limits.target_spp = 1000;
     EXPECT_EQ(render_progressively(renderer, limits, {}, stop), StopReason::Interrupted);
@@ -86,7 +81,7 @@ TEST_F(LoopTest, StopFlagEndsTheLoopAfterThePassInFlight) {
 
 TEST_F(LoopTest, StopRequestedBeforeStartRendersNothing) {
     std::atomic<bool> stop{true};
-    Renderer renderer = make_renderer();
+    fake::FakeRenderer renderer = make_renderer();
     ProgressiveLimits limits;
     EXPECT_EQ(render_progressively(renderer, limits, {}, stop), StopReason::Interrupted);
     EXPECT_TRUE(fake::control().passes.empty());
@@ -95,7 +90,7 @@ TEST_F(LoopTest, StopRequestedBeforeStartRendersNothing) {
 TEST_F(LoopTest, CheckpointsAfterTheFirstPassThenEveryInterval) {
     fake::control().seconds_per_sample = 0.01;
     fake::control().suggested = 5;  // 50 ms passes
-    Renderer renderer = make_renderer();
+    fake::FakeRenderer renderer = make_renderer();
     ProgressiveLimits limits;
     limits.target_spp = 1 + 5 * 12;  // 12 full passes, about 0.6 s
     limits.checkpoint_seconds = 0.2;
@@ -119,7 +114,7 @@ TEST_F(LoopTest, CheckpointsAfterTheFirstPassThenEveryInterval) {
 TEST_F(LoopTest, ReportsSamplesPerSecondOfThisRun) {
     fake::control().seconds_per_sample = 0.005;
     fake::control().suggested = 10;
-    Renderer renderer = make_renderer();
+    fake::FakeRenderer renderer = make_renderer();
     ProgressiveLimits limits;
     limits.target_spp = 21;
     ProgressState state;

@@ -46,6 +46,7 @@ TEST_F(RenderCli, WritesEveryDocumentedChannelAndAttribute) {
 
     const std::map<std::string, std::string> expected_attributes{
         {"orb:spp", "int"},          {"orb:targetSpp", "int"},         {"orb:seed", "string"},
+        {"orb:sampleRanges", "string"},
         {"orb:maxDepth", "int"},     {"orb:mode", "string"},           {"orb:device", "string"},
         {"orb:renderSeconds", "double"}, {"orb:sceneFile", "string"},  {"orb:sceneHash", "string"},
         {"orb:sceneTime", "double"}, {"orb:version", "string"},        {"orb:passes", "string"},

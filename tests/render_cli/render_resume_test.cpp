@@ -84,3 +84,34 @@ TEST_F(RenderCli, ResumeRefusesAHalfFile) {
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_NE(run.err.find("--half"), std::string::npos) << run.err;
 }
+
+// The sampler is part of what a render is: a resume keeps it (from
+// orb:sampler), refuses another one, and the two samplers give different
+// images of the same samples.
+TEST_F(RenderCli, ResumeKeepsTheSamplerAndRefusesAnother) {
+    const std::string scene = write_scene(small_scene());
+    ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "5", "--sampler", "independent"}).exit_code, 0);
+    ASSERT_EQ(render({scene, "-o", path("part.exr"), "--spp", "2", "--sampler", "independent"}).exit_code, 0);
+    const auto other = render({scene, "--resume", path("part.exr"), "-o", path("out.exr"), "--sampler", "sobol"});
+    EXPECT_EQ(other.exit_code, 1);
+    EXPECT_NE(other.err.find("--sampler sobol differs from the resumed render's orb:sampler independent"),
+              std::string::npos)
+        << other.err;
+    EXPECT_FALSE(std::filesystem::exists(path("out.exr")));
+
+    const auto resumed = render({scene, "--resume", path("part.exr"), "-o", path("out.exr"), "--spp", "5"});
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_EQ(orb::exr::read_film_exr(path("out.exr")).metadata.sampler, "independent");
+    expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("out.exr")));
+
+    ASSERT_EQ(render({scene, "-o", path("sobol.exr"), "--spp", "5"}).exit_code, 0);
+    EXPECT_EQ(orb::exr::read_film_exr(path("sobol.exr")).metadata.sampler, "sobol");
+    EXPECT_NE(read_raw_exr(path("sobol.exr")).channels.at("R"), read_raw_exr(path("whole.exr")).channels.at("R"));
+}
+
+TEST_F(RenderCli, UnknownSamplerIsAUsageError) {
+    const auto run = render({write_scene(small_scene()), "-o", path("out.exr"), "--sampler", "halton"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_NE(run.err.find("--sampler"), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(path("out.exr")));
+}

@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "orb/cli/exr_output_name.h"
 #include "orb/cli/io.h"
 #include "orb/cli/tool_main.h"
 #include "orb/exr/passes.h"
+#include "orb/render/sample_ranges.h"
 
 namespace orb::render_cli {
 namespace {
@@ -51,11 +53,26 @@ const CLI::Validator kSeed(
     },
     "0..2^64-1");
 
+// START:COUNT, COUNT within what orb:spp (an EXR int) can record.
+const CLI::Validator kSampleRange(
+    [](std::string& text) -> std::string {
+        try {
+            const render::SampleRange range = render::parse_sample_range(text);
+            if (range.count > static_cast<std::uint64_t>(INT_MAX))
+                return "COUNT must be at most 2147483647 (orb:spp is an EXR int), got '" + text + "'";
+        } catch (const std::invalid_argument& e) {
+            return e.what();
+        }
+        return {};
+    },
+    "START:COUNT");
+
 const char* kExamples = R"(Examples:
   orb-render scenes/cornell.json -o cornell.exr
   orb-render scene.json -o out.exr --spp 1024 --checkpoint 10
   orb-render scene.json -o out.exr --time 60 --device 1
   orb-render --resume out.exr scene.json -o out.exr --spp 4096
+  orb-render scene.json --sample-range 512:512 -o part2.exr && orb-merge part*.exr -o out.exr
   orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
   orb-render --list-devices
   orb-render --benchmark scenes/cornell.json --width 640 --height 480
@@ -63,17 +80,6 @@ const char* kExamples = R"(Examples:
 Exit status: 0 done, 1 failed or bad input, 2 usage error,
 129/130/143 stopped by SIGHUP/SIGINT/SIGTERM (the image so far is written).
 Details: docs/orb-render.md)";
-
-// orb-render writes OpenEXR only; an EXR quietly written under another
-// format's name would fool every program that trusts the extension.
-void refuse_non_exr_output_name(const std::string& output) {
-    std::string extension = std::filesystem::path(output).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (cli::is_stdio(output) || extension.empty() || extension == ".exr") return;
-    const std::string stem = std::filesystem::path(output).replace_extension(".exr").string();
-    throw cli::UsageError("-o " + output + ": orb-render writes OpenEXR only; write " + stem +
-                          " and convert it with orb-tonemap (orb-tonemap " + stem + " -o " + output + ")");
-}
 
 }  // namespace
 
@@ -84,6 +90,9 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_option("--device", o.device, "Device index or name substring (default: fastest GPU, else CPU)");
     app.add_option("--spp", o.spp, "Samples per pixel to reach (default: the scene's render.spp)")
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{INT_MAX}));
+    app.add_option("--sample-range", o.sample_range,
+                   "Render exactly the samples START ... START+COUNT-1 (a slice of a frame, for orb-merge)")
+        ->check(kSampleRange);
     app.add_option("--time", o.time_limit, "Stop after this many seconds of rendering")->check(kPositiveSeconds);
     app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")
         ->check(kPositiveSeconds);
@@ -91,6 +100,9 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_option("--seed", o.seed, "Random seed, 0 ... 2^64-1 (default 0)")->check(kSeed);
     app.add_option("--mode", o.mode, "Light transport: global (path tracing) or direct")
         ->check(CLI::IsMember({"global", "direct"}));
+    app.add_option("--sampler", o.sampler,
+                   "Random numbers: sobol (low discrepancy, default) or independent")
+        ->check(CLI::IsMember({"sobol", "independent"}));
     app.add_option("--max-depth", o.max_depth, "Maximum path depth (default: the scene's render.max_depth)")
         ->check(CLI::Range(0, 1024));
     app.add_option("--width", o.width, "Image width (default: the scene's render.width)")->check(CLI::Range(1, 65536));
@@ -125,6 +137,7 @@ void check_option_combinations(const RenderOptions& o) {
                                   : !o.resume.empty() ? "--resume"
                                   : o.checkpoint      ? "--checkpoint"
                                   : o.spp             ? "--spp"
+                                  : o.sample_range    ? "--sample-range"
                                   : o.time_limit      ? "--time"
                                   : o.half            ? "--half"
                                   : o.passes          ? "--passes"
@@ -134,8 +147,11 @@ void check_option_combinations(const RenderOptions& o) {
                              " (use --benchmark-seconds for its length)");
         return;
     }
+    if (o.sample_range && o.spp)
+        throw UsageError("--sample-range START:COUNT already says how many samples to render; drop --spp " +
+                         std::to_string(*o.spp));
     if (o.output.empty()) throw UsageError("missing -o/--output (an EXR path, or - for stdout)");
-    refuse_non_exr_output_name(o.output);
+    cli::require_exr_output_name(o.output);
     if (cli::is_stdio(o.output) && o.checkpoint)
         throw UsageError("--checkpoint rewrites a file while rendering and cannot go to stdout (-o -)");
     if (cli::is_stdio(o.output) && cli::is_stdio(o.stats_json))

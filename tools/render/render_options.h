@@ -16,11 +16,13 @@ struct RenderOptions {
     bool list_devices = false;
     std::string device;
     std::optional<std::uint64_t> spp;
+    std::optional<std::string> sample_range;  // "START:COUNT"
     std::optional<double> time_limit;
     std::optional<double> checkpoint;
     std::string resume;
     std::optional<std::uint64_t> seed;
     std::optional<std::string> mode;
+    std::optional<std::string> sampler;
     std::optional<int> max_depth;
     std::optional<int> width;
     std::optional<int> height;

@@ -25,6 +25,14 @@ render::IntegratorMode parse_mode(const std::string& name) {
     return name == "direct" ? render::IntegratorMode::Direct : render::IntegratorMode::Global;
 }
 
+const char* sampler_name(render::SamplerKind sampler) {
+    return sampler == render::SamplerKind::Independent ? "independent" : "sobol";
+}
+
+render::SamplerKind parse_sampler(const std::string& name) {
+    return name == "independent" ? render::SamplerKind::Independent : render::SamplerKind::Sobol;
+}
+
 Scene import_from(const std::string& path, std::string& label) {
     label = cli::is_stdio(path) ? "<stdin>" : path;
     const std::string bytes = cli::read_input(path);
@@ -82,14 +90,25 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     require_same(o.height, file.film.height, "--height", "height", path);
     require_same(o.seed, m.seed, "--seed", "orb:seed", path);
     require_same(o.mode, m.mode, "--mode", "orb:mode", path);
+    require_same(o.sampler, m.sampler, "--sampler", "orb:sampler", path);
     require_same(o.max_depth, m.max_depth, "--max-depth", "orb:maxDepth", path);
     plan.config.width = file.film.width;
     plan.config.height = file.film.height;
     plan.config.seed = m.seed;
     plan.config.mode = parse_mode(m.mode);
+    plan.config.sampler = parse_sampler(m.sampler);
     plan.config.max_depth = m.max_depth;
 
     plan.target_spp = o.spp ? *o.spp : m.target_spp;
+    if (o.sample_range) {
+        // Finishing an interrupted slice: the file must hold the start of it.
+        const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
+        const render::SampleRanges& held = file.film.sample_ranges;
+        if (held.ranges().size() != 1 || held.first() != slice.first || held.end() > slice.end())
+            throw InputError(path + ": holds the samples " + held.format() + ", not the start of --sample-range " +
+                             *o.sample_range + "; drop --sample-range to continue the file after its last sample");
+        plan.target_spp = slice.count;
+    }
     if (plan.target_spp < file.film.samples_per_pixel)
         throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
                          " samples per pixel, more than the " + std::to_string(plan.target_spp) + " asked for");
@@ -120,8 +139,14 @@ RenderPlan make_render_plan(const RenderOptions& o) {
     plan.config.height = o.height.value_or(plan.scene.render.height);
     plan.config.seed = o.seed.value_or(0);
     plan.config.mode = parse_mode(o.mode.value_or("global"));
+    plan.config.sampler = parse_sampler(o.sampler.value_or("sobol"));
     plan.config.max_depth = o.max_depth.value_or(plan.scene.render.max_depth);
     plan.target_spp = o.spp ? *o.spp : static_cast<std::uint64_t>(plan.scene.render.spp);
+    if (o.sample_range) {
+        const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
+        plan.first_sample = slice.first;
+        plan.target_spp = slice.count;
+    }
     plan.passes = o.passes ? exr::parse_passes(*o.passes) : exr::all_passes();
     return plan;
 }
@@ -132,6 +157,7 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.seed = plan.config.seed;
     m.max_depth = plan.config.max_depth;
     m.mode = mode_name(plan.config.mode);
+    m.sampler = sampler_name(plan.config.sampler);
     m.scene_file = plan.scene_label;
     m.scene_hash = plan.scene_hash;
     m.scene_time = plan.scene_time;

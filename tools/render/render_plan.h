@@ -20,7 +20,8 @@ struct RenderPlan {
     std::string scene_hash;     // orb::scene_content_hash(scene)
     double scene_time = 0;
     render::RenderConfig config;
-    std::uint64_t target_spp = 0;
+    std::uint64_t target_spp = 0;   // samples per pixel the film is to hold
+    std::uint64_t first_sample = 0; // where a fresh render starts (--sample-range START)
     std::vector<exr::Pass> passes;
     bool half = false;
     std::optional<exr::ExrFilm> resumed;  // the film to continue from

@@ -67,7 +67,9 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
     if (plan.resumed) {
         renderer.load_film(plan.resumed->film);
         cli::info("resuming " + options.resume + " at " + std::to_string(plan.resumed->film.samples_per_pixel) +
-                  " spp");
+                  " spp (samples " + plan.resumed->film.sample_ranges.format() + ")");
+    } else {
+        renderer.clear(plan.first_sample);
     }
     const std::uint64_t start_spp = renderer.samples_per_pixel();
 
@@ -115,9 +117,14 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
     stats.samples_per_second = final_state.samples_per_second;
     stats.stop_reason = stop_reason_name(reason);
     stats.output = options.output;
+    stats.sample_ranges = renderer.sample_ranges().format();
     if (outputs.stats) outputs.stats->write(stats_json(stats));
 
-    const std::string summary = std::to_string(stats.spp) + " spp in " + format_duration(stats.seconds) + " (" +
+    const render::SampleRanges& held = renderer.sample_ranges();
+    const bool from_zero = held.ranges().size() == 1 && held.first() == 0;
+    const std::string summary = std::to_string(stats.spp) + " spp" +
+                                (from_zero ? "" : " (samples " + held.format() + ")") + " in " +
+                                format_duration(stats.seconds) + " (" +
                                 format_rate(stats.samples_per_second) + ") -> " +
                                 outputs.image->display_name();
     if (reason == render::StopReason::Interrupted) {

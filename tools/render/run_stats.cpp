@@ -16,6 +16,7 @@ std::string stats_json(const RunStats& s) {
                              {"height", s.height},
                              {"spp", s.spp},
                              {"spp_this_run", s.spp_this_run},
+                             {"sample_ranges", s.sample_ranges},
                              {"passes", s.passes},
                              {"seconds", s.seconds},
                              {"samples_per_second", s.samples_per_second},

@@ -20,6 +20,7 @@ struct RunStats {
     std::uint64_t device_memory_bytes = 0;
     std::string stop_reason;         // "spp", "time", "interrupted" or "benchmark"
     std::string output;              // "" for --benchmark
+    std::string sample_ranges;       // the sample indices in the image, "0:64"; "" for --benchmark
 };
 
 std::string stats_json(const RunStats& stats);

@@ -6,7 +6,8 @@
  * 1.2 program starts with it: kernels/CMakeLists.txt lists it first among the
  * kernel files, which are concatenated into one program (embedded, from
  * --kernel-dir, or from <prefix>/share/orb/kernels, which mirrors kernels/).
- * It therefore includes nothing on the OpenCL side.
+ * It therefore includes nothing on the OpenCL side (film_channels.h, which the
+ * host includes below, comes before it in the program).
  *
  * Rules that keep the host's and the device's layouts identical:
  *  - Fields are int, uint, float (4 bytes, 4-aligned on both sides) or float4
@@ -36,6 +37,8 @@
 
 #include <cstddef>
 #include <cstdint>
+
+#include "orb/kernels/film_channels.h"
 
 namespace orb::device {
 
@@ -69,6 +72,14 @@ ORB_ENUM(MaterialKind){
 ORB_ENUM(IntegratorMode){
     ORB_ENUMERATOR(IntegratorMode, Global, 0),  /* path tracing */
     ORB_ENUMERATOR(IntegratorMode, Direct, 1),  /* the paper's local illumination */
+};
+
+/* Where a path's random numbers come from (kernels/sampler.cl); the host
+ * builds the program with -DORB_SAMPLER_SOBOL=(this == Sobol), and
+ * orb-render's --sampler and the EXR's orb:sampler name it. */
+ORB_ENUM(SamplerKind){
+    ORB_ENUMERATOR(SamplerKind, Independent, 0), /* Philox: fresh numbers for every sample */
+    ORB_ENUMERATOR(SamplerKind, Sobol, 1),       /* Owen-scrambled Sobol for the first bounces */
 };
 
 /* ---- Scene tables: read-only buffers, __constant or __global ---- */
@@ -208,23 +219,15 @@ typedef struct RenderPassParams {
  * The kernel's signature (kernels/integrator.cl), the host's argument indices,
  * its set of scene buffers and its count of __constant arguments
  * (librender/src/pass_arguments.h) are all generated from this one list:
- *   FILM(name)          __global float* film sums, in the order of
- *                       librender's DeviceFilm::buffers()
+ *   FILM(name, ...)     __global float* film_<name>: one per row of the film's
+ *                       channel table (ORB_FILM_CHANNELS, film_channels.h),
+ *                       which passes the row's other columns along
  *   TABLE(type, name)   a read-only scene table of `type` records, in the
  *                       address space ORB_SCENE_SPACE (__constant or __global)
  *   PARAMS(type, name)  the parameter struct, by value; last, since it ends
  *                       the signature without a comma */
 #define ORB_RENDER_PASS_ARGUMENTS(FILM, TABLE, PARAMS) \
-    FILM(film_radiance)                                \
-    FILM(film_radiance_sq)                             \
-    FILM(film_direct)                                  \
-    FILM(film_indirect)                                \
-    FILM(film_emission)                                \
-    FILM(film_albedo)                                  \
-    FILM(film_normal)                                  \
-    FILM(film_alpha)                                   \
-    FILM(film_depth)                                   \
-    FILM(film_object_id)                               \
+    ORB_FILM_CHANNELS(FILM)                            \
     TABLE(SpherePacket, packets)                       \
     TABLE(BvhNodeRecord, bvh_nodes)                    \
     TABLE(SphereRecord, spheres)                       \

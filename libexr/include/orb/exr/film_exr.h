@@ -14,16 +14,21 @@
 namespace orb::exr {
 
 // Version of the channel layout and attribute meanings below; bumped when a
-// change would make an older file resume wrongly.
-inline constexpr int kFilmFormatVersion = 1;
+// change would make a file resume or merge wrongly in another version.
+// 2 added orb:sampleRanges; a version 1 file (no ranges) holds the samples
+// [0, orb:spp) and is still read.
+inline constexpr int kFilmFormatVersion = 2;
+inline constexpr int kOldestReadableFilmFormat = 1;
 
 // What a render was made from; stored as orb:* header attributes.
-// The sample count is the film's own (orb:spp).
+// The sample count and the sample indices are the film's own (orb:spp,
+// orb:sampleRanges).
 struct ExrMetadata {
     std::uint64_t target_spp = 0;  // orb:targetSpp, where an interrupted render was heading
     std::uint64_t seed = 0;        // orb:seed (a decimal string: 64 bits do not fit an int attribute)
     int max_depth = 0;             // orb:maxDepth
     std::string mode;              // orb:mode, "global" or "direct"
+    std::string sampler = "sobol"; // orb:sampler, "sobol" or "independent" (absent: independent, the only one before)
     std::string device;            // orb:device
     double render_seconds = 0;     // orb:renderSeconds, summed over resumed runs
     std::string scene_file;        // orb:sceneFile
@@ -53,7 +58,7 @@ void write_film_exr(const std::string& path, const render::Film& film, const Exr
                     const ExrWriteOptions& options);
 
 struct ExrFilm {
-    render::Film film;         // sums recovered for the passes present; other sums are zero
+    render::Film film;         // sums recovered for the passes present, other channels cleared; sample ranges set
     ExrMetadata metadata;
     std::vector<Pass> passes;  // from orb:passes, every one checked present
     bool half = false;         // some recovered channel is stored as HALF

@@ -1,13 +1,18 @@
 // The layers ("passes") orb-render can write, their EXR channel names, and
-// the comma-separated form users type (--passes beauty,albedo).
+// the comma-separated form users type (--passes beauty,albedo). All of it
+// comes from the film's channel table (ORB_FILM_LAYERS and ORB_FILM_CHANNELS
+// in kernels/include/orb/kernels/film_channels.h).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "orb/kernels/film_channels.h"
+
 namespace orb::exr {
 
-enum class Pass { Beauty, Direct, Indirect, Emission, Albedo, Normal, Depth, Variance, Id };
+// Beauty, Direct, Indirect, Emission, Albedo, Normal, Depth, Variance, Id.
+using Pass = film::Layer;
 
 // Every pass, in the order they are documented and written.
 const std::vector<Pass>& all_passes();
@@ -20,6 +25,9 @@ std::vector<std::string> pass_channels(Pass pass);
 // Helper channels written next to a pass so that --resume recovers the film's
 // sums exactly (Normal -> orb.normalLength). Always FLOAT.
 std::vector<std::string> pass_resume_channels(Pass pass);
+
+// The film channels stored in a pass, in table order.
+std::vector<const film::ChannelInfo*> pass_film_channels(Pass pass);
 
 // Parses "beauty,albedo" (or "all"); duplicates are dropped, the result is in
 // all_passes() order. Throws std::invalid_argument naming the bad entry.

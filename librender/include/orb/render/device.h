@@ -33,4 +33,9 @@ std::vector<DeviceInfo> list_devices();
 // the device or platform name. Throws std::runtime_error naming the choices.
 DeviceInfo choose_device(const std::string& selector);
 
+// Devices for a selector: one as choose_device() reads it, a comma-separated
+// list of those ("0,1"), or "all" (every device). Throws std::runtime_error
+// naming the choices for an entry that matches nothing or a device named twice.
+std::vector<DeviceInfo> choose_devices(const std::string& selector);
+
 }  // namespace orb::render

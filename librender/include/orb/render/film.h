@@ -1,10 +1,18 @@
-// The film: per-pixel sums over samples plus the number of samples in each
-// pixel. Keeping sums (not means) makes passes, resumed runs and sample
-// slices rendered on other machines merge exactly by addition.
+// The film: per-pixel sums over samples plus which samples it holds. Keeping
+// sums (not means) makes passes, resumed runs, devices and sample slices
+// rendered on other machines merge exactly by addition.
+//
+// Its channels are the rows of the one channel table, ORB_FILM_CHANNELS in
+// kernels/include/orb/kernels/film_channels.h (what each holds, how it is
+// cleared, accumulated, merged and stored): one std::vector<float> member per
+// row, of the row's name (radiance, alpha, direct, ..., depth, object_id).
 #pragma once
 
 #include <cstdint>
 #include <vector>
+
+#include "orb/kernels/film_channels.h"
+#include "orb/render/sample_ranges.h"
 
 namespace orb::render {
 
@@ -12,24 +20,30 @@ struct Film {
     int width = 0;
     int height = 0;
     std::uint64_t samples_per_pixel = 0;  // every pixel holds the same count
+    // The sample indices the sums hold, sample_ranges.total() of them. Empty
+    // while samples_per_pixel is 0; a film made by hand that sets only the
+    // count holds the first samples_per_pixel indices (see held_ranges()).
+    SampleRanges sample_ranges;
 
-    // Row-major, top row first. RGB/XYZ sets hold 3 floats per pixel.
-    std::vector<float> radiance;     // sum of L (beauty)
-    std::vector<float> radiance_sq;  // sum of L^2, per channel, for the variance of the mean
-    std::vector<float> direct;       // sum of light arriving by one scattering event from an emitter
-    std::vector<float> indirect;     // sum of light scattered two or more times
-    std::vector<float> emission;     // sum of emission seen directly (through specular chains)
-    std::vector<float> albedo;       // sum of the first non-specular hit's reflectance
-    std::vector<float> normal;       // sum of the world normal at the first hit (0 for misses)
-    std::vector<float> alpha;        // 1 float per pixel: sum of coverage (1 hit, 0 miss)
-    // Not sums: taken from the ray through the pixel centre.
-    std::vector<float> depth;        // distance along the camera ray to the first hit, +inf for a miss
-    std::vector<float> object_id;    // index of the sphere at the first hit, -1 for none
+    // Row-major, top row first; `components` floats per pixel.
+#define ORB_FILM_MEMBER(name, ...) std::vector<float> name;
+    ORB_FILM_CHANNELS(ORB_FILM_MEMBER)
+#undef ORB_FILM_MEMBER
 
-    void resize(int w, int h);       // zero sums, depth=+inf, id=-1, samples=0
+    std::vector<float>& channel(film::Channel channel);
+    const std::vector<float>& channel(film::Channel channel) const;
+
+    // Every channel at its clear value, no samples.
+    void resize(int w, int h);
     std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
 
-    // Adds another film's sums and counts (same size; depth/id taken from `other` if this is empty).
+    // sample_ranges, or [0, samples_per_pixel) when only the count was set.
+    SampleRanges held_ranges() const;
+
+    // Adds a film of other samples (same size): each channel by its merge
+    // rule (sums add; a Same channel keeps the value of the film holding the
+    // lowest sample index). Throws std::invalid_argument for another size or
+    // for sample ranges that overlap (their samples would count twice).
     void accumulate(const Film& other);
 };
 

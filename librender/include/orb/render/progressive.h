@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "orb/render/renderer.h"
+#include "orb/render/pass_renderer.h"
 
 namespace orb::render {
 
@@ -33,7 +33,7 @@ enum class StopReason { ReachedSpp, ReachedTime, Interrupted };
 
 // Renders until a limit is reached or `stop_requested` becomes true (checked
 // between passes, so the pass in flight always completes).
-StopReason render_progressively(Renderer& renderer, const ProgressiveLimits& limits,
+StopReason render_progressively(PassRenderer& renderer, const ProgressiveLimits& limits,
                                 const ProgressiveCallbacks& callbacks, const std::atomic<bool>& stop_requested,
                                 ProgressState* final_state = nullptr);
 

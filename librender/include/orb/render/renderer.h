@@ -1,14 +1,25 @@
-// The OpenCL path tracer. One work-item per pixel sample; a pass adds
-// `samples` samples to every pixel of the film kept on the device.
+// The OpenCL path tracer's front: one film, rendered by one device or split
+// over several. One work-item per pixel; a pass adds samples to every pixel.
+//
+// Underneath (librender/src): a DeviceSession per device (context, queue and
+// the built programs, shared by every renderer in the process) and a
+// DeviceRenderer per device (its film and scene, rendering any slice of the
+// sample sequence). The RNG is counter-based, so a sample is a pure function
+// of (pixel, sample index, seed): the front gives each device its own slice
+// of indices and sums their films, and the image depends only on which
+// indices were rendered, not on the devices, passes or runs.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "orb/kernels/device_types.h"
 #include "orb/render/device.h"
 #include "orb/render/film.h"
+#include "orb/render/pass_renderer.h"
+#include "orb/render/sample_ranges.h"
 #include "orb/scene/scene.h"
 
 namespace orb::render {
@@ -16,6 +27,8 @@ namespace orb::render {
 // Global (path tracing) or Direct (the paper's local illumination): the
 // kernels' enum, from kernels/include/orb/kernels/device_types.h.
 using IntegratorMode = device::IntegratorMode;
+// Sobol (low discrepancy, the default) or Independent (Philox): the kernels' enum.
+using SamplerKind = device::SamplerKind;
 
 struct RenderConfig {
     int width = 640;
@@ -23,39 +36,58 @@ struct RenderConfig {
     int max_depth = 6;
     IntegratorMode mode = IntegratorMode::Global;
     std::uint64_t seed = 0;
-    std::string device;       // selector for choose_device()
+    SamplerKind sampler = SamplerKind::Sobol;
+    std::string device;       // selector for choose_devices(): one device, a list, or "all"
     std::string kernel_dir;   // development override of the embedded kernels ("" = embedded; env ORB_KERNEL_DIR too)
     bool use_binary_cache = true;  // $XDG_CACHE_HOME/orb (or ~/.cache/orb)
     bool use_bvh = true;  // false: every ray tests every sphere (for tests and comparisons; same image)
 };
 
-class Renderer {
+class Renderer final : public PassRenderer {
 public:
-    // Chooses the device, builds (or loads cached) kernels, uploads the scene.
-    // Throws std::runtime_error with the build log if the kernels do not build.
+    // Chooses the device(s), builds (or loads cached) kernels, uploads the
+    // scene. Throws std::runtime_error with the build log if the kernels do
+    // not build, std::invalid_argument for a bad size or depth.
     Renderer(const Scene& scene, const RenderConfig& config);
-    ~Renderer();
+    ~Renderer() override;
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    const DeviceInfo& device() const;
+    const DeviceInfo& device() const;  // the first device
+    const std::vector<DeviceInfo>& devices() const;
     const RenderConfig& config() const;
 
-    // Samples per pixel a pass should add so that one pass stays short on this
-    // device (well under 100 ms on a GPU); tuned from the passes run so far.
-    int suggested_samples_per_pass() const;
+    // A new scene of the same size and settings (the next frame): its
+    // tables and camera are uploaded, the programs already built on each
+    // device are reused when the scene needs the same build options (it
+    // rebuilds only if, say, a BVH appears). The film is emptied.
+    void set_scene(const Scene& scene);
+    // Another seed; the film is emptied.
+    void set_seed(std::uint64_t seed);
+    // Empties the film; render_pass() continues from sample `first_sample`.
+    void clear(std::uint64_t first_sample = 0);
 
-    // Adds `samples` samples per pixel, sample indices continuing from
-    // samples_per_pixel(); blocks until done. The RNG is counter-based, so the
-    // result depends only on the seed and on which sample indices were taken.
-    void render_pass(int samples);
+    int suggested_samples_per_pass() const override;
+    // Adds `samples` samples per pixel, continuing from next_sample().
+    void render_pass(int samples) override;
+    // Adds exactly the samples [first_sample, first_sample + count), split
+    // over the devices in proportion to their measured speed. Throws
+    // std::invalid_argument if the film already holds any of them.
+    void render_samples(std::uint64_t first_sample, int count);
 
-    std::uint64_t samples_per_pixel() const;
+    std::uint64_t samples_per_pixel() const override;
+    std::uint64_t pixel_count() const override;
+    std::uint64_t next_sample() const;
+    const SampleRanges& sample_ranges() const;
 
-    Film read_film() const;            // copies the sums back from the device
-    void load_film(const Film& film);  // resume: continue from these sums and count
+    // The film: every device's sums added, with the sample count and ranges.
+    Film read_film() const;
+    // Continue from these sums: render_pass() then follows the film's
+    // highest sample index. The film must have this renderer's size.
+    void load_film(const Film& film);
 
-    std::uint64_t device_memory_bytes() const;  // buffers this renderer allocated
+    std::uint64_t device_memory_bytes() const;  // buffers allocated, over all devices
+    int programs_built() const;                 // kernel programs built or loaded, over all devices
 
 private:
     struct Impl;
@@ -70,6 +102,6 @@ struct BenchmarkResult {
 };
 
 // Warm-up passes, then timed passes for about `seconds`, no image written.
-BenchmarkResult run_benchmark(Renderer& renderer, double seconds);
+BenchmarkResult run_benchmark(PassRenderer& renderer, double seconds);
 
 }  // namespace orb::render

@@ -1,0 +1,77 @@
+// The renderer of one device: the film and the scene in its memory, and
+// render_pass over any slice of the sample sequence. A new scene (the next
+// frame of an animation) replaces the old one without a new context or a
+// new program build, since both belong to the device's session.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "device_film.h"
+#include "device_session.h"
+#include "opencl.h"
+#include "orb/kernels/device_types.h"
+#include "orb/render/renderer.h"
+#include "pass_arguments.h"
+#include "pass_tuner.h"
+#include "scene_layout.h"
+
+namespace orb::render {
+
+class DeviceRenderer {
+public:
+    // A film of config.width x config.height (cleared) on the session's
+    // device, with config's depth, mode and seed; no scene until set_scene().
+    DeviceRenderer(std::shared_ptr<DeviceSession> session, const RenderConfig& config);
+
+    const DeviceInfo& device() const { return session_->info(); }
+
+    // Uploads the scene's tables and camera and picks the program they need
+    // (built once per device for each set of build options). The film is
+    // left as it is.
+    void set_scene(const SceneLayout& scene, const device::CameraParams& camera);
+    void set_seed(std::uint64_t seed);
+
+    // Every channel at its clear value; the next slice writes the centre-ray channels.
+    void clear_film();
+    // Starts rendering the samples [first_sample, first_sample + count) into
+    // the film and returns; wait() blocks until they are done.
+    void enqueue(std::uint64_t first_sample, int count);
+    void wait();
+
+    Film read_film();              // the sums; samples and ranges are the caller's
+    void load_film(const Film& film);  // sums to continue from (centre-ray channels included when it holds samples)
+
+    // Samples per pixel a pass should take to last the pass length aimed at
+    // on this device, and the measured seconds per sample per pixel (0 until
+    // a slice has been timed).
+    int suggested_samples_per_pass() const { return tuner_.suggested(); }
+    double seconds_per_sample() const { return tuner_.seconds_per_sample(); }
+
+    std::uint64_t device_memory_bytes() const;
+    int programs_built() const { return session_->programs_built(); }
+
+private:
+    std::string build_options(const SceneLayout& scene) const;
+    void choose_work_sizes();
+    [[noreturn]] void fail(const cl::Error& error, const std::string& what) const;
+
+    std::shared_ptr<DeviceSession> session_;
+    RenderConfig config_;
+    DeviceFilm film_;
+    const cl::Program* program_ = nullptr;
+    cl::Kernel kernel_;
+    SceneBuffers scene_buffers_;
+    std::uint64_t scene_bytes_ = 0;
+    device::RenderPassParams params_{};
+    cl::NDRange local_size_;
+    cl::NDRange global_size_;
+    bool centre_ray_pending_ = true;  // the centre-ray channels are not yet on the film
+    PassTuner tuner_;
+    int pending_samples_ = 0;  // enqueued since the last wait()
+    std::chrono::steady_clock::time_point pending_since_{};
+};
+
+}  // namespace orb::render

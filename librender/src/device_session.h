@@ -1,0 +1,63 @@
+// A device opened for rendering, shared by every renderer on it: the OpenCL
+// context and queue, and the render_pass programs built for it. Opening the
+// same device twice in a process gives the same session, and a program is
+// built (or loaded from the binary cache) once per set of build options, so
+// frame after frame and renderer after renderer reuse it.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <tuple>
+
+#include "opencl.h"
+#include "orb/render/device.h"
+
+namespace orb::render {
+
+struct SessionOptions {
+    std::string kernel_dir;        // "" = the embedded kernels (ORB_KERNEL_DIR overrides)
+    bool use_binary_cache = true;  // $XDG_CACHE_HOME/orb (or ~/.cache/orb)
+    bool operator<(const SessionOptions& o) const
+    {
+        return std::tie(kernel_dir, use_binary_cache) < std::tie(o.kernel_dir, o.use_binary_cache);
+    }
+};
+
+class DeviceSession {
+public:
+    // The process's session on `device` with `options`, opened on first use.
+    // Throws std::runtime_error when the device cannot be set up.
+    static std::shared_ptr<DeviceSession> open(const DeviceInfo& device, const SessionOptions& options);
+
+    DeviceSession(const DeviceInfo& device, const SessionOptions& options);
+    DeviceSession(const DeviceSession&) = delete;
+    DeviceSession& operator=(const DeviceSession&) = delete;
+
+    const DeviceInfo& info() const { return info_; }
+    const cl::Device& device() const { return device_; }
+    const cl::Context& context() const { return context_; }
+    cl::CommandQueue& queue() { return queue_; }
+
+    // The program built from the kernels with these compiler options; built
+    // on the first request, then the same one. Throws std::runtime_error with
+    // the build log when it does not build.
+    const cl::Program& program(const std::string& build_options);
+
+    // Programs built or loaded so far (one per distinct set of options).
+    int programs_built() const;
+
+private:
+    DeviceInfo info_;
+    SessionOptions options_;
+    cl::Device device_;
+    cl::Context context_;
+    cl::CommandQueue queue_;
+    std::string source_;  // read once: the kernels do not change while the process runs
+    mutable std::mutex programs_mutex_;
+    std::map<std::string, cl::Program> programs_;
+};
+
+}  // namespace orb::render
