@@ -103,42 +103,45 @@ inline float3 sample_environment(const SceneView* scene, float u, float v, float
     return environment_from_map(scene, (float3)(-sin_theta * cs.x, cos_theta, -sin_theta * cs.y));
 }
 
-// Next-event estimate at a diffuse point p (normal n facing the viewer) from
-// the environment, chosen with probability `pick_pdf`, weighted against BSDF
-// sampling by the power heuristic. The shadow ray must escape: it may hit
-// nothing at all (light_visible with light -1).
-inline float3 estimate_environment_light(const SceneView* scene, float pick_pdf, float3 p, float3 n, int self,
-                                         float3 albedo, float u, float v)
+// Next-event estimate at a point p with a density-carrying BSDF (wo towards
+// the viewer, n the normal on wo's side; the interface of kernels/bsdf.cl)
+// from the environment, chosen with probability `pick_pdf`, weighted against
+// BSDF sampling by the power heuristic. The shadow ray must escape: it may
+// hit nothing at all (light_visible with light -1).
+inline float3 estimate_environment_light(const SceneView* scene, float pick_pdf, float3 p, int self, const Bsdf* bsdf,
+                                         float3 wo, float3 n, bool outside, float u, float v)
 {
     float4 texel;
     const float3 wi = sample_environment(scene, u, v, &texel);
-    const float cos_theta = dot(n, wi);
-    if (cos_theta <= 0.0f || texel.w <= 0.0f) return (float3)(0.0f);
+    if (!(texel.w > 0.0f)) return (float3)(0.0f);
+    float bsdf_pdf;
+    const float3 f_cos = bsdf_eval(bsdf, wo, wi, n, outside, &bsdf_pdf);
+    // Nothing to carry (below the surface, outside every lobe, or black): no shadow ray.
+    if (!(f_cos.x + f_cos.y + f_cos.z > 0.0f)) return (float3)(0.0f);
     if (!light_visible(scene, p, wi, self, -1)) return (float3)(0.0f);
     const float light_pdf = pick_pdf * texel.w;
-    const float bsdf_pdf = cos_theta * ORB_INV_PI;
     const float weight = power_heuristic(light_pdf, bsdf_pdf);
-    return texel.xyz * albedo * (ORB_INV_PI * cos_theta * weight / light_pdf);
+    return texel.xyz * f_cos * (weight / light_pdf);
 }
 
-// Next-event estimate from light `light` of the lights table: an emissive
+// Next-event estimate from one light of the lights table: an emissive
 // sphere, or the environment (LightRecord.sphere -1).
-inline float3 estimate_light(const SceneView* scene, int light_sphere, float pick_pdf, float3 p, float3 n, int self,
-                             float3 albedo, float u, float v)
+inline float3 estimate_light(const SceneView* scene, int light_sphere, float pick_pdf, float3 p, int self,
+                             const Bsdf* bsdf, float3 wo, float3 n, bool outside, float u, float v)
 {
-    if (light_sphere < 0) return estimate_environment_light(scene, pick_pdf, p, n, self, albedo, u, v);
-    return estimate_direct_light(scene, light_sphere, pick_pdf, p, n, self, albedo, u, v);
+    if (light_sphere < 0) return estimate_environment_light(scene, pick_pdf, p, self, bsdf, wo, n, outside, u, v);
+    return estimate_direct_light(scene, light_sphere, pick_pdf, p, self, bsdf, wo, n, outside, u, v);
 }
 
 // Radiance a ray that left the scene in direction d brings back, weighted by
-// multiple importance sampling when it was BSDF-sampled from a diffuse point
-// (the other strategy being estimate_environment_light there); weight 1 from
-// the camera or after a specular event. `pick_pdf` is the chance the light
-// sampler picks the environment.
-inline float3 escaped_radiance(const SceneView* scene, float3 d, bool from_diffuse, float from_pdf, float pick_pdf)
+// multiple importance sampling when it was sampled from a lobe with a density
+// (the other strategy being estimate_environment_light there, with the same
+// pdfs); weight 1 from the camera or after a delta lobe. `pick_pdf` is the
+// chance the light sampler picks the environment.
+inline float3 escaped_radiance(const SceneView* scene, float3 d, bool from_density, float from_pdf, float pick_pdf)
 {
     if (!has_environment(scene)) return (float3)(0.0f);
     const float4 e = environment_lookup(scene, d);
-    const float weight = from_diffuse ? power_heuristic(from_pdf, pick_pdf * e.w) : 1.0f;
+    const float weight = from_density ? power_heuristic(from_pdf, pick_pdf * e.w) : 1.0f;
     return e.xyz * weight;
 }

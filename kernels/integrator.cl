@@ -1,11 +1,17 @@
 // The path tracer: one work-item per pixel, looping over this pass's samples
 // (docs/rendering.md gives the estimators and the exact meaning of depth).
+// Materials enter only through the BSDF interface (bsdf.cl).
 //
-// Depth counts scattering events (diffuse, mirror or dielectric) along a path
-// from the camera: max_depth d admits paths whose light scattered at most d
-// times before reaching the camera. The ray leaving scattering event d is
-// still traced, for the emission it may hit (the BSDF half of the MIS pair at
-// that vertex), but it scatters no further.
+// Depth counts scattering events (of any material) along a path from the
+// camera: max_depth d admits paths whose light scattered at most d times
+// before reaching the camera. The ray leaving scattering event d is still
+// traced, for the emission it may hit (the BSDF half of the MIS pair at that
+// vertex), but it scatters no further.
+//
+// A vertex is "non-delta" for a path when the path's light scattered there
+// through a lobe with a density (diffuse, glossy, rough glass): next-event
+// estimation there counts it, and so does the continuation when the sampled
+// lobe was not a delta. Mirror and smooth-glass events are delta vertices.
 
 // Russian roulette applies from this scattering event on (a build option
 // for experiments: -DRR_START_EVENT=N).
@@ -20,19 +26,19 @@
 #endif
 
 typedef struct {
-    float3 emission;  // paths with no diffuse vertex (emitters seen directly or through specular chains)
-    float3 direct;    // paths with exactly one diffuse vertex
-    float3 indirect;  // paths with two or more diffuse vertices
-    float3 albedo;    // specular tints times the reflectance of the first diffuse vertex
+    float3 emission;  // paths with no non-delta vertex (emitters seen directly or through specular chains)
+    float3 direct;    // paths with exactly one non-delta vertex
+    float3 indirect;  // paths with two or more non-delta vertices
+    float3 albedo;    // specular tints times the reflectance of the first non-delta vertex
     float3 normal;    // normal at the first hit, facing the camera ray
     float alpha;      // 1 when the camera ray hit something
 } PathSample;
 
-inline void add_by_diffuse_count(PathSample* s, int diffuse_vertices, float3 contribution)
+inline void add_by_vertex_count(PathSample* s, int nondelta_vertices, float3 contribution)
 {
-    if (diffuse_vertices == 0)
+    if (nondelta_vertices == 0)
         s->emission += contribution;
-    else if (diffuse_vertices == 1)
+    else if (nondelta_vertices == 1)
         s->direct += contribution;
     else
         s->indirect += contribution;
@@ -44,11 +50,11 @@ typedef struct {
     int self;        // sphere the ray leaves, -1 for the camera
     int depth;       // scattering events so far
     float3 beta;     // path throughput
-    float eta2;      // product of the refractions' (n_i / n_t)^2 factors inside beta
-    int diffuse_vertices;
+    float eta2;      // product of the refractions' radiance factors inside beta
+    int nondelta_vertices;
     bool albedo_set;
     // Where the ray was BSDF-sampled from, for MIS at an emitter it hits.
-    bool from_diffuse;
+    bool from_density;  // sampled from a lobe with a density (light sampling could have produced it)
     float from_pdf;
     float3 from_point;
     int from_self;
@@ -62,9 +68,9 @@ inline void begin_path(PathState* path, PathSample* out, float3 o, float3 d)
     path->depth = 0;
     path->beta = (float3)(1.0f);
     path->eta2 = 1.0f;
-    path->diffuse_vertices = 0;
+    path->nondelta_vertices = 0;
     path->albedo_set = false;
-    path->from_diffuse = false;
+    path->from_density = false;
     path->from_pdf = 0.0f;
     path->from_point = o;
     path->from_self = -1;
@@ -82,6 +88,44 @@ inline void begin_camera_path(const CameraParams* cam, int x, int y, int width, 
     begin_path(path, out, o, d);
 }
 
+// Next-event estimation at a non-delta vertex: in direct mode from every
+// light, else from one light picked from the alias table (spheres by power,
+// the environment by its share; docs/rendering.md, "Picking a light").
+// Returns the radiance towards wo.
+inline float3 sample_lights(const SceneView* scene, float3 p, int self, const Bsdf* bsdf, float3 wo, float3 n,
+                            bool outside, const Rand5* r, int mode)
+{
+    const int light_count = scene->light_count;
+    float3 sum = (float3)(0.0f);
+    if (mode == IntegratorMode_Direct) {
+        for (int i = 0; i < light_count; ++i)
+            sum += estimate_light(scene, scene->lights[i].sphere, 1.0f, p, self, bsdf, wo, n, outside, r->u0, r->u1);
+        return sum;
+    }
+    if (light_count == 0) return sum;
+    // One uniform number picks the light by power (the alias table) and,
+    // rescaled to [0, 1) again, samples it.
+    const float scaled = r->u0 * (float)light_count;
+    const int slot = min((int)scaled, light_count - 1);
+#if ORB_UNIFORM_LIGHTS
+    // Lights of equal power: the alias table is the identity, so skip it
+    // (the same picks and pdfs, fewer loads; 2% on an H100).
+    const float u = fmin(scaled - (float)slot, 0x1.fffffep-1f);
+    return estimate_light(scene, scene->lights[slot].sphere, 1.0f / (float)light_count, p, self, bsdf, wo, n, outside,
+                          u, r->u1);
+#else
+    const float rest = scaled - (float)slot;
+    SCENE_MEM const LightRecord* entry = &scene->lights[slot];
+    const bool own = rest < entry->alias_threshold;
+    const int pick = own ? slot : entry->alias;
+    const float u = fmin(own ? rest / entry->alias_threshold
+                             : (rest - entry->alias_threshold) / (1.0f - entry->alias_threshold),
+                         0x1.fffffep-1f);
+    SCENE_MEM const LightRecord* light = &scene->lights[pick];
+    return estimate_light(scene, light->sphere, light->probability, p, self, bsdf, wo, n, outside, u, r->u1);
+#endif
+}
+
 // Casts the path's next ray and handles what it hits: emission, next-event
 // estimation, scattering. Returns false when the path has ended.
 inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out, uint pixel, ulong sample,
@@ -92,31 +136,30 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
         // Escaped: the environment's radiance (kernels/environment.cl). Alpha
         // stays 0: it is the coverage of spheres, so a render composites over a plate.
         const float env_pick_pdf = mode == IntegratorMode_Direct ? 1.0f : scene->environment.light_probability;
-        add_by_diffuse_count(out, path->diffuse_vertices,
-                             path->beta * escaped_radiance(scene, path->d, path->from_diffuse, path->from_pdf,
-                                                           env_pick_pdf));
+        add_by_vertex_count(out, path->nondelta_vertices,
+                            path->beta * escaped_radiance(scene, path->d, path->from_density, path->from_pdf,
+                                                          env_pick_pdf));
         return false;
     }
     const ShadingSphere m = load_sphere(scene, hit.id);
     const float3 d = path->d;
     const float3 p = path->o + hit.t * d;
     const float3 outward = (p - m.centre) * (1.0f / m.radius);
-    const bool entering = dot(d, outward) < 0.0f;
-    const float3 n = entering ? outward : -outward;
+    const bool outside = dot(d, outward) < 0.0f;  // the ray arrives from outside the sphere
+    const float3 n = outside ? outward : -outward;
+    const float3 wo = -d;
     const int depth = path->depth;
     if (depth == 0) {
         out->alpha = 1.0f;
         out->normal = n;
     }
 
-    const int light_count = scene->light_count;
-
     if (m.emission.x + m.emission.y + m.emission.z > 0.0f) {
-        float weight = 1.0f;  // after the camera or a specular event only this strategy exists
-        if (path->from_diffuse) {
+        float weight = 1.0f;  // after the camera or a delta lobe only this strategy exists
+        if (path->from_density) {
             // Global mode picks one light per vertex by power; direct mode samples every light.
 #if ORB_UNIFORM_LIGHTS
-            const float pick_pdf = mode == IntegratorMode_Direct ? 1.0f : 1.0f / (float)light_count;
+            const float pick_pdf = mode == IntegratorMode_Direct ? 1.0f : 1.0f / (float)scene->light_count;
 #else
             const float pick_pdf = mode == IntegratorMode_Direct ? 1.0f : scene->spheres[hit.id].light_probability;
 #endif
@@ -124,55 +167,30 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
                 pick_pdf * light_direction_pdf(path->from_point, path->from_self, hit.id, m.centre, m.radius);
             weight = power_heuristic(path->from_pdf, light_pdf);
         }
-        add_by_diffuse_count(out, path->diffuse_vertices, path->beta * m.emission * weight);
+        add_by_vertex_count(out, path->nondelta_vertices, path->beta * m.emission * weight);
     }
 
     if (depth == max_depth) return false;
-    // Direct mode: the ray after the first diffuse vertex was traced only for its emission.
-    if (mode == IntegratorMode_Direct && path->diffuse_vertices == 1) return false;
+    // Direct mode: the ray after the first non-delta vertex was traced only for its emission.
+    if (mode == IntegratorMode_Direct && path->nondelta_vertices == 1) return false;
 
     const Rand5 r = rng_block(pixel, sample, (uint)(depth + 1), seed);
-    if (m.kind == MaterialKind_Diffuse) {
-        const int vertices = ++path->diffuse_vertices;
+    const bool has_density = bsdf_has_density(&m.bsdf);
+    if (has_density) {
         if (!path->albedo_set) {
-            out->albedo = path->beta * m.color;
+            out->albedo = path->beta * bsdf_albedo(&m.bsdf, wo, n);
             path->albedo_set = true;
         }
-        if (mode == IntegratorMode_Direct) {
-            for (int i = 0; i < light_count; ++i)
-                add_by_diffuse_count(out, vertices,
-                                     path->beta * estimate_light(scene, scene->lights[i].sphere, 1.0f, p, n, hit.id,
-                                                                 m.color, r.u0, r.u1));
-        } else if (light_count > 0) {
-            // One uniform number picks the light by power (the alias table)
-            // and, rescaled to [0, 1) again, samples it.
-            const float scaled = r.u0 * (float)light_count;
-            const int slot = min((int)scaled, light_count - 1);
-#if ORB_UNIFORM_LIGHTS
-            // Lights of equal power: the alias table is the identity, so skip it
-            // (the same picks and pdfs, fewer loads; 2% on an H100).
-            const float u = fmin(scaled - (float)slot, 0x1.fffffep-1f);
-            add_by_diffuse_count(out, vertices,
-                                 path->beta * estimate_light(scene, scene->lights[slot].sphere,
-                                                             1.0f / (float)light_count, p, n, hit.id, m.color, u,
-                                                             r.u1));
-#else
-            const float rest = scaled - (float)slot;
-            SCENE_MEM const LightRecord* entry = &scene->lights[slot];
-            const bool own = rest < entry->alias_threshold;
-            const int pick = own ? slot : entry->alias;
-            const float u = fmin(own ? rest / entry->alias_threshold
-                                     : (rest - entry->alias_threshold) / (1.0f - entry->alias_threshold),
-                                 0x1.fffffep-1f);
-            SCENE_MEM const LightRecord* light = &scene->lights[pick];
-            add_by_diffuse_count(out, vertices,
-                                 path->beta * estimate_light(scene, light->sphere, light->probability, p, n,
-                                                             hit.id, m.color, u, r.u1));
-#endif
-        }
+        add_by_vertex_count(out, path->nondelta_vertices + 1,
+                            path->beta * sample_lights(scene, p, hit.id, &m.bsdf, wo, n, outside, &r, mode));
     }
 
-    const BsdfSample bs = sample_bsdf(&m, d, n, entering, r.u2, r.u3, r.u0);
+    // The number that picks a lobe: u0 where next-event estimation left it
+    // unused, else the roulette number, which the BSDF hands back rescaled
+    // (uniform again and independent of its pick) for the roulette below.
+    float choice = has_density ? r.u4 : r.u0;
+    const BsdfSample bs = bsdf_sample(&m.bsdf, wo, n, outside, r.u2, r.u3, &choice);
+    const float roulette = has_density ? choice : r.u4;
     float3 beta = path->beta * bs.weight;
     const float beta_max = fmax(beta.x, fmax(beta.y, beta.z));
     if (beta_max <= 0.0f) return false;
@@ -183,17 +201,18 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
         // inside glass beta carries (1/1.5)^2, which is no loss of energy, and
         // paths there would otherwise die 2.25 times too often.
         const float q = fmin(1.0f, beta_max / (eta2 * RR_THRESHOLD));
-        if (r.u4 >= q) return false;
+        if (roulette >= q) return false;
         beta *= 1.0f / q;
     }
     path->beta = beta;
     path->eta2 = eta2;
-    path->from_diffuse = bs.pdf > 0.0f;
+    path->nondelta_vertices += bs.delta ? 0 : 1;
+    path->from_density = !bs.delta;
     path->from_pdf = bs.pdf;
     path->from_point = p;
     path->from_self = hit.id;
     path->o = p;
-    path->d = bs.dir;
+    path->d = bs.wi;
     path->self = hit.id;
     path->depth = depth + 1;
     return true;

@@ -45,22 +45,24 @@ inline float3 sample_light_direction(float3 p, int self, int light_id, float3 ce
     return sample_uniform_cone(pc * rsqrt(distance2), one_minus_cos_max, u, v);
 }
 
-// Next-event estimate at a diffuse point p (normal n facing the viewer) from
-// one light chosen with probability `pick_pdf`, weighted against BSDF sampling
-// by the power heuristic. Visibility: the first thing the shadow ray hits
-// must be the light itself (nothing else before the light's own distance
-// along the ray, found by the same sphere test), so no epsilon is needed.
-inline float3 estimate_direct_light(const SceneView* scene, int light_id, float pick_pdf, float3 p, float3 n,
-                                    int self, float3 albedo, float u, float v)
+// Next-event estimate at a point p with a density-carrying BSDF (wo towards
+// the viewer, n the normal on wo's side) from one light chosen with
+// probability `pick_pdf`, weighted against BSDF sampling by the power
+// heuristic. Visibility: the first thing the shadow ray hits must be the light
+// itself (nothing else before the light's own distance along the ray, found by
+// the same sphere test), so no epsilon is needed.
+inline float3 estimate_direct_light(const SceneView* scene, int light_id, float pick_pdf, float3 p, int self,
+                                    const Bsdf* bsdf, float3 wo, float3 n, bool outside, float u, float v)
 {
     const ShadingSphere light = load_sphere(scene, light_id);
     float direction_pdf;
     const float3 wi = sample_light_direction(p, self, light_id, light.centre, light.radius, u, v, &direction_pdf);
-    const float cos_theta = dot(n, wi);
-    if (cos_theta <= 0.0f) return (float3)(0.0f);
+    float bsdf_pdf;
+    const float3 f_cos = bsdf_eval(bsdf, wo, wi, n, outside, &bsdf_pdf);
+    // Nothing to carry (below the surface, outside every lobe, or black): no shadow ray.
+    if (!(f_cos.x + f_cos.y + f_cos.z > 0.0f)) return (float3)(0.0f);
     if (!light_visible(scene, p, wi, self, light_id)) return (float3)(0.0f);
     const float light_pdf = pick_pdf * direction_pdf;
-    const float bsdf_pdf = cos_theta * ORB_INV_PI;
     const float weight = power_heuristic(light_pdf, bsdf_pdf);
-    return light.emission * albedo * (ORB_INV_PI * cos_theta * weight / light_pdf);
+    return light.emission * f_cos * (weight / light_pdf);
 }

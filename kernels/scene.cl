@@ -32,11 +32,20 @@ typedef struct {
 typedef struct {
     float3 centre;
     float radius;
-    float3 color;
-    int kind;  // a MaterialKind
     float3 emission;
-    float ior;
+    Bsdf bsdf;
 } ShadingSphere;
+
+inline Bsdf load_bsdf(SCENE_MEM const MaterialRecord* m)
+{
+    Bsdf b;
+    b.color = m->color.xyz;
+    b.kind = m->kind;
+    b.ior = m->ior;
+    b.roughness = m->roughness;
+    b.metallic = m->metallic;
+    return b;
+}
 
 inline ShadingSphere load_sphere(const SceneView* scene, int id)
 {
@@ -45,9 +54,7 @@ inline ShadingSphere load_sphere(const SceneView* scene, int id)
     ShadingSphere s;
     s.centre = centre_radius.xyz;
     s.radius = centre_radius.w;
-    s.color = m->color.xyz;
-    s.kind = m->kind;
     s.emission = m->emission.xyz;
-    s.ior = m->ior;
+    s.bsdf = load_bsdf(m);
     return s;
 }

@@ -10,7 +10,7 @@ namespace {
 
 // Material extensions whose values Orb reads (the rest are dropped whole).
 const std::set<std::string> kReadMaterialExtensions{"KHR_materials_transmission", "KHR_materials_ior",
-                                                    "KHR_materials_emissive_strength"};
+                                                    "KHR_materials_volume", "KHR_materials_emissive_strength"};
 // Asset-level extensions Orb reads, or that change nothing Orb renders.
 const std::set<std::string> kReadExtensions{"KHR_lights_punctual",    "KHR_mesh_quantization",
                                             "EXT_mesh_gpu_instancing", "KHR_implicit_shapes",

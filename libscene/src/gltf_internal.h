@@ -160,6 +160,7 @@ public:
 
 private:
     std::uint32_t add(Material material);
+    void note_volume(const tinygltf::Material& m, const std::string& label);
     const tinygltf::Model& model_;
     Scene& scene_;
     Diagnostics& diagnostics_;

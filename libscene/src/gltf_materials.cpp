@@ -1,5 +1,5 @@
-// glTF metallic-roughness materials -> Orb's diffuse / mirror / dielectric
-// (docs/gltf.md, "Materials").
+// glTF metallic-roughness materials -> Orb's pbr, or dielectric for
+// transmissive ones (docs/gltf.md, "Materials").
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,8 +9,10 @@
 namespace orb::gltf {
 namespace {
 
+// A material becomes glass when at least this share of it transmits: glTF
+// mixes the metal (opaque) and the dielectric part by metallic, and only the
+// dielectric part transmits, transmissionFactor of it.
 constexpr double kTransmissiveThreshold = 0.5;
-constexpr double kMetallicThreshold = 0.5;
 // A primitive without a material gets Blender's default grey, not glTF's
 // default material (which is fully metallic and would import as a mirror).
 constexpr double kDefaultGrey = 0.8;
@@ -19,11 +21,25 @@ double clamp01(double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0
 
 }  // namespace
 
+// Orb's glass is always a solid sphere without absorption: say what of
+// KHR_materials_volume (or of its absence, a thin wall) that drops.
+void MaterialTable::note_volume(const tinygltf::Material& m, const std::string& label) {
+    const tinygltf::Value* volume = extension(m.extensions, "KHR_materials_volume");
+    const double thickness = volume ? number_at(*volume, "thicknessFactor").value_or(0.0) : 0.0;
+    if (!(thickness > 0.0))
+        diagnostics_.lossy(label + ": transmissive and thin-walled (no KHR_materials_volume thickness); "
+                                   "rendered as a solid glass sphere");
+    const std::optional<double> distance = volume ? number_at(*volume, "attenuationDistance") : std::nullopt;
+    if (distance && std::isfinite(*distance))
+        diagnostics_.lossy(label + ": KHR_materials_volume attenuation (distance " + std::to_string(*distance) +
+                           ") is dropped; Orb's glass does not absorb");
+}
+
 std::uint32_t MaterialTable::add(Material material) {
     char key[256];
-    std::snprintf(key, sizeof key, "%d|%.17g,%.17g,%.17g|%.17g,%.17g,%.17g|%.17g|", int(material.type),
+    std::snprintf(key, sizeof key, "%d|%.17g,%.17g,%.17g|%.17g,%.17g,%.17g|%.17g|%.17g|%.17g|", int(material.type),
                   material.color[0], material.color[1], material.color[2], material.emission[0], material.emission[1],
-                  material.emission[2], material.ior);
+                  material.emission[2], material.ior, material.roughness, material.metallic);
     const std::string full_key = key + material.name;
     auto it = by_key_.find(full_key);
     if (it != by_key_.end()) return it->second;
@@ -45,6 +61,7 @@ std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool ve
         diagnostics_.fail("material " + std::to_string(index) + " does not exist (there are " +
                           std::to_string(model_.materials.size()) + ")");
     const tinygltf::Material& m = model_.materials[std::size_t(index)];
+    const bool first_use = used_.insert(index).second;  // say what is lost once per material
     out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
     const std::string label = "material '" + out.name + "'";
 
@@ -56,18 +73,22 @@ std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool ve
 
     double transmission = 0.0;
     if (const tinygltf::Value* ext = extension(m.extensions, "KHR_materials_transmission"))
-        transmission = number_at(*ext, "transmissionFactor").value_or(0.0);
-    const double metallic = m.pbrMetallicRoughness.metallicFactor;
-    if (transmission >= kTransmissiveThreshold) {
+        transmission = clamp01(number_at(*ext, "transmissionFactor").value_or(0.0));
+    const double metallic = clamp01(m.pbrMetallicRoughness.metallicFactor);
+    out.roughness = clamp01(m.pbrMetallicRoughness.roughnessFactor);
+    if ((1.0 - metallic) * transmission >= kTransmissiveThreshold) {
         out.type = MaterialType::Dielectric;
         out.ior = 1.5;  // the KHR_materials_ior default
         if (const tinygltf::Value* ext = extension(m.extensions, "KHR_materials_ior")) {
             const double ior = number_at(*ext, "ior").value_or(1.5);
             if (std::isfinite(ior) && ior >= 1.0) out.ior = ior;
-            else diagnostics_.lossy(label + ": KHR_materials_ior.ior " + std::to_string(ior) + " is not >= 1; using 1.5");
+            else if (first_use)
+                diagnostics_.lossy(label + ": KHR_materials_ior.ior " + std::to_string(ior) + " is not >= 1; using 1.5");
         }
-    } else if (metallic >= kMetallicThreshold) {
-        out.type = MaterialType::Mirror;
+        if (first_use) note_volume(m, label);
+    } else {
+        out.type = MaterialType::Pbr;
+        out.metallic = metallic;
     }
 
     double strength = 1.0;
@@ -84,7 +105,6 @@ std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool ve
         }
     }
 
-    used_.insert(index);
     return add(std::move(out));
 }
 

@@ -60,7 +60,28 @@ MaterialType read_material_type(const Reader& r, const json& value, const std::s
     if (name == "diffuse") return MaterialType::Diffuse;
     if (name == "mirror") return MaterialType::Mirror;
     if (name == "dielectric") return MaterialType::Dielectric;
-    r.fail(path, "expected \"diffuse\", \"mirror\" or \"dielectric\", got \"" + name + "\"");
+    if (name == "pbr") return MaterialType::Pbr;
+    r.fail(path, "expected \"diffuse\", \"mirror\", \"dielectric\" or \"pbr\", got \"" + name + "\"");
+}
+
+// glTF's defaults for a metallic-roughness material without factors.
+constexpr double kPbrDefaultRoughness = 1.0;
+constexpr double kPbrDefaultMetallic = 1.0;
+
+// A number in [0, 1] under `key`, a key that only some material types have.
+double read_unit_parameter(const Reader& r, const json& m, const std::string& path, const std::string& key,
+                           bool applies, const std::string& type_name, double fallback) {
+    if (!m.contains(key)) return fallback;
+    const std::string key_path = path + "." + key;
+    if (!applies) {
+        const std::string owners = key == "roughness" ? "\"dielectric\" and \"pbr\" materials have one"
+                                                      : "\"pbr\" materials have one";
+        r.fail(key_path, "a \"" + type_name + "\" material has no " + key + " (only " + owners +
+                             "; a rough metal is \"pbr\" with \"metallic\": 1)");
+    }
+    const double value = r.number(m[key], key_path);
+    if (!(value >= 0.0 && value <= 1.0)) r.fail(key_path, "must be in [0, 1], got " + detail::format_number(value));
+    return value;
 }
 
 std::vector<Material> read_materials(const Reader& r, const json& value) {
@@ -70,13 +91,19 @@ std::vector<Material> read_materials(const Reader& r, const json& value) {
     for (std::size_t i = 0; i < value.size(); ++i) {
         const std::string path = Reader::index("materials", i);
         const json& m = r.object(value[i], path);
-        r.only_keys(m, path, {"name", "type", "color", "emission", "ior"});
+        r.only_keys(m, path, {"name", "type", "color", "emission", "ior", "roughness", "metallic"});
         Material material;
         if (m.contains("name")) material.name = r.string(m["name"], path + ".name");
         material.type = read_material_type(r, r.member(m, path, "type"), path + ".type");
         material.color = m.contains("color") ? r.numbers<3>(m["color"], path + ".color") : Vec3{0.8, 0.8, 0.8};
         if (m.contains("emission")) material.emission = r.numbers<3>(m["emission"], path + ".emission");
         if (m.contains("ior")) material.ior = r.number(m["ior"], path + ".ior");
+        const std::string type_name = m["type"].get<std::string>();
+        const bool pbr = material.type == MaterialType::Pbr;
+        material.roughness = read_unit_parameter(r, m, path, "roughness", has_roughness(material.type), type_name,
+                                                 pbr ? kPbrDefaultRoughness : 0.0);
+        material.metallic = read_unit_parameter(r, m, path, "metallic", has_metallic(material.type), type_name,
+                                                pbr ? kPbrDefaultMetallic : 0.0);
         materials.push_back(std::move(material));
     }
     return materials;
@@ -186,6 +213,7 @@ const char* material_type_name(MaterialType type) {
         case MaterialType::Diffuse: return "diffuse";
         case MaterialType::Mirror: return "mirror";
         case MaterialType::Dielectric: return "dielectric";
+        case MaterialType::Pbr: return "pbr";
     }
     return "diffuse";
 }
@@ -238,6 +266,15 @@ void validate_scene(const Scene& scene, const std::string& source) {
                   "each component must be <= " + fmt(kMaxEmission) + detail::kFloatReason + fmt(m.emission));
         }
         check(std::isfinite(m.ior) && m.ior > 0, source, path + ".ior", "must be > 0, got " + fmt(m.ior));
+        const char* type = material_type_name(m.type);
+        check(std::isfinite(m.roughness) && m.roughness >= 0 && m.roughness <= 1, source, path + ".roughness",
+              "must be in [0, 1], got " + fmt(m.roughness));
+        check(has_roughness(m.type) || m.roughness == 0, source, path + ".roughness",
+              std::string("a \"") + type + "\" material has no roughness (must be 0), got " + fmt(m.roughness));
+        check(std::isfinite(m.metallic) && m.metallic >= 0 && m.metallic <= 1, source, path + ".metallic",
+              "must be in [0, 1], got " + fmt(m.metallic));
+        check(has_metallic(m.type) || m.metallic == 0, source, path + ".metallic",
+              std::string("a \"") + type + "\" material has no metallic (must be 0), got " + fmt(m.metallic));
         check(detail::positive_in_range(m.ior), source, path + ".ior",
               detail::positive_rule() + detail::kFloatReason + fmt(m.ior));
     }
@@ -339,6 +376,10 @@ std::string write_scene_json(const Scene& scene) {
         material["color"] = vec3_json(m.color);
         material["emission"] = vec3_json(m.emission);
         material["ior"] = m.ior;
+        // A smooth dielectric is written without roughness, so scenes without
+        // the rough materials are written exactly as before they existed.
+        if (m.type == MaterialType::Pbr || (has_roughness(m.type) && m.roughness != 0)) material["roughness"] = m.roughness;
+        if (has_metallic(m.type)) material["metallic"] = m.metallic;
         materials.push_back(std::move(material));
     }
     document["materials"] = std::move(materials);

@@ -23,6 +23,7 @@ const char* type_word(MaterialType type) {
     switch (type) {
         case MaterialType::Mirror: return "mirror";
         case MaterialType::Dielectric: return "glass";
+        case MaterialType::Pbr: return "pbr";
         case MaterialType::Diffuse: break;
     }
     return "diffuse";

@@ -39,10 +39,14 @@ std::string format_number(double value) {
     return out;
 }
 
-int material_code(MaterialType type) {
-    switch (type) {
+// A pbr material becomes the .scn kind it is closest to: a mirror when mostly metal, else diffuse.
+constexpr double kScnMetalThreshold = 0.5;
+
+int material_code(const Material& material) {
+    switch (material.type) {
         case MaterialType::Mirror: return 1;
         case MaterialType::Dielectric: return 2;
+        case MaterialType::Pbr: return material.metallic >= kScnMetalThreshold ? 1 : 0;
         case MaterialType::Diffuse: break;
     }
     return 0;
@@ -83,9 +87,17 @@ void list_render_losses(const RenderSettings& render, std::vector<std::string>& 
 void list_material_losses(const std::vector<Material>& materials, std::vector<std::string>& lossy) {
     for (size_t i = 0; i < materials.size(); ++i) {
         const Material& m = materials[i];
+        const std::string which = "material " + std::to_string(i) + " ('" + m.name + "')";
         if (m.type == MaterialType::Dielectric && m.ior != kScnGlassIor)
-            lossy.push_back("material " + std::to_string(i) + " ('" + m.name + "') is a dielectric with ior " +
-                            format_number(m.ior) + "; .scn glass always has ior 1.5");
+            lossy.push_back(which + " is a dielectric with ior " + format_number(m.ior) +
+                            "; .scn glass always has ior 1.5");
+        if (m.type == MaterialType::Dielectric && m.roughness != 0.0)
+            lossy.push_back(which + " is rough glass (roughness " + format_number(m.roughness) +
+                            "); .scn glass is smooth");
+        if (m.type == MaterialType::Pbr)
+            lossy.push_back(which + " is pbr (metallic " + format_number(m.metallic) + ", roughness " +
+                            format_number(m.roughness) + "); .scn has no such material: written as " +
+                            (m.metallic >= kScnMetalThreshold ? "a mirror" : "diffuse"));
     }
 }
 
@@ -122,7 +134,7 @@ ScnWriteResult write_scn(const Scene& scene) {
         append_numbers(out, material.emission);
         out += ' ';
         append_numbers(out, material.color);
-        out += "  " + std::to_string(material_code(material.type)) + "\n";
+        out += "  " + std::to_string(material_code(material)) + "\n";
     }
     return result;
 }

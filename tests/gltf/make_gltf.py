@@ -298,19 +298,30 @@ def materials(out):
     """One sphere per material case, at x = 0, 3, 6, ..."""
     a = Asset()
     pts, idx = uv_sphere(1.0, segments=16, rings=8)
+    volume = {"KHR_materials_volume": {"thicknessFactor": 1.0}}
     a.gltf["materials"] = [
         {"name": "Diffuse", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.4, 0.6, 1], "metallicFactor": 0}},
         {"name": "VertexColour", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 1, 1, 1], "metallicFactor": 0}},
-        {"name": "Mirror", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.7, 1], "metallicFactor": 1}},
-        {"name": "Glass", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 0.9, 1], "metallicFactor": 0},
-         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
-                        "KHR_materials_ior": {"ior": 1.33}}},
+        {"name": "Metal", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.7, 1], "metallicFactor": 1,
+                                                   "roughnessFactor": 0.25}},
+        {"name": "Glass", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 0.9, 1], "metallicFactor": 0,
+                                                   "roughnessFactor": 0},
+         "extensions": dict(volume, KHR_materials_transmission={"transmissionFactor": 1.0},
+                            KHR_materials_ior={"ior": 1.33})},
         {"name": "Lamp", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0},
          "emissiveFactor": [1, 0.5, 0.25], "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}},
         {"name": "Textured", "pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.3, 0.3, 1], "metallicFactor": 0,
                                                       "baseColorTexture": {"index": 0}}},
+        {"name": "RoughGlass", "pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0.3},
+         "extensions": dict(volume, KHR_materials_transmission={"transmissionFactor": 0.9})},
+        # Only the dielectric part transmits: (1 - 0.6) * 1 < 0.5, so this stays opaque.
+        {"name": "MostlyMetalGlass", "pbrMetallicRoughness": {"metallicFactor": 0.6, "roughnessFactor": 0.5},
+         "extensions": dict(volume, KHR_materials_transmission={"transmissionFactor": 1.0})},
+        {"name": "Plastic", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1], "metallicFactor": 0,
+                                                     "roughnessFactor": 0.5}},
     ]
-    for ext in ("KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_emissive_strength"):
+    for ext in ("KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume",
+                "KHR_materials_emissive_strength"):
         a.extension_used(ext)
     # A 1x1 PNG as a data URI: never decoded, only reported.
     a.gltf["images"] = [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg=="}]
@@ -321,12 +332,36 @@ def materials(out):
         colors += [0.5, 0.25, 1.0] if i % 2 == 0 else [0.3, 0.15, 0.6]
     assert len(pts) % 2 == 0
     color = a.accessor(colors, "VEC3")
-    for m in range(6):
+    count = len(a.gltf["materials"])
+    for m in range(count):
         mesh = a.mesh("Ball%d" % m, pts, idx, material=m, extra_attributes={"COLOR_0": color} if m == 1 else None)
         a.node(name=a.gltf["materials"][m]["name"], translation=[3 * m, 0, 0], mesh=mesh)
     mesh = a.mesh("NoMaterial", pts, idx)
-    a.node(name="NoMaterial", translation=[18, 0, 0], mesh=mesh)
+    a.node(name="NoMaterial", translation=[3 * count, 0, 0], mesh=mesh)
     a.write_all(out, "materials")
+
+
+def glass_volumes(out):
+    """Transmissive materials whose volume Orb cannot render: a thin wall (no
+    KHR_materials_volume) and an absorbing volume (attenuationDistance)."""
+    a = Asset()
+    pts, idx = uv_sphere(1.0, segments=16, rings=8)
+    a.gltf["materials"] = [
+        {"name": "ThinWall", "pbrMetallicRoughness": {"metallicFactor": 0},
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}},
+        {"name": "Tinted", "pbrMetallicRoughness": {"metallicFactor": 0},
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                        "KHR_materials_volume": {"thicknessFactor": 2.0, "attenuationDistance": 0.5,
+                                                 "attenuationColor": [1, 0.5, 0.5]}}},
+    ]
+    for ext in ("KHR_materials_transmission", "KHR_materials_volume"):
+        a.extension_used(ext)
+    for m in range(2):
+        mesh = a.mesh("Ball%d" % m, pts, idx, material=m)
+        a.node(name=a.gltf["materials"][m]["name"], translation=[3 * m, 0, 0], mesh=mesh)
+    # A second sphere of the same material: still one message per material.
+    a.node(name="ThinWall2", translation=[6, 0, 0], mesh=0)
+    a.write_all(out, "glass_volumes")
 
 
 def ignored(out):
@@ -538,7 +573,7 @@ def sandbox(out):
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
-    for make in (nested, instanced, points, parts, non_sphere, materials, ignored, cameras, lights, animation, clips,
+    for make in (nested, instanced, points, parts, non_sphere, materials, glass_volumes, ignored, cameras, lights, animation, clips,
                  compressed, implicit_shapes, non_uniform, scenes, sandbox):
         make(out)
     with open(os.path.join(out, "stamp"), "w") as f:

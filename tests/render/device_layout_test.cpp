@@ -94,6 +94,7 @@ TEST(DeviceLayout, EnumsHaveTheirListedValues)
     EXPECT_EQ(static_cast<int>(device::MaterialKind::Diffuse), 0);
     EXPECT_EQ(static_cast<int>(device::MaterialKind::Mirror), 1);
     EXPECT_EQ(static_cast<int>(device::MaterialKind::Dielectric), 2);
+    EXPECT_EQ(static_cast<int>(device::MaterialKind::Pbr), 3);
     EXPECT_EQ(static_cast<int>(device::IntegratorMode::Global), 0);
     EXPECT_EQ(static_cast<int>(device::IntegratorMode::Direct), 1);
 }

@@ -13,7 +13,7 @@
 #include <numbers>
 #include <random>
 
-#include "chi_square.h"
+#include "chi2.h"
 #include "environment_distribution.h"
 #include "environment_layout.h"
 #include "orb/render/device.h"
@@ -193,9 +193,9 @@ TEST(EnvironmentKernel, SamplesFollowTheDistributionAndAgreeWithLookups) {
                     1e-6 * layout.texels[t].radiance_pdf.w);
         for (int q = 0; q < 4; ++q) expected[4 * t + std::size_t(q)] = distribution.probability[t] * n / 4.0;
     }
-    const ChiSquareResult result = chi_square_test(expected, observed);
-    EXPECT_TRUE(result.note.empty()) << result.note;
-    EXPECT_GT(result.p_value, 0.01) << "chi2 " << result.statistic << " with " << result.degrees_of_freedom << " dof";
+    const Chi2Result result = pearson_chi2(observed, expected);
+    EXPECT_TRUE(result.problem.empty()) << result.problem;
+    EXPECT_GT(result.p_value, 0.01) << "chi2 " << result.statistic << " with " << result.dof << " dof";
 }
 
 // Directions and the texel (column, row) the documentation puts them in, on

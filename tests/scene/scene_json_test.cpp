@@ -84,6 +84,73 @@ TEST(SceneJson, ContentHashFollowsContent) {
     EXPECT_NE(orb::scene_content_hash(a), orb::scene_content_hash(b));
 }
 
+// pbr and rough glass round-trip exactly; the writer adds "roughness" and
+// "metallic" only where they belong, so a smooth scene is written as before.
+TEST(SceneJson, RoughMaterialsRoundTripAndSmoothOnesKeepTheirForm) {
+    orb::Scene s = sample_scene();
+    const std::string smooth = orb::write_scene_json(s);
+    EXPECT_EQ(smooth.find("roughness"), std::string::npos) << smooth;
+    EXPECT_EQ(smooth.find("metallic"), std::string::npos) << smooth;
+
+    orb::Material gold{"gold", orb::MaterialType::Pbr, {1, 0.78, 0.34}, {0, 0, 0}, 1.5};
+    gold.roughness = 0.1 + 0.2;  // an awkward double
+    gold.metallic = 1;
+    orb::Material frosted{"frosted", orb::MaterialType::Dielectric, {1, 1, 1}, {0, 0, 0}, 1.5};
+    frosted.roughness = 0.25;
+    s.materials.push_back(gold);
+    s.materials.push_back(frosted);
+    const std::string text = orb::write_scene_json(s);
+    EXPECT_EQ(orb::load_scene_json(text, "mem"), s);
+    EXPECT_NE(text.find("\"type\": \"pbr\", \"color\": [1, 0.78, 0.34], \"emission\": [0, 0, 0], \"ior\": 1.5, "
+                        "\"roughness\": 0.30000000000000004, \"metallic\": 1 }"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("\"type\": \"dielectric\", \"color\": [1, 1, 1], \"emission\": [0, 0, 0], \"ior\": 1.5, "
+                        "\"roughness\": 0.25 }"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(orb::scene_content_hash(s), orb::scene_content_hash(sample_scene()));
+}
+
+// A pbr material without factors is glTF's default: a fully rough metal.
+TEST(SceneJson, PbrDefaultsAreGltfs) {
+    const orb::Scene s =
+        orb::load_scene_json(read_file(ORB_TEST_DATA_DIR "/scene/valid/rough-materials.json"), "rough-materials.json");
+    ASSERT_EQ(s.materials.size(), 6u);
+    EXPECT_EQ(s.materials[2].type, orb::MaterialType::Pbr);
+    EXPECT_EQ(s.materials[2].metallic, 1.0);
+    EXPECT_EQ(s.materials[2].roughness, 1.0);
+    EXPECT_EQ(s.materials[0].roughness, 0.3);
+    EXPECT_EQ(s.materials[1].metallic, 0.0);
+    EXPECT_EQ(s.materials[3].roughness, 0.2);
+    EXPECT_EQ(s.materials[4].roughness, 0.0);
+    EXPECT_EQ(s.materials[5].roughness, 0.0);  // diffuse: none
+}
+
+// The model's own check (what importers end in) keeps the same rules.
+TEST(SceneJson, ValidationRejectsParametersAMaterialDoesNotHave) {
+    orb::Scene s = sample_scene();
+    s.materials[0].roughness = 0.5;  // diffuse
+    try {
+        orb::validate_scene(s, "mem");
+        FAIL() << "expected an error";
+    } catch (const orb::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("materials[0].roughness: a \"diffuse\" material has no roughness"),
+                  std::string::npos)
+            << e.what();
+    }
+    s = sample_scene();
+    s.materials[1].roughness = std::nan("");
+    EXPECT_THROW(orb::validate_scene(s, "mem"), orb::InputError);
+    s = sample_scene();
+    s.materials[1].metallic = 0.5;  // dielectric
+    EXPECT_THROW(orb::validate_scene(s, "mem"), orb::InputError);
+    s.materials[1].type = orb::MaterialType::Pbr;
+    EXPECT_NO_THROW(orb::validate_scene(s, "mem"));
+    s.materials[1].metallic = 1.5;
+    EXPECT_THROW(orb::validate_scene(s, "mem"), orb::InputError);
+}
+
 TEST(SceneJson, SmallptGpuFieldOfView) {
     EXPECT_NEAR(orb::smallptgpu_vfov_deg(), 42.8798, 1e-4);
     EXPECT_NEAR(orb::Camera{}.vfov_deg, orb::smallptgpu_vfov_deg(), 1e-12);

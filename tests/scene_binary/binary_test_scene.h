@@ -19,13 +19,15 @@ inline Scene every_feature_scene() {
     scene.materials = {{"white", MaterialType::Diffuse, {0.8, 0.8, 0.8}, {0, 0, 0}, 1.5},
                        {"glass \"clear\"", MaterialType::Dielectric, {1, 1, 1}, {0, 0, 0}, 1.33},
                        {"lamp", MaterialType::Diffuse, {0, 0, 0}, {12, 11.5, 1e6}, 1.5},
-                       {"", MaterialType::Mirror, {0.999, 0.5, 0}, {0, 0, 0}, 1.5}};
+                       {"", MaterialType::Mirror, {0.999, 0.5, 0}, {0, 0, 0}, 1.5},
+                       {"gold", MaterialType::Pbr, {1, 0.78, 0.34}, {0, 0, 0}, 1.5, 0.1 + 0.2, 1},
+                       {"frosted", MaterialType::Dielectric, {1, 1, 1}, {0, 0, 0}, 1.5, 0.35, 0}};
     for (int i = 0; i < 50; ++i) {
         Sphere s;
         s.name = i % 3 == 0 ? "" : "sphère " + std::to_string(i);
         s.center = {std::sin(i) * 1e5, std::cos(i) / 3, -0.0 + i * 0.1};
         s.radius = 1e-9 + i * std::sqrt(2.0);
-        s.material = static_cast<std::uint32_t>(i % 4);
+        s.material = static_cast<std::uint32_t>(i % 6);
         scene.spheres.push_back(s);
     }
     AnimationNode node;

@@ -84,8 +84,8 @@ TEST(SceneBinaryErrors, NanCentreAndBadRadiusUseTheSceneRules) {
 
 TEST(SceneBinaryErrors, MaterialIndexOutOfRange) {
     std::string bytes = write_scene_binary(unnamed_scene());
-    poke<std::uint32_t>(bytes, arrays_offset(bytes) + 36 * 50 - 4, 4);
-    EXPECT_EQ(error_of(bytes), "big.orb: spheres[49].material: index 4 is out of range (there are 4 materials)");
+    poke<std::uint32_t>(bytes, arrays_offset(bytes) + 36 * 50 - 4, 6);
+    EXPECT_EQ(error_of(bytes), "big.orb: spheres[49].material: index 6 is out of range (there are 6 materials)");
 }
 
 TEST(SceneBinaryErrors, HeaderProblems) {

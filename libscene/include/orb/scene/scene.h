@@ -16,18 +16,24 @@ namespace orb {
 
 using Vec3 = std::array<double, 3>;
 
-// Diffuse, Mirror, Dielectric: the kinds the kernels implement, defined once
-// for the host and the kernels in kernels/include/orb/kernels/device_types.h.
+// Diffuse, Mirror, Dielectric, Pbr: the kinds the kernels implement, defined
+// once for the host and the kernels in kernels/include/orb/kernels/device_types.h.
 using MaterialType = device::MaterialKind;
 
 struct Material {
     std::string name;
     MaterialType type = MaterialType::Diffuse;
-    Vec3 color{0.0, 0.0, 0.0};     // reflectance / transmittance tint, each in [0,1]
+    Vec3 color{0.0, 0.0, 0.0};     // reflectance / base colour / transmittance tint, each in [0,1]
     Vec3 emission{0.0, 0.0, 0.0};  // emitted radiance, >= 0
     double ior = 1.5;              // used by dielectrics only
+    double roughness = 0.0;        // perceptual roughness in [0,1], dielectric and pbr only (0 for the others)
+    double metallic = 0.0;         // in [0,1], pbr only (0 for the others)
     bool operator==(const Material&) const = default;
 };
+
+// Whether a material type reads `roughness` and `metallic`.
+bool has_roughness(MaterialType type);
+bool has_metallic(MaterialType type);
 
 struct Sphere {
     std::string name;
