@@ -56,7 +56,7 @@ oiiotool "${args[@]}" -d float -o "$work/test-map.exr"
 # The scene: a mirror ball and a white diffuse ball on no floor, seen from +z
 # looking towards -z, so the background is the -z band with +x to the right.
 cat > "$work/scene.json" <<'EOF'
-{ "format": "orb-scene", "version": 2,
+{ "format": "orb-scene", "version": 1,
   "camera": { "position": [0, 0.3, 3.6], "target": [0, 0.1, 0], "vfov_deg": 80 },
   "render": { "width": 640, "height": 360, "spp": 128, "max_depth": 6 },
   "environment": { "map": "test-map.exr", "intensity": 1, "rotation_deg": 0 },

@@ -298,8 +298,6 @@ void validate_scene(const Scene& scene, const std::string& source) {
     detail::validate_environment(scene.environment, source);
 }
 
-int scene_format_version(const Scene& scene) { return scene.environment.kind == EnvironmentKind::None ? 1 : 2; }
-
 Scene load_scene_json(std::string_view text, const std::string& source) {
     json document;
     try {
@@ -329,13 +327,8 @@ Scene load_scene_json(std::string_view text, const std::string& source) {
     Scene scene;
     scene.camera = read_camera(r, r.member(document, "(root)", "camera"));
     if (document.contains("render")) scene.render = read_render(r, document["render"]);
-    if (document.contains("environment")) {
-        // A file declares the version its content needs, so that an older Orb
-        // says "version 2" rather than "unknown key".
-        if (version < 2)
-            r.fail("environment", "needs scene version 2 (the file says \"version\": " + std::to_string(version) + ")");
+    if (document.contains("environment"))
         scene.environment = detail::environment_from_json(r, document["environment"]);
-    }
     scene.materials = read_materials(r, r.member(document, "(root)", "materials"));
     scene.spheres = read_spheres(r, r.member(document, "(root)", "spheres"), scene.materials);
     if (document.contains("animation"))
@@ -347,7 +340,7 @@ Scene load_scene_json(std::string_view text, const std::string& source) {
 std::string write_scene_json(const Scene& scene) {
     ordered_json document;
     document["format"] = "orb-scene";
-    document["version"] = scene_format_version(scene);
+    document["version"] = kSceneFormatVersion;
 
     const Camera& c = scene.camera;
     ordered_json camera;

@@ -20,7 +20,7 @@ using test::ProcessResult;
 using ::testing::HasSubstr;
 
 std::string scene_with_map(const std::string& map) {
-    return R"({ "format": "orb-scene", "version": 2, "camera": { "position": [0, 0, 5], "target": [0, 0, 0] },
+    return R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0, 0, 5], "target": [0, 0, 0] },
   "environment": { "map": ")" + map + R"(", "intensity": 2 },
   "materials": [ { "type": "diffuse" } ], "spheres": [ { "center": [0, 0, 0], "radius": 1, "material": 0 } ] })";
 }

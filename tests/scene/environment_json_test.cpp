@@ -1,4 +1,4 @@
-// The scene's environment: its JSON form (version 2 only when present), the
+// The scene's environment: its JSON form (written only when present), the
 // loader's messages, the checks on attached texels, the content hash over
 // the texels, and what counts as light.
 #include <gtest/gtest.h>
@@ -66,9 +66,8 @@ TEST(EnvironmentJson, RoundTripsExactly) {
     }
 }
 
-TEST(EnvironmentJson, IsWrittenAfterRenderInVersion2) {
+TEST(EnvironmentJson, IsWrittenAfterRender) {
     const std::string color = orb::write_scene_json(with_color({1, 2, 3}));
-    EXPECT_NE(color.find("\"version\": 2,"), std::string::npos) << color;
     EXPECT_NE(color.find("\"render\": { \"width\": 640, \"height\": 480, \"spp\": 64, \"max_depth\": 6 },\n"
                          "  \"environment\": { \"color\": [1, 2, 3] },\n  \"materials\""),
               std::string::npos)
@@ -79,17 +78,14 @@ TEST(EnvironmentJson, IsWrittenAfterRenderInVersion2) {
         << map;
 }
 
-TEST(EnvironmentJson, ASceneWithoutOneStaysVersion1) {
+TEST(EnvironmentJson, ASceneWithoutOneIsWrittenAsBefore) {
     const std::string text = orb::write_scene_json(ball());
-    EXPECT_NE(text.find("\"version\": 1,"), std::string::npos);
     EXPECT_EQ(text.find("environment"), std::string::npos);
-    EXPECT_EQ(orb::scene_format_version(ball()), 1);
-    EXPECT_EQ(orb::scene_format_version(with_color({1, 1, 1})), 2);
 }
 
 TEST(EnvironmentJson, MapDefaultsAreIntensityOneAndNoTurn) {
     const orb::Scene s = orb::load_scene_json(
-        R"({ "format": "orb-scene", "version": 2, "camera": { "position": [0,0,5], "target": [0,0,0] },
+        R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,5], "target": [0,0,0] },
              "environment": { "map": "sky.exr" }, "materials": [], "spheres": [] })",
         "s.json");
     EXPECT_EQ(s.environment.kind, EnvironmentKind::Map);
@@ -103,15 +99,13 @@ struct Case {
     const char* name;
     std::string environment;
     std::string expected;
-    int version = 2;
 };
 
 class EnvironmentErrors : public ::testing::TestWithParam<Case> {};
 
 TEST_P(EnvironmentErrors, NameThePathAndTheProblem) {
     const Case& c = GetParam();
-    const std::string text = "{ \"format\": \"orb-scene\", \"version\": " + std::to_string(c.version) +
-                             R"(, "camera": { "position": [0,0,5], "target": [0,0,0] }, "environment": )" +
+    const std::string text = R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,5], "target": [0,0,0] }, "environment": )" +
                              c.environment + R"(, "materials": [], "spheres": [] })";
     const std::string message = error_of([&] { orb::load_scene_json(text, "s.json"); });
     EXPECT_EQ(message.rfind("s.json: ", 0), 0u) << message;
@@ -121,7 +115,6 @@ TEST_P(EnvironmentErrors, NameThePathAndTheProblem) {
 INSTANTIATE_TEST_SUITE_P(
     Loader, EnvironmentErrors,
     ::testing::Values(
-        Case{"version_1", R"({ "color": [1, 1, 1] })", "environment: needs scene version 2 (the file says \"version\": 1)", 1},
         Case{"not_object", R"("sky.exr")", "environment: expected an object, got string"},
         Case{"empty", "{}", "environment: expected \"color\" (a uniform radiance) or \"map\""},
         Case{"both", R"({ "color": [1, 1, 1], "map": "a.exr" })", "environment: has both \"color\" and \"map\""},

@@ -8,11 +8,7 @@
 
 namespace orb {
 
-// The newest scene version this Orb reads. Version 2 added "environment";
-// a scene is written with the lowest version that holds it
-// (scene_format_version), so a scene without version-2 content stays the
-// version-1 file it was, with the same content hash.
-inline constexpr int kSceneFormatVersion = 2;
+inline constexpr int kSceneFormatVersion = 1;
 
 // Sanity limits a scene must respect (beyond them a file is more likely
 // corrupt than intended).
@@ -35,9 +31,6 @@ inline constexpr double kMaxEmission = 1e12;
 // on the device (16 bytes of radiance and pdf, 4 of sampling table per
 // texel); a larger one is more likely a mistake than a sky.
 inline constexpr long long kMaxEnvironmentTexels = 1LL << 27;
-
-// The lowest scene version that can hold `scene`: 2 with an environment, else 1.
-int scene_format_version(const Scene& scene);
 
 // Parses and validates; throws InputError naming `source` and the JSON path
 // of the first problem ("scene.json: spheres[3].radius: must be > 0, got -2").
