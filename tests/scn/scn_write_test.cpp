@@ -86,6 +86,31 @@ TEST(ScnWrite, IorOnlyMattersForDielectrics) {
     EXPECT_TRUE(write_scn(scene).lossy.empty());
 }
 
+// .scn has diffuse, mirror and smooth glass: a pbr material becomes the
+// closer of the first two, rough glass smooth glass, and both are reported.
+TEST(ScnWrite, RoughMaterialsBecomeTheirClosestScnKindAndAreReported) {
+    Scene scene = simple_scene();
+    scene.materials[2].roughness = 0.3;  // frosted glass
+    Material gold{"gold", MaterialType::Pbr, {1, 0.78, 0.34}, {0, 0, 0}, 1.5};
+    gold.metallic = 1;
+    gold.roughness = 0.2;
+    Material plastic{"plastic", MaterialType::Pbr, {0.8, 0.1, 0.1}, {0, 0, 0}, 1.5};
+    plastic.roughness = 0.5;
+    scene.materials.push_back(gold);
+    scene.materials.push_back(plastic);
+    scene.spheres.push_back({"gold ball", {3, 1, 1}, 1, 3});
+    scene.spheres.push_back({"plastic ball", {5, 1, 1}, 1, 4});
+    const ScnWriteResult result = write_scn(scene);
+    EXPECT_THAT(result.lossy,
+                ElementsAre(HasSubstr("material 2 ('glass') is rough glass (roughness 0.3); .scn glass is smooth"),
+                            HasSubstr("material 3 ('gold') is pbr (metallic 1, roughness 0.2); .scn has no such "
+                                      "material: written as a mirror"),
+                            HasSubstr("material 4 ('plastic') is pbr (metallic 0, roughness 0.5); .scn has no such "
+                                      "material: written as diffuse")));
+    EXPECT_THAT(result.text, HasSubstr("sphere 1  3 1 1  0 0 0  1 0.78 0.34  1\n"));
+    EXPECT_THAT(result.text, HasSubstr("sphere 1  5 1 1  0 0 0  0.8 0.1 0.1  0\n"));
+}
+
 TEST(ScnWrite, RefusesDanglingMaterialReferences) {
     Scene scene = simple_scene();
     scene.spheres[1].material = 7;
