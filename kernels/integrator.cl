@@ -94,7 +94,9 @@ inline void begin_camera_path(const CameraParams* cam, int x, int y, int width, 
 }
 
 // Next-event estimation at a non-delta vertex: in direct mode from every
-// light, else from one light picked by power. Returns the radiance towards wo.
+// light, else from one light picked from the alias table (spheres by power,
+// the environment by its share; docs/rendering.md, "Picking a light").
+// Returns the radiance towards wo.
 inline float3 sample_lights(const SceneView* scene, float3 p, int self, const Bsdf* bsdf, float3 wo, float3 n,
                             bool outside, const Rand5* r, int mode)
 {
@@ -102,8 +104,7 @@ inline float3 sample_lights(const SceneView* scene, float3 p, int self, const Bs
     float3 sum = (float3)(0.0f);
     if (mode == IntegratorMode_Direct) {
         for (int i = 0; i < light_count; ++i)
-            sum += estimate_direct_light(scene, scene->lights[i].sphere, 1.0f, p, self, bsdf, wo, n, outside, r->u0,
-                                         r->u1);
+            sum += estimate_light(scene, scene->lights[i].sphere, 1.0f, p, self, bsdf, wo, n, outside, r->u0, r->u1);
         return sum;
     }
     if (light_count == 0) return sum;
@@ -115,8 +116,8 @@ inline float3 sample_lights(const SceneView* scene, float3 p, int self, const Bs
     // Lights of equal power: the alias table is the identity, so skip it
     // (the same picks and pdfs, fewer loads; 2% on an H100).
     const float u = fmin(scaled - (float)slot, 0x1.fffffep-1f);
-    return estimate_direct_light(scene, scene->lights[slot].sphere, 1.0f / (float)light_count, p, self, bsdf, wo, n,
-                                 outside, u, r->u1);
+    return estimate_light(scene, scene->lights[slot].sphere, 1.0f / (float)light_count, p, self, bsdf, wo, n, outside,
+                          u, r->u1);
 #else
     const float rest = scaled - (float)slot;
     SCENE_MEM const LightRecord* entry = &scene->lights[slot];
@@ -126,7 +127,7 @@ inline float3 sample_lights(const SceneView* scene, float3 p, int self, const Bs
                              : (rest - entry->alias_threshold) / (1.0f - entry->alias_threshold),
                          0x1.fffffep-1f);
     SCENE_MEM const LightRecord* light = &scene->lights[pick];
-    return estimate_direct_light(scene, light->sphere, light->probability, p, self, bsdf, wo, n, outside, u, r->u1);
+    return estimate_light(scene, light->sphere, light->probability, p, self, bsdf, wo, n, outside, u, r->u1);
 #endif
 }
 
@@ -136,7 +137,15 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
                         uint2 seed, int max_depth, int mode)
 {
     const Hit hit = intersect_scene(scene, path->o, path->d, path->self);
-    if (hit.id < 0) return false;
+    if (hit.id < 0) {
+        // Escaped: the environment's radiance (kernels/environment.cl). Alpha
+        // stays 0: it is the coverage of spheres, so a render composites over a plate.
+        const float env_pick_pdf = mode == IntegratorMode_Direct ? 1.0f : scene->environment.light_probability;
+        add_by_vertex_count(out, path->nondelta_vertices,
+                            path->beta * escaped_radiance(scene, path->d, path->from_density, path->from_pdf,
+                                                          env_pick_pdf));
+        return false;
+    }
     const ShadingSphere m = load_sphere(scene, hit.id);
     const float3 d = path->d;
     const float3 p = path->o + hit.t * d;
@@ -273,6 +282,7 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     scene.light_count = params.scene.light_count;
     scene.outside_packet_count = params.scene.outside_packet_count;
     scene.bvh_node_count = params.scene.bvh_node_count;
+    scene.environment = params.environment;
 
     const CameraParams cam = params.camera;
     const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);

@@ -237,6 +237,7 @@ inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d,
 // Shadow rays: whether sphere `light` is the first thing along the ray. Any
 // other sphere hit before it ends the search at once (any-hit traversal, in
 // no particular order), which in a dense cloud is usually within a few nodes.
+// light -1 stands for the environment: the ray must hit nothing at all.
 inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, int light)
 {
     // Without a tree (a handful of spheres) the closest hit over the few
@@ -245,8 +246,11 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     return intersect_scene(scene, o, d, self).id == light;
 #else
     if (scene->bvh_node_count == 0) return intersect_scene(scene, o, d, self).id == light;
-    const float t_light = sphere_distance(scene, light, o, d, self);
-    if (t_light >= ORB_NO_HIT) return false;
+    float t_light = ORB_NO_HIT;  // the environment: every hit blocks
+    if (light >= 0) {
+        t_light = sphere_distance(scene, light, o, d, self);
+        if (t_light >= ORB_NO_HIT) return false;
+    }
     for (int p = 0; p < scene->outside_packet_count; ++p)
         if (packet_blocks(&scene->packets[p], 4 * p, o, d, self, light, t_light)) return false;
     const float3 inv_d = safe_inverse(d);

@@ -105,6 +105,7 @@ void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraPar
     }
     params_.camera = camera;
     params_.scene = scene.counts;
+    params_.environment = scene.environment;
 }
 
 void DeviceRenderer::set_seed(std::uint64_t seed)

@@ -1,6 +1,7 @@
 #include "scene_layout.h"
 
 #include "alias_table.h"
+#include "environment_layout.h"
 #include "sphere_bvh.h"
 
 #include <algorithm>
@@ -120,25 +121,42 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh)
                                     uint_bits_in_w({node.hi[0], node.hi[1], node.hi[2]}, node.count)});
     }
 
-    // Lights are picked by power, Phi = pi * area * radiance, with the mean of
-    // the three channels as radiance (constants cancel in the shares).
-    std::vector<double> power;
+    EnvironmentLayout environment = layout_environment(scene.environment);
+    tables.environment_texels = std::move(environment.texels);
+    tables.environment_cdf = std::move(environment.cdf);
+    layout.environment = environment.params;
+
+    // Sphere lights are picked by power, Phi = pi * area * radiance, with the
+    // mean of the three channels as radiance (constants cancel in the shares).
+    std::vector<double> weight;
+    double sphere_power = 0;
     for (std::size_t i = 0; i < sphere_count; ++i) {
         const Sphere& sphere = scene.spheres[i];
         const Vec3& e = scene.materials[sphere.material].emission;
         if (!(e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0)) continue;
         tables.lights.push_back({slot_of[i], 0.0f, 1.0f, 0});
-        power.push_back(sphere.radius * sphere.radius * (e[0] + e[1] + e[2]));
+        weight.push_back(sphere.radius * sphere.radius * (e[0] + e[1] + e[2]));
+        sphere_power += weight.back();
     }
-    if (!power.empty()) {
-        const AliasTable pick = build_alias_table(power);
+    // The environment is the last light, with its fixed share of the picks.
+    if (environment.emits) {
+        const double share = weight.empty() ? 1.0 : kEnvironmentLightShare;
+        for (double& w : weight) w *= (1.0 - share) / sphere_power;
+        tables.lights.push_back({-1, 0.0f, 1.0f, 0});
+        weight.push_back(share);
+    }
+    if (!weight.empty()) {
+        const AliasTable pick = build_alias_table(weight);
         for (std::size_t k = 0; k < tables.lights.size(); ++k) {
             device::LightRecord& light = tables.lights[k];
             light.probability = pick.probability[k];
             light.alias_threshold = pick.slots[k].threshold;
             light.alias = static_cast<int>(pick.slots[k].alias);
-            tables.spheres[static_cast<std::size_t>(light.sphere)].light_probability = light.probability;
-            layout.uniform_lights = layout.uniform_lights && power[k] == power[0];
+            if (light.sphere >= 0)
+                tables.spheres[static_cast<std::size_t>(light.sphere)].light_probability = light.probability;
+            else
+                layout.environment.light_probability = light.probability;
+            layout.uniform_lights = layout.uniform_lights && light.probability == pick.probability[0];
         }
     }
     layout.counts.packet_count = static_cast<int>(packet_count);

@@ -24,6 +24,7 @@ struct SceneTables {
 struct SceneLayout {
     SceneTables tables;
     device::SceneCounts counts{};
+    device::EnvironmentParams environment{};  // width 0: none
     bool uniform_lights = true;  // every light has the same picking probability (so uniform picking is exact)
 };
 
@@ -32,9 +33,21 @@ struct SceneLayout {
 // (and every scene with use_bvh false) keeps the scene's own order, all
 // spheres outside. SphereRecord::scene_index maps back for the id pass.
 //
+// The environment (environment_layout.h) is one more light: next-event
+// estimation picks it with probability kEnvironmentLightShare when spheres
+// emit too (else 1), and the emissive spheres share the rest by power.
+//
 // Throws std::runtime_error naming the sphere for input the kernels cannot
-// render (a material index out of range, a non-positive or non-finite radius).
+// render (a material index out of range, a non-positive or non-finite radius),
+// std::invalid_argument for an environment map whose texels are not loaded.
 SceneLayout layout_scene(const Scene& scene, bool use_bvh = true);
+
+// The environment's share of the light picks when spheres emit too. Its
+// power relative to the spheres' would need a scene radius, which the
+// radius-1e4 walls and floors of sphere scenes make meaningless (pbrt-v4
+// weighs infinite lights by the scene's bounding sphere); a fixed half
+// costs at most a factor 2 in the variance of either kind of light.
+inline constexpr double kEnvironmentLightShare = 0.5;
 
 // Throws std::runtime_error for a camera without a direction.
 device::CameraParams layout_camera(const Camera& camera, int width, int height);

@@ -790,6 +790,7 @@ GltfImportResult import_gltf(std::string_view bytes, const std::string& source, 
     const tinygltf::Model model = gltf::load_model(bytes, source, base_dir);
     GltfImportResult result;
     result.scene = gltf::Importer(model, options, diagnostics).run();
+    if (options.default_light) gltf::add_default_light(result.scene, source, result.notices);
     // The same checks the JSON loader applies: an importer never hands on
     // a scene that could not be written and read back.
     validate_scene(result.scene, source);

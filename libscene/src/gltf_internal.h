@@ -49,6 +49,13 @@ private:
     std::vector<std::string> warnings_;
 };
 
+// ---- an asset without light (gltf_default_light.cpp) ----
+
+// Gives a scene that has no light the default uniform environment
+// (kDefaultEnvironmentRadiance), with a notice naming --no-default-light.
+// It loses nothing, so it is a notice, not a warning that --strict refuses.
+void add_default_light(Scene& scene, const std::string& source, std::vector<std::string>& notices);
+
 // ---- what Orb drops (gltf_ignored.cpp) ----
 
 // Counts what the imported content uses that Orb does not render, for one

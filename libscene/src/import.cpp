@@ -72,15 +72,15 @@ ImportResult import_scene(std::string_view bytes, const std::string& source, con
     SceneFormat format = options.format;
     if (format == SceneFormat::Unknown) format = detect_scene_format(bytes);
     switch (format) {
-        case SceneFormat::OrbJson: return {load_scene_json(bytes, source), {}};
-        case SceneFormat::Scn: return {parse_scn(bytes, source), {}};
+        case SceneFormat::OrbJson: return {load_scene_json(bytes, source), {}, {}};
+        case SceneFormat::Scn: return {parse_scn(bytes, source), {}, {}};
         case SceneFormat::GltfJson:
         case SceneFormat::Glb: {
             GltfImportResult result = import_gltf(bytes, source, base_dir, options.gltf);
-            return {std::move(result.scene), std::move(result.warnings)};
+            return {std::move(result.scene), std::move(result.warnings), std::move(result.notices)};
         }
-        case SceneFormat::Ply: return {import_ply(bytes, source, options.ply), {}};
-        case SceneFormat::OrbBinary: return {load_scene_binary(bytes, source), {}};
+        case SceneFormat::Ply: return {import_ply(bytes, source, options.ply), {}, {}};
+        case SceneFormat::OrbBinary: return {load_scene_binary(bytes, source), {}, {}};
         case SceneFormat::Unknown: break;
     }
     throw InputError(source + ": empty input, expected a scene (Orb JSON, .scn, .gltf, .glb or .ply)");

@@ -21,6 +21,7 @@ std::string header_json(const Scene& scene, bool names) {
     Scene without_spheres;
     without_spheres.camera = scene.camera;
     without_spheres.render = scene.render;
+    without_spheres.environment = scene.environment;
     without_spheres.materials = scene.materials;
     nlohmann::ordered_json header;
     header["format"] = "orb-scene-binary";

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include "json_reader.h"
 #include "json_text.h"
 #include "orb/scene/error.h"
+#include "scene_json_environment.h"
 #include "scene_json_spheres.h"
 
 namespace orb {
@@ -293,6 +295,7 @@ void validate_scene(const Scene& scene, const std::string& source) {
                   std::to_string(scene.materials.size()) + " materials)");
     }
     detail::validate_animation(scene.animation, scene.spheres.size(), source);
+    detail::validate_environment(scene.environment, source);
 }
 
 Scene load_scene_json(std::string_view text, const std::string& source) {
@@ -311,7 +314,8 @@ Scene load_scene_json(std::string_view text, const std::string& source) {
     }
     const Reader r(source);
     if (!document.is_object()) r.fail("(root)", "expected an object with \"format\": \"orb-scene\"");
-    r.only_keys(document, "", {"format", "version", "camera", "render", "materials", "spheres", "animation"});
+    r.only_keys(document, "",
+                {"format", "version", "camera", "render", "environment", "materials", "spheres", "animation"});
     const json& format = r.member(document, "(root)", "format");
     if (!format.is_string() || format.get<std::string>() != "orb-scene")
         r.fail("format", "expected \"orb-scene\", got " + format.dump());
@@ -323,6 +327,8 @@ Scene load_scene_json(std::string_view text, const std::string& source) {
     Scene scene;
     scene.camera = read_camera(r, r.member(document, "(root)", "camera"));
     if (document.contains("render")) scene.render = read_render(r, document["render"]);
+    if (document.contains("environment"))
+        scene.environment = detail::environment_from_json(r, document["environment"]);
     scene.materials = read_materials(r, r.member(document, "(root)", "materials"));
     scene.spheres = read_spheres(r, r.member(document, "(root)", "spheres"), scene.materials);
     if (document.contains("animation"))
@@ -352,6 +358,8 @@ std::string write_scene_json(const Scene& scene) {
     render["spp"] = scene.render.spp;
     render["max_depth"] = scene.render.max_depth;
     document["render"] = std::move(render);
+    ordered_json environment = detail::environment_to_json(scene.environment);
+    if (!environment.is_null()) document["environment"] = std::move(environment);
 
     ordered_json materials = ordered_json::array();
     for (const Material& m : scene.materials) {
@@ -387,13 +395,30 @@ std::string write_scene_json(const Scene& scene) {
     return text + "\n}\n";
 }
 
-std::string scene_content_hash(const Scene& scene) {
-    const std::string text = write_scene_json(scene);
+namespace {
+
+struct Fnv1a {
     std::uint64_t hash = 1469598103934665603ull;  // FNV-1a 64-bit offset basis
-    for (unsigned char byte : text) {
+    void add(unsigned char byte) {
         hash ^= byte;
         hash *= 1099511628211ull;  // FNV-1a 64-bit prime
     }
+    void add_uint32(std::uint32_t value) {
+        for (int shift = 0; shift < 32; shift += 8) add(static_cast<unsigned char>(value >> shift));
+    }
+};
+
+}  // namespace
+
+std::string scene_content_hash(const Scene& scene) {
+    Fnv1a fnv;
+    for (unsigned char byte : write_scene_json(scene)) fnv.add(byte);
+    if (const auto& image = scene.environment.image) {
+        fnv.add_uint32(static_cast<std::uint32_t>(image->width));
+        fnv.add_uint32(static_cast<std::uint32_t>(image->height));
+        for (float value : image->rgb) fnv.add_uint32(std::bit_cast<std::uint32_t>(value));
+    }
+    const std::uint64_t hash = fnv.hash;
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
     return hex;

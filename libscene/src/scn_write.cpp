@@ -109,6 +109,9 @@ ScnWriteResult write_scn(const Scene& scene) {
     list_render_losses(scene.render, result.lossy);
     list_material_losses(scene.materials, result.lossy);
     if (!scene.animation.empty()) result.lossy.push_back("the animation is dropped; .scn scenes are static");
+    if (scene.environment.kind != EnvironmentKind::None)
+        result.lossy.push_back("the environment light is dropped; SmallptGPU has none (rays that leave a .scn scene "
+                               "see black), so the scene will render darker");
 
     std::string& out = result.text;
     out.reserve(64 + 96 * scene.spheres.size());

@@ -108,6 +108,23 @@ TEST(GltfCli, FlagsReachTheImporter) {
     EXPECT_FALSE(load_scene_json(run.out, "out").animation.empty());
 }
 
+// The default light is warned about (never fatal: --strict passes), and
+// --no-default-light turns it off.
+TEST(GltfCli, DefaultLightAndNoDefaultLight) {
+    const fs::path out = scratch("light.json");
+    ToolRun run = run_import(quote(generated("nested.glb")) + " --strict", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.err.find("orb-import: warning: " + generated("nested.glb") + ": the asset has no light"),
+              std::string::npos)
+        << run.err;
+    EXPECT_EQ(load_scene_json(run.out, "out").environment.kind, EnvironmentKind::Color);
+
+    run = run_import(quote(generated("nested.glb")) + " --no-default-light", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(run.err.find("no light"), std::string::npos) << run.err;
+    EXPECT_EQ(load_scene_json(run.out, "out").environment.kind, EnvironmentKind::None);
+}
+
 TEST(GltfCli, ErrorsAndUsage) {
     const fs::path out = scratch("bad.json");
     ToolRun run = run_import(quote(generated("ortho.gltf")), out);

@@ -1,5 +1,5 @@
 // White furnaces: a white ball inside a large black sphere that emits
-// radiance L everywhere (a uniform environment). A ball that neither absorbs
+// radiance L everywhere, or under the scene's uniform environment light L. A ball that neither absorbs
 // nor loses energy looks exactly L; a rough one (single-scattering GGX has no
 // energy compensation) loses a little and never gains. Tolerances: 5 standard
 // errors of the pixel mean, from the film's own sums of squares, plus the
@@ -30,14 +30,22 @@ struct FurnaceResult {
     std::uint64_t samples = 0;
 };
 
-FurnaceResult furnace(const BallMaterial& ball, IntegratorMode mode, int max_depth = 64, std::uint64_t seed = 5)
+enum class FurnaceLight { Enclosure, Environment };
+
+FurnaceResult furnace(const BallMaterial& ball, IntegratorMode mode, int max_depth = 64, std::uint64_t seed = 5,
+                      FurnaceLight light = FurnaceLight::Enclosure)
 {
     Scene scene;
     const std::uint32_t white = add_material(scene, ball.type, {1, 1, 1});
     scene.materials[white].roughness = ball.roughness;
     scene.materials[white].metallic = ball.metallic;
     const int id = add_sphere(scene, {0, 0, 0}, 1.0, white);
-    add_sphere(scene, {0, 0, 0}, 5.0, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, kRadiance));
+    if (light == FurnaceLight::Enclosure) {
+        add_sphere(scene, {0, 0, 0}, 5.0, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, kRadiance));
+    } else {
+        scene.environment.kind = EnvironmentKind::Color;
+        scene.environment.color = kRadiance;
+    }
     scene.camera.position = {0, 0, 3.5};
     scene.camera.target = {0, 0, 0};
     scene.camera.vfov_deg = 40.0;
@@ -133,6 +141,33 @@ TEST_P(RoughBall, GlassLosesALittleAndNeverGains)
 {
     const FurnaceResult r = furnace({MaterialType::Dielectric, GetParam(), 0.0}, IntegratorMode::Global, 256);
     expect_ratio_within(r, 0.5, 1.0, "rough glass");
+}
+
+// The same furnaces lit by the environment light instead of the enclosure
+// (its own light sampling and MIS): the same bounds, and the same mean.
+TEST_P(RoughBall, TheEnvironmentLightGivesTheEnclosuresFurnace)
+{
+    const double roughness = GetParam();
+    double smallest = 1;
+    for (int i = 1; i <= 40; ++i) smallest = std::min(smallest, pbr_specular_albedo(i / 40.0, roughness, 128, 1.0));
+    struct Case {
+        const char* name;
+        BallMaterial material;
+        IntegratorMode mode;
+        int depth;
+        double low;
+    };
+    for (const Case& c : {Case{"metal", {MaterialType::Pbr, roughness, 1.0}, IntegratorMode::Global, 64, smallest},
+                          Case{"metal_direct", {MaterialType::Pbr, roughness, 1.0}, IntegratorMode::Direct, 6, smallest},
+                          Case{"glass", {MaterialType::Dielectric, roughness, 0.0}, IntegratorMode::Global, 256, 0.5}}) {
+        const FurnaceResult sky = furnace(c.material, c.mode, c.depth, 13, FurnaceLight::Environment);
+        const FurnaceResult enclosure = furnace(c.material, c.mode, c.depth, 5, FurnaceLight::Enclosure);
+        expect_ratio_within(sky, c.low, 1.0, c.name);
+        for (int k = 0; k < 3; ++k) {
+            const double se = std::hypot(sky.channel[k].standard_error, enclosure.channel[k].standard_error);
+            EXPECT_NEAR(sky.channel[k].mean, enclosure.channel[k].mean, kSigmas * se) << c.name << ", channel " << k;
+        }
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Furnace, RoughBall, ::testing::Values(0.15, 0.5));

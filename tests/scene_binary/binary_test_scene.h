@@ -36,6 +36,10 @@ inline Scene every_feature_scene() {
     scene.animation.nodes.push_back(node);
     scene.animation.spheres.push_back({3, 0, {1, 2, 3}, 0.5});
     scene.animation.camera_node = 0;
+    scene.environment.kind = EnvironmentKind::Map;
+    scene.environment.map = "../skies/dusk \"1\".exr";
+    scene.environment.intensity = 0.3;
+    scene.environment.rotation_deg = -123.456;
     return scene;
 }
 

@@ -60,6 +60,18 @@ TEST(ScnWrite, ListsEverythingScnCannotExpress) {
     EXPECT_THAT(result.text, HasSubstr("size 3\n"));
 }
 
+TEST(ScnWrite, AnEnvironmentIsDroppedWithAWarning) {
+    for (EnvironmentKind kind : {EnvironmentKind::Color, EnvironmentKind::Map}) {
+        Scene scene = simple_scene();
+        scene.environment.kind = kind;
+        scene.environment.color = {1, 1, 1};
+        scene.environment.map = "sky.exr";
+        const ScnWriteResult result = write_scn(scene);
+        EXPECT_THAT(result.lossy, ElementsAre(HasSubstr("the environment light is dropped; SmallptGPU has none")));
+        EXPECT_EQ(result.text, write_scn(simple_scene()).text);
+    }
+}
+
 TEST(ScnWrite, AnUpVectorAlongPlusYOfAnyLengthIsFine) {
     Scene scene = simple_scene();
     scene.camera.up = {0, 2.5, 0};

@@ -61,6 +61,10 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
         ->option_text("photometric|radiometric")
         ->default_str("photometric")
         ->group(group);
+    app.add_flag("--no-default-light{false}", options.default_light,
+                 "Leave an asset without any light unlit (default: give it a uniform white environment of radiance 1, "
+                 "with a warning)")
+        ->group(group);
 }
 
 }  // namespace orb::import_tool

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "gltf_options.h"
+#include "map_paths.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/output_file.h"
@@ -49,7 +50,8 @@ struct Arguments {
     orb::ImportOptions import_options;
 };
 
-// Where relative references (glTF buffers and images) are resolved from.
+// Where relative references (glTF buffers and images, environment maps) are
+// resolved from: a file's folder, the current directory for stdin/stdout.
 std::string base_directory(const std::string& input) {
     if (orb::cli::is_stdio(input)) return std::filesystem::current_path().string();
     const std::filesystem::path parent = std::filesystem::path(input).parent_path();
@@ -69,6 +71,7 @@ void report_losses(const std::vector<std::string>& losses, bool strict, const st
 
 int run(Arguments& args) {
     using orb::import_tool::OutputFormat;
+    using orb::import_tool::rebase_environment_map;
     const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
     if (!args.from.empty()) args.import_options.format = orb::scene_format_from_name(args.from);
     // A .gltf/.glb (.ply) name means glTF (PLY) even when the content is too broken to recognise,
@@ -89,6 +92,8 @@ int run(Arguments& args) {
     orb::ImportResult imported =
         orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
     report_losses(imported.warnings, args.strict, source);
+    for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
+    rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
 
     std::string text;
     if (to == OutputFormat::Scn) {

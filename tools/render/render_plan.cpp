@@ -7,6 +7,7 @@
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
+#include "orb/exr/environment_map.h"
 #include "orb/scene/animation.h"
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
@@ -40,6 +41,11 @@ Scene import_from(const std::string& path, std::string& label) {
         cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
     ImportResult imported = import_scene(bytes, label, base_dir);
     for (const std::string& message : imported.warnings) cli::warning(message);
+    for (const std::string& message : imported.notices) cli::warning(message);
+    // The map's texels join the scene before it is hashed (they are part of its identity) and rendered.
+    exr::load_environment_map(imported.scene, base_dir, label);
+    if (!scene_has_light(imported.scene))
+        cli::warning(label + ": the scene has no light (no sphere emits and there is no environment); it renders black");
     return std::move(imported.scene);
 }
 

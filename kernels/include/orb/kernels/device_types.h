@@ -127,16 +127,34 @@ typedef struct MaterialRecord {
     float metallic;  /* in [0, 1] (pbr) */
 } MaterialRecord;
 
-/* An emissive sphere, for next-event estimation, and one slot of the alias
- * table that picks lights by power (librender/src/alias_table.h): a number
- * u in [0, 1) chooses slot k = floor(u n); its remainder picks this slot's
- * light when below alias_threshold, else light `alias`. */
+/* A light for next-event estimation: an emissive sphere or the environment,
+ * and one slot of the alias table that picks lights (librender/src/alias_table.h):
+ * a number u in [0, 1) chooses slot k = floor(u n); its remainder picks this
+ * slot's light when below alias_threshold, else light `alias`. */
 typedef struct LightRecord {
-    int sphere;            /* index into the spheres table */
-    float probability;     /* chance of picking this light: its share of the lights' power */
+    int sphere;            /* index into the spheres table; -1: the environment */
+    float probability;     /* chance of picking this light (docs/rendering.md, "Picking a light") */
     float alias_threshold; /* see above */
     int alias;             /* index into the lights table */
 } LightRecord;
+
+/* One texel of the environment (kernels/environment.cl), row-major from the
+ * top row (+y). A uniform environment is a single texel. Filled by
+ * librender/src/environment_layout.cpp. */
+typedef struct EnvironmentTexel {
+    float4 radiance_pdf; /* xyz: radiance (intensity times the map's texel); w: the solid-angle density
+                          * of a direction in this texel when the environment is sampled: its probability
+                          * over its solid angle (0 for a texel the sampler never picks) */
+} EnvironmentTexel;
+
+/* The environment's sampling tables: the piecewise-constant 2D distribution
+ * over its texels. Entries [0, height) are the rows' cumulative probabilities
+ * (marginal); row r's columns follow at [height + r * width, height + (r + 1) * width),
+ * cumulative probabilities within the row (conditional). Each entry is the
+ * probability of its index and all before it; the last of each run is 1. */
+typedef struct EnvironmentCdf {
+    float upper;
+} EnvironmentCdf;
 
 /* ---- The parameter struct of render_pass, passed by value ---- */
 
@@ -183,11 +201,21 @@ typedef struct PassRange {
     int write_centre_ray; /* 1 on the first pass: depth and object id of the pixel-centre ray */
 } PassRange;
 
+/* The environment light, fixed for a render (docs/rendering.md, "Environment"). */
+typedef struct EnvironmentParams {
+    float4 rotation;         /* x, y: cos and sin of rotation_deg, the map's turn about +y; zw: 0 */
+    int width;               /* texels per row; 0: no environment (escaping rays carry nothing) */
+    int height;              /* rows */
+    float light_probability; /* the chance that next-event estimation (global mode) picks it */
+    int pad0;
+} EnvironmentParams;
+
 typedef struct RenderPassParams {
     CameraParams camera;
     SceneCounts scene;
     RenderSettings settings;
     PassRange pass;
+    EnvironmentParams environment;
 } RenderPassParams;
 
 /* ---- render_pass's arguments, in order ----
@@ -209,6 +237,8 @@ typedef struct RenderPassParams {
     TABLE(SphereRecord, spheres)                       \
     TABLE(MaterialRecord, materials)                   \
     TABLE(LightRecord, lights)                         \
+    TABLE(EnvironmentTexel, environment_texels)        \
+    TABLE(EnvironmentCdf, environment_cdf)             \
     PARAMS(RenderPassParams, params)
 
 #ifndef __OPENCL_VERSION__
@@ -247,9 +277,17 @@ typedef struct RenderPassParams {
     SIZE(PassRange, 16)                                                                                    \
     FIELD(PassRange, first_sample_lo, 0) FIELD(PassRange, first_sample_hi, 4)                              \
     FIELD(PassRange, sample_count, 8) FIELD(PassRange, write_centre_ray, 12)                               \
-    SIZE(RenderPassParams, 160)                                                                            \
+    SIZE(EnvironmentTexel, 16)                                                                             \
+    FIELD(EnvironmentTexel, radiance_pdf, 0)                                                               \
+    SIZE(EnvironmentCdf, 4)                                                                                \
+    FIELD(EnvironmentCdf, upper, 0)                                                                        \
+    SIZE(EnvironmentParams, 32)                                                                            \
+    FIELD(EnvironmentParams, rotation, 0) FIELD(EnvironmentParams, width, 16)                              \
+    FIELD(EnvironmentParams, height, 20) FIELD(EnvironmentParams, light_probability, 24)                   \
+    SIZE(RenderPassParams, 192)                                                                            \
     FIELD(RenderPassParams, camera, 0) FIELD(RenderPassParams, scene, 80)                                  \
-    FIELD(RenderPassParams, settings, 112) FIELD(RenderPassParams, pass, 144)
+    FIELD(RenderPassParams, settings, 112) FIELD(RenderPassParams, pass, 144)                              \
+    FIELD(RenderPassParams, environment, 160)
 
 #define ORB_CHECK_SIZE(type, size) static_assert(sizeof(type) == (size), "sizeof " #type);
 #define ORB_CHECK_FIELD(type, field, offset) static_assert(offsetof(type, field) == (offset), #type "." #field);

@@ -42,11 +42,22 @@ struct GltfImportOptions {
     // Directional lights become a distant large emitter (else: a warning).
     bool directional_lights = false;
     LightUnits light_units = LightUnits::Photometric;
+    // An asset that brings no light at all (no punctual light imported, no
+    // emissive material on a sphere) gets the default environment,
+    // kDefaultEnvironmentRadiance, with a warning (docs/gltf.md).
+    bool default_light = true;
 };
+
+// The default environment's uniform radiance: under it a diffuse surface of
+// albedo a has radiance exactly a (nothing else lights it), so every base
+// colour shows at its own value, the neutral look of a glTF viewer, and
+// white maps to display white.
+inline constexpr double kDefaultEnvironmentRadiance = 1.0;
 
 struct GltfImportResult {
     Scene scene;
-    std::vector<std::string> warnings;
+    std::vector<std::string> warnings;  // what the import left out or changed (fatal under --strict)
+    std::vector<std::string> notices;   // what it added that the asset does not say (the default light); never fatal
 };
 
 // `source` names the input in messages; external buffers are read only from

@@ -25,7 +25,8 @@ struct ImportOptions {
 
 struct ImportResult {
     Scene scene;
-    std::vector<std::string> warnings;
+    std::vector<std::string> warnings;  // losses: an error for tools run with --strict
+    std::vector<std::string> notices;   // additions, such as glTF's default light: warned about, never fatal
 };
 
 // `source` names the input in messages; `base_dir` resolves external files (glTF buffers).

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,14 +61,52 @@ struct RenderSettings {
     bool operator==(const RenderSettings&) const = default;
 };
 
+// An environment map's texels: linear Rec.709 radiance, before the
+// environment's intensity. Row-major, row 0 the top row (+y, the zenith),
+// three floats per texel. Plain numbers, no file format: libexr reads them
+// from an EXR (orb/exr/environment_map.h), librender samples them.
+struct EnvironmentImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;  // width * height * 3
+    bool operator==(const EnvironmentImage&) const = default;
+};
+
+// Light arriving from infinitely far away in every direction a ray escapes
+// to (docs/scene-format.md, "Environment"; docs/rendering.md).
+enum class EnvironmentKind {
+    None,   // rays that leave the scene carry no radiance
+    Color,  // the same radiance from every direction
+    Map,    // an equirectangular (latitude-longitude) HDR image
+};
+
+struct Environment {
+    EnvironmentKind kind = EnvironmentKind::None;
+    Vec3 color{0.0, 0.0, 0.0};  // Color: radiance, each >= 0
+    std::string map;            // Map: the image's path as the scene writes it (relative: to the scene's folder)
+    double intensity = 1.0;     // Map: radiance = intensity * texel
+    double rotation_deg = 0.0;  // Map: turn about +y, right-handed (docs/scene-format.md)
+    // Map: the texels, once a loader has read `map` (orb::exr::load_environment_map).
+    // Not part of the JSON form; compared by content, and part of the content hash.
+    std::shared_ptr<const EnvironmentImage> image;
+    bool operator==(const Environment& other) const;
+};
+
 struct Scene {
     Camera camera;
     RenderSettings render;
     std::vector<Material> materials;
     std::vector<Sphere> spheres;
     Animation animation;  // empty for static scenes
+    Environment environment;  // kind None for scenes without one
     bool operator==(const Scene&) const = default;
 };
+
+// Whether anything in the scene emits light: a sphere whose material has
+// emission, or an environment that is not black (a map counts unless its
+// intensity is 0 or its attached texels are all 0). A scene without light
+// renders black.
+bool scene_has_light(const Scene& scene);
 
 // The vertical field of view SmallptGPU frames with: its image plane at unit
 // distance is pi/4 high, so vfov = 2*atan(pi/8).

@@ -27,6 +27,10 @@ inline constexpr double kMinScenePositive = 1e-18;
 // of squared radiance finite in float over kMaxSpp samples even when a path
 // gathers light at every one of kMaxDepth bounces: (2·1024·1e12)²·2^24 ≈ 7e37.
 inline constexpr double kMaxEmission = 1e12;
+// An environment map of up to 2^27 texels (16384 x 8192) takes up to 2.5 GB
+// on the device (16 bytes of radiance and pdf, 4 of sampling table per
+// texel); a larger one is more likely a mistake than a sky.
+inline constexpr long long kMaxEnvironmentTexels = 1LL << 27;
 
 // Parses and validates; throws InputError naming `source` and the JSON path
 // of the first problem ("scene.json: spheres[3].radius: must be > 0, got -2").
@@ -41,7 +45,10 @@ std::string write_scene_json(const Scene& scene);
 void validate_scene(const Scene& scene, const std::string& source);
 
 // 64-bit FNV-1a of the canonical JSON, as 16 hex digits: the scene's identity
-// for resume and provenance.
+// for resume and provenance. When the environment map's texels are attached
+// (Environment::image), the hash continues over them (width, height, then
+// every float's bits, little-endian), so an edited map that keeps its file
+// name is a different scene; tools attach them before hashing.
 std::string scene_content_hash(const Scene& scene);
 
 }  // namespace orb
