@@ -18,7 +18,14 @@ inline float fresnel_dielectric(float cos_i, float eta, float* cos_t)
     return 0.5f * (rs * rs + rp * rp);
 }
 
-inline bool dielectric_has_density(const Bsdf* b) { return !ggx_is_smooth(ggx_alpha(b->roughness)); }
+// Rough glass's code is in the program only when a glass of the scene is
+// rough (-DORB_ROUGH_DIELECTRIC=0 from the host otherwise; built when absent).
+#ifndef ORB_ROUGH_DIELECTRIC
+#define ORB_ROUGH_DIELECTRIC 1
+#endif
+inline bool dielectric_is_smooth(float alpha) { return !ORB_ROUGH_DIELECTRIC || ggx_is_smooth(alpha); }
+
+inline bool dielectric_has_density(const Bsdf* b) { return !dielectric_is_smooth(ggx_alpha(b->roughness)); }
 
 // Smooth glass: reflects with probability F and refracts with 1 - F, so the
 // Fresnel factors cancel in the weight.
@@ -61,7 +68,7 @@ inline float3 dielectric_eval(const Bsdf* b, float3 wo, float3 wi, float3 n, boo
     const float alpha = ggx_alpha(b->roughness);
     const float cos_o = dot(wo, n);
     const float cos_i = dot(wi, n);
-    if (ggx_is_smooth(alpha) || cos_o <= 0.0f || cos_i == 0.0f) return (float3)(0.0f);
+    if (dielectric_is_smooth(alpha) || cos_o <= 0.0f || cos_i == 0.0f) return (float3)(0.0f);
     const float eta = outside ? 1.0f / b->ior : b->ior;
     const bool reflection = cos_i > 0.0f;
     float3 m = reflection ? wo + wi : eta * wo + wi;
@@ -93,7 +100,7 @@ inline BsdfSample dielectric_sample(const Bsdf* b, float3 wo, float3 n, bool out
                                     float* choice)
 {
     const float alpha = ggx_alpha(b->roughness);
-    if (ggx_is_smooth(alpha)) return smooth_dielectric_sample(b, wo, n, outside, choice);
+    if (dielectric_is_smooth(alpha)) return smooth_dielectric_sample(b, wo, n, outside, choice);
     const float eta = outside ? 1.0f / b->ior : b->ior;
     const float3 m = ggx_sample_visible_normal(alpha, wo, n, u, v);
     const float cos_om = dot(wo, m);

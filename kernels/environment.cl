@@ -18,7 +18,12 @@
 // density, proportional to each texel's radiance times its solid angle and
 // uniform in solid angle inside it, follows the radiance exactly.
 
-inline bool has_environment(const SceneView* scene) { return scene->environment.width > 0; }
+// The host builds a program without the environment's code for a scene
+// without one (-DORB_ENVIRONMENT=0; built when absent).
+#ifndef ORB_ENVIRONMENT
+#define ORB_ENVIRONMENT 1
+#endif
+inline bool has_environment(const SceneView* scene) { return ORB_ENVIRONMENT && scene->environment.width > 0; }
 
 // World -> map frame: the inverse turn about +y.
 inline float3 environment_to_map(const SceneView* scene, float3 d)
@@ -129,7 +134,7 @@ inline float3 estimate_environment_light(const SceneView* scene, float pick_pdf,
 inline float3 estimate_light(const SceneView* scene, int light_sphere, float pick_pdf, float3 p, int self,
                              const Bsdf* bsdf, float3 wo, float3 n, bool outside, float u, float v)
 {
-    if (light_sphere < 0) return estimate_environment_light(scene, pick_pdf, p, self, bsdf, wo, n, outside, u, v);
+    if (ORB_ENVIRONMENT && light_sphere < 0) return estimate_environment_light(scene, pick_pdf, p, self, bsdf, wo, n, outside, u, v);
     return estimate_direct_light(scene, light_sphere, pick_pdf, p, self, bsdf, wo, n, outside, u, v);
 }
 

@@ -82,6 +82,12 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           // A scene without a tree gets a program without traversal code.
                           (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
                           (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
+                          // Only the code the scene uses: each material kind's, rough
+                          // glass's and the environment's cost registers on GPUs whether
+                          // a scene uses them or not (docs/performance.md).
+                          " -DORB_MATERIAL_KINDS=" + std::to_string(scene.material_kinds) +
+                          " -DORB_ROUGH_DIELECTRIC=" + (scene.rough_dielectric ? "1" : "0") +
+                          " -DORB_ENVIRONMENT=" + (scene.environment.width > 0 ? "1" : "0") +
                           (config_.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
                           nvidia_register_cap(device);
     if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob

@@ -92,6 +92,12 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh)
     tables.materials.reserve(scene.materials.size());
     for (const Material& material : scene.materials) tables.materials.push_back(material_record(material));
 
+    for (const Sphere& sphere : scene.spheres) {
+        const device::MaterialRecord& material = tables.materials[sphere.material];
+        layout.material_kinds |= 1u << material.kind;
+        layout.rough_dielectric |= material.kind == static_cast<int>(device::MaterialKind::Dielectric) && material.roughness > 0.0f;
+    }
+
     std::vector<int> slot_of(sphere_count, -1);
     auto place = [&](std::uint32_t scene_index, std::size_t slot) {
         const Sphere& sphere = scene.spheres[scene_index];

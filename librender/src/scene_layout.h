@@ -26,6 +26,12 @@ struct SceneLayout {
     device::SceneCounts counts{};
     device::EnvironmentParams environment{};  // width 0: none
     bool uniform_lights = true;  // every light has the same picking probability (so uniform picking is exact)
+    // What the program needs code for (kernels/bsdf.cl, ORB_MATERIAL_KINDS):
+    // bit k set when a sphere's material is MaterialKind k; whether a glass
+    // is rough (ORB_ROUGH_DIELECTRIC). Code a scene does not use still costs
+    // GPU registers, so its program leaves that code out.
+    std::uint32_t material_kinds = 0;
+    bool rough_dielectric = false;
 };
 
 // The device tables in BVH order: the spheres outside the tree first (every

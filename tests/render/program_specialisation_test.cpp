@@ -1,0 +1,104 @@
+// A scene's program carries only the code the scene needs (material kinds,
+// rough glass, the environment: build options from layout_scene). Leaving
+// code out must change nothing but speed: the specialised program renders
+// the image the program with every kind renders.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "render_test_support.h"
+#include "scene_layout.h"
+
+using namespace orb;
+using namespace orb::render;
+using namespace orb::render::test;
+
+namespace {
+
+constexpr std::uint32_t bit(MaterialType kind) { return 1u << static_cast<int>(kind); }
+
+// A white room seen from inside one huge sphere, a lamp, and one ball of
+// each given kind.
+Scene room_with(std::initializer_list<MaterialType> kinds, double glass_roughness = 0.0) {
+    Scene scene;
+    scene.camera.position = {0.0, 1.0, 4.0};
+    scene.camera.target = {0.0, 1.0, 0.0};
+    scene.camera.up = {0.0, 1.0, 0.0};
+    scene.camera.vfov_deg = 50.0;
+    add_sphere(scene, {0.0, 0.0, 0.0}, 50.0, add_material(scene, MaterialType::Diffuse, {0.7, 0.7, 0.7}));
+    add_sphere(scene, {0.0, 4.0, 0.0}, 0.8, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {8.0, 8.0, 8.0}));
+    double x = -1.5;
+    for (MaterialType kind : kinds) {
+        const std::uint32_t material = add_material(scene, kind, {0.8, 0.6, 0.4});
+        if (kind == MaterialType::Dielectric) scene.materials[material].roughness = glass_roughness;
+        if (kind == MaterialType::Pbr) {
+            scene.materials[material].roughness = 0.4;
+            scene.materials[material].metallic = 0.5;
+        }
+        add_sphere(scene, {x, 0.6, 0.0}, 0.5, material);
+        x += 1.0;
+    }
+    return scene;
+}
+
+Film render_with_options(const Scene& scene, const char* options) {
+    if (options) ::setenv("ORB_CL_OPTIONS", options, 1);
+    try {
+        Film film = test::render(scene, small_config(40, 30, 3), {4});
+        ::unsetenv("ORB_CL_OPTIONS");
+        return film;
+    } catch (...) {
+        ::unsetenv("ORB_CL_OPTIONS");
+        throw;
+    }
+}
+
+// Every kind, rough glass and the environment built in (the later -D wins).
+constexpr const char* kEverything = "-DORB_MATERIAL_KINDS=4294967295 -DORB_ROUGH_DIELECTRIC=1 -DORB_ENVIRONMENT=1";
+
+}  // namespace
+
+TEST(ProgramSpecialisation, TheLayoutNamesWhatTheSceneUses) {
+    const SceneLayout cornell_like = layout_scene(room_with({MaterialType::Mirror, MaterialType::Dielectric}));
+    EXPECT_EQ(cornell_like.material_kinds,
+              bit(MaterialType::Diffuse) | bit(MaterialType::Mirror) | bit(MaterialType::Dielectric));
+    EXPECT_FALSE(cornell_like.rough_dielectric);
+    EXPECT_EQ(cornell_like.environment.width, 0);
+
+    const SceneLayout rough = layout_scene(room_with({MaterialType::Dielectric, MaterialType::Pbr}, 0.3));
+    EXPECT_EQ(rough.material_kinds,
+              bit(MaterialType::Diffuse) | bit(MaterialType::Dielectric) | bit(MaterialType::Pbr));
+    EXPECT_TRUE(rough.rough_dielectric);
+
+    // A material no sphere uses needs no code.
+    Scene unused = room_with({});
+    add_material(unused, MaterialType::Mirror, {1, 1, 1});
+    EXPECT_EQ(layout_scene(unused).material_kinds, bit(MaterialType::Diffuse));
+
+    Scene lit = room_with({});
+    lit.environment.kind = EnvironmentKind::Color;
+    lit.environment.color = {0.5, 0.5, 0.5};
+    EXPECT_GT(layout_scene(lit).environment.width, 0);
+}
+
+// Exact equality: the cases left out are never taken, so both programs run
+// the same arithmetic on every path (PoCL, same seed, every channel).
+TEST(ProgramSpecialisation, LeavingCodeOutChangesNoPixel) {
+    for (const Scene& scene : {room_with({MaterialType::Mirror, MaterialType::Dielectric}),
+                               room_with({MaterialType::Pbr}), room_with({MaterialType::Dielectric}, 0.3)}) {
+        const Film specialised = render_with_options(scene, nullptr);
+        const Film everything = render_with_options(scene, kEverything);
+        EXPECT_EQ(specialised.radiance, everything.radiance);
+        EXPECT_EQ(specialised.albedo, everything.albedo);
+        EXPECT_EQ(specialised.direct, everything.direct);
+        EXPECT_EQ(specialised.indirect, everything.indirect);
+    }
+}
+
+// The option does take effect: a program built for diffuse only renders the
+// mirror and the glass ball as diffuse ones.
+TEST(ProgramSpecialisation, AKindLeftOutIsRenderedAsDiffuse) {
+    const Scene scene = room_with({MaterialType::Mirror, MaterialType::Dielectric});
+    EXPECT_NE(render_with_options(scene, "-DORB_MATERIAL_KINDS=1").radiance, render_with_options(scene, nullptr).radiance);
+}
