@@ -178,7 +178,7 @@ inline float3 safe_inverse(float3 d)
 }
 
 // A ray as the box tests read it: per axis, which of a node's planes
-// (BvhNodeRecord::planes) it enters by, lo for a positive direction, hi for
+// (BvhNodeRecord::bounds) it enters by, lo for a positive direction, hi for
 // a negative one, and leaves by. For a box with lo <= hi this gives what
 // min/max of the two slab distances would; an inverted box (an empty lane)
 // is entered after it is left, so no ray ever hits it.
@@ -199,24 +199,17 @@ inline BoxRay box_ray(float3 o, float3 d)
     return ray;
 }
 
-// Plane `plane` (an index into BvhNodeRecord::planes) of the four children,
-// decoded from the node's grid on `axis`: exactly the floats the host
-// checked against the children's boxes (bvh_node_record.cpp).
-inline float4 grid_plane(SCENE_MEM const BvhNodeRecord* node, int plane, int axis)
-{
-    return fma(convert_float4(as_uchar4(node->planes[plane])), (float4)(node->step[axis]), (float4)(node->origin[axis]));
-}
-
 // The four children's boxes against the ray up to t_max: where the ray
 // enters each (*entry), and which it hits (-1 lanes).
 inline int4 child_boxes(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, float t_max, float4* entry)
 {
-    const float4 enter_x = (grid_plane(node, ray->enter_x, 0) - (float4)(ray->o.x)) * ray->inv_d.x;
-    const float4 enter_y = (grid_plane(node, ray->enter_y, 1) - (float4)(ray->o.y)) * ray->inv_d.y;
-    const float4 enter_z = (grid_plane(node, ray->enter_z, 2) - (float4)(ray->o.z)) * ray->inv_d.z;
-    const float4 leave_x = (grid_plane(node, 3 - ray->enter_x, 0) - (float4)(ray->o.x)) * ray->inv_d.x;
-    const float4 leave_y = (grid_plane(node, 5 - ray->enter_y, 1) - (float4)(ray->o.y)) * ray->inv_d.y;
-    const float4 leave_z = (grid_plane(node, 7 - ray->enter_z, 2) - (float4)(ray->o.z)) * ray->inv_d.z;
+    SCENE_MEM const float4* b = node->bounds;
+    const float4 enter_x = (b[ray->enter_x] - (float4)(ray->o.x)) * ray->inv_d.x;
+    const float4 enter_y = (b[ray->enter_y] - (float4)(ray->o.y)) * ray->inv_d.y;
+    const float4 enter_z = (b[ray->enter_z] - (float4)(ray->o.z)) * ray->inv_d.z;
+    const float4 leave_x = (b[3 - ray->enter_x] - (float4)(ray->o.x)) * ray->inv_d.x;
+    const float4 leave_y = (b[5 - ray->enter_y] - (float4)(ray->o.y)) * ray->inv_d.y;
+    const float4 leave_z = (b[7 - ray->enter_z] - (float4)(ray->o.z)) * ray->inv_d.z;
     const float4 enter = ORB_MAX(ORB_MAX(enter_x, enter_y), ORB_MAX(enter_z, (float4)(0.0f)));
     const float4 leave = ORB_MIN(ORB_MIN(leave_x, leave_y), ORB_MIN(leave_z, (float4)(t_max)));
     *entry = enter;

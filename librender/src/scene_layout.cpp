@@ -1,7 +1,6 @@
 #include "scene_layout.h"
 
 #include "alias_table.h"
-#include "bvh_node_record.h"
 #include "sphere_bvh.h"
 
 #include <algorithm>
@@ -59,6 +58,19 @@ void check_sphere(const Scene& scene, std::size_t i) {
                                  std::to_string(scene.materials.size()) + " materials");
 }
 
+// A node with every lane empty: an inverted box (sphere_bvh.h, device_types.h),
+// and a child no ray reaches (a harmless leaf, were one ever to).
+device::BvhNodeRecord empty_node_record() {
+    device::BvhNodeRecord record{};
+    constexpr float big = std::numeric_limits<float>::max();
+    for (int axis = 0; axis < 3; ++axis) {
+        record.bounds[axis] = {big, big, big, big};
+        record.bounds[axis + 3] = {-big, -big, -big, -big};
+    }
+    record.child = {-1, -1, -1, -1};
+    return record;
+}
+
 }  // namespace
 
 SceneLayout layout_scene(const Scene& scene, bool use_bvh)
@@ -113,18 +125,22 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh)
     tables.bvh_nodes.reserve(bvh.nodes.size());
     std::size_t next_leaf_packet = outside_packets;
     for (const BvhNode& node : bvh.nodes) {
-        std::array<int, kBvhWidth> child{-1, -1, -1, -1};  // empty lanes: a leaf no ray reaches
+        device::BvhNodeRecord record = empty_node_record();
         for (std::uint32_t k = 0; k < node.child_count; ++k) {
-            const BvhChild& c = node.children[k];
-            if (c.leaf()) {
+            const BvhChild& child = node.children[k];
+            for (int axis = 0; axis < 3; ++axis) {
+                lane_of(record.bounds[axis], k) = child.lo[axis];
+                lane_of(record.bounds[axis + 3], k) = child.hi[axis];
+            }
+            if (child.leaf()) {
                 const std::size_t packet = next_leaf_packet++;
-                for (std::uint32_t lane = 0; lane < c.count; ++lane) place(bvh.order[c.first + lane], packet * 4 + lane);
-                child[k] = -1 - static_cast<int>(packet);
+                for (std::uint32_t lane = 0; lane < child.count; ++lane)
+                    place(bvh.order[child.first + lane], packet * 4 + lane);
+                lane_of(record.child, k) = -1 - static_cast<int>(packet);
             } else {
-                child[k] = static_cast<int>(c.first);
+                lane_of(record.child, k) = static_cast<int>(child.first);
             }
         }
-        const device::BvhNodeRecord record = bvh_node_record(node, child);
         tables.bvh_nodes.push_back(record);
     }
 

@@ -100,22 +100,20 @@ typedef struct SphereRecord {
 } SphereRecord;
 
 /* A node of the 4-wide sphere BVH (librender/src/sphere_bvh.h): the boxes of
- * its up to four children, and what each child is:
+ * its up to four children in structure-of-arrays form, lane k of each
+ * float4 being child k (CPUs test all four boxes with one vector instruction
+ * per float4), and what each child is:
  *   child[k] >= 0: an interior node, index into the nodes table
  *   child[k] <  0: a leaf, one packet of up to four spheres: packet -1 - child[k]
- * The boxes lie on a grid of 256 lines per axis spanning the node: plane p
- * of child k is line q = byte k of planes[p], at fma(q, step[axis], origin[axis])
- * (librender/src/bvh_node_record.cpp rounds each box outward to the grid).
- * planes[] are lo x, lo y, lo z, hi x, hi y, hi z, so that a ray picks the
- * plane it enters by per axis as planes[axis] or planes[axis + 3], and the
- * four children's distances to it come out as one float4 (intersect.cl). A
- * lane without a child holds lo = line 255, hi = line 0, an inverted box
- * which every ray leaves before it enters. 64 bytes: one cache line. */
+ * bounds[] are the boxes' planes: lo_x, lo_y, lo_z, hi_x, hi_y, hi_z, so that
+ * a ray picks the plane it enters by per axis as bounds[axis] or
+ * bounds[axis + 3] (intersect.cl). A lane without a child holds the inverted
+ * box lo = FLT_MAX, hi = -FLT_MAX, which every ray leaves before it enters.
+ * 128 bytes: two 64-byte cache lines, eight 16-byte loads. */
 typedef struct BvhNodeRecord {
-    float origin[3];
-    float step[3];
-    uint planes[6];
+    float4 bounds[6];
     int4 child;
+    int4 pad0;
 } BvhNodeRecord;
 
 /* The traversal stack's entries (kernels/intersect.cl). The build keeps
@@ -235,9 +233,8 @@ typedef struct RenderPassParams {
     SIZE(SphereRecord, 32)                                                                                 \
     FIELD(SphereRecord, centre_radius, 0) FIELD(SphereRecord, material, 16)                                \
     FIELD(SphereRecord, scene_index, 20) FIELD(SphereRecord, light_probability, 24)                        \
-    SIZE(BvhNodeRecord, 64)                                                                                \
-    FIELD(BvhNodeRecord, origin, 0) FIELD(BvhNodeRecord, step, 12) FIELD(BvhNodeRecord, planes, 24)        \
-    FIELD(BvhNodeRecord, child, 48)                                                                        \
+    SIZE(BvhNodeRecord, 128)                                                                               \
+    FIELD(BvhNodeRecord, bounds, 0) FIELD(BvhNodeRecord, child, 96)                                        \
     SIZE(MaterialRecord, 48)                                                                               \
     FIELD(MaterialRecord, color, 0) FIELD(MaterialRecord, emission, 16) FIELD(MaterialRecord, ior, 32)     \
     FIELD(MaterialRecord, kind, 36)                                                                        \
