@@ -251,17 +251,42 @@ inline int hit_children(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, 
     return -(hit.x + hit.y + hit.z + hit.w);
 }
 
-// The children to defer, farthest first, of `count` sorted hit children:
-// lanes 1..count-1 reversed into the first count-1 lanes (the rest unused),
-// so that the caller may store all three without a branch per child.
-inline int4 deferred_children(int4 c, int count)
+// Pushes sorted hit children 1..count-1 (and their entry distances, when
+// `entries` is not null), farthest first, so the nearest is on top. CPUs
+// store three entries whatever the count, without a branch per child (two
+// spare stack entries take the unused ones); GPUs store only the children
+// pushed, as predicated stores, since every store there is local-memory
+// traffic. Returns the new top.
+inline int push_deferred(int* children, float* entries, int top, int4 c, float4 e, int count)
 {
-    return (int4)(count > 3 ? c.w : count > 2 ? c.z : c.y, count > 3 ? c.z : c.y, c.y, 0);
-}
-
-inline float4 deferred_entries(float4 e, int count)
-{
-    return (float4)(count > 3 ? e.w : count > 2 ? e.z : e.y, count > 3 ? e.z : e.y, e.y, 0.0f);
+#ifdef ORB_INTERSECT_SCALAR
+    if (count > 3) {
+        children[top] = c.w;
+        if (entries) entries[top] = e.w;
+        ++top;
+    }
+    if (count > 2) {
+        children[top] = c.z;
+        if (entries) entries[top] = e.z;
+        ++top;
+    }
+    if (count > 1) {
+        children[top] = c.y;
+        if (entries) entries[top] = e.y;
+        ++top;
+    }
+    return top;
+#else
+    children[top] = count > 3 ? c.w : count > 2 ? c.z : c.y;
+    children[top + 1] = count > 3 ? c.z : c.y;
+    children[top + 2] = c.y;
+    if (entries) {
+        entries[top] = count > 3 ? e.w : count > 2 ? e.z : e.y;
+        entries[top + 1] = count > 3 ? e.z : e.y;
+        entries[top + 2] = e.y;
+    }
+    return top + count - 1;
+#endif
 }
 
 // Closest hit along the ray, ordered front to back: of a node's children
@@ -272,7 +297,7 @@ inline float4 deferred_entries(float4 e, int count)
 inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
 {
     const BoxRay ray = box_ray(o, d);
-    // Two spare entries: a push writes three children whatever their count.
+    // Two spare entries: a push may write three children whatever their count.
     int stack_child[ORB_BVH_STACK_SIZE + 2];
     float stack_entry[ORB_BVH_STACK_SIZE + 2];
     int top = 0;
@@ -286,15 +311,7 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
             float4 entry;
             const int count = hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
             if (count > 0) {
-                const int4 pushed = deferred_children(child, count);
-                const float4 pushed_entry = deferred_entries(entry, count);
-                stack_child[top] = pushed.x;
-                stack_child[top + 1] = pushed.y;
-                stack_child[top + 2] = pushed.z;
-                stack_entry[top] = pushed_entry.x;
-                stack_entry[top + 1] = pushed_entry.y;
-                stack_entry[top + 2] = pushed_entry.z;
-                top += count - 1;
+                top = push_deferred(stack_child, stack_entry, top, child, entry, count);
                 current = child.x;
                 continue;
             }
@@ -355,11 +372,7 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
             float4 entry;
             const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
             if (count > 0) {
-                const int4 pushed = deferred_children(child, count);
-                stack[top] = pushed.x;
-                stack[top + 1] = pushed.y;
-                stack[top + 2] = pushed.z;
-                top += count - 1;
+                top = push_deferred(stack, 0, top, child, entry, count);
                 current = child.x;
                 continue;
             }
