@@ -289,6 +289,28 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 #endif
 }
 
+// Development knob: -DORB_BVH_CHECK=1 (through ORB_CL_OPTIONS) checks every
+// index the traversals read (nodes, packets, stack entries) before reading,
+// and reports the first violation of a ray with printf and gives up the ray
+// instead of reading out of bounds. ORB_BVH_CHECK_STACK lowers the stack
+// limit it checks against (tests/render/bvh_render_test.cpp shows with a
+// small one that violations are reported). Off by default: no cost.
+#ifndef ORB_BVH_CHECK
+#define ORB_BVH_CHECK 0
+#endif
+#ifndef ORB_BVH_CHECK_STACK
+#define ORB_BVH_CHECK_STACK ORB_BVH_STACK_SIZE
+#endif
+#if ORB_BVH_CHECK
+#define ORB_BVH_EXPECT(ok, what, value, limit, give_up)                                        \
+    if (!(ok)) {                                                                               \
+        printf("orb BVH check: %s %d out of range (limit %d)\n", what, (int)(value), (int)(limit)); \
+        give_up;                                                                               \
+    }
+#else
+#define ORB_BVH_EXPECT(ok, what, value, limit, give_up)
+#endif
+
 // Closest hit along the ray, ordered front to back: of a node's children
 // the ray hits, the nearest is visited next and the others are pushed with
 // their entry distances, nearest on top; a popped child whose entry lies
@@ -305,12 +327,16 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
     for (;;) {
         if (current < 0) {
             const int packet = -1 - current;
+            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return)
             test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
         } else {
+            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return)
             int4 child;
             float4 entry;
             const int count = hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
             if (count > 0) {
+                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
+                               ORB_BVH_CHECK_STACK, return)
                 top = push_deferred(stack_child, stack_entry, top, child, entry, count);
                 current = child.x;
                 continue;
@@ -339,6 +365,7 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 // ORB_NO_HIT when the ray misses it.
 inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d, int self)
 {
+    ORB_BVH_EXPECT(id >= 0 && id < scene->sphere_count, "light sphere", id, scene->sphere_count, return ORB_NO_HIT)
     return lane_distance(&scene->packets[id >> 2], id & 3, id, o, d, self);
 }
 
@@ -366,12 +393,18 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     for (;;) {
         if (current < 0) {
             const int packet = -1 - current;
+            ORB_BVH_EXPECT(packet < scene->packet_count, "shadow leaf packet", packet, scene->packet_count,
+                           return false)
             if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) return false;
         } else {
+            ORB_BVH_EXPECT(current < scene->bvh_node_count, "shadow node", current, scene->bvh_node_count,
+                           return false)
             int4 child;
             float4 entry;
             const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
             if (count > 0) {
+                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "shadow stack top", top + count - 1,
+                               ORB_BVH_CHECK_STACK, return false)
                 top = push_deferred(stack, 0, top, child, entry, count);
                 current = child.x;
                 continue;
