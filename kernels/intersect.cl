@@ -356,7 +356,14 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
     best_init(&best);
     for (int p = 0; p < scene->outside_packet_count; ++p) test_packet(&best, &scene->packets[p], 4 * p, o, d, self);
 #if ORB_BVH
-    if (scene->bvh_node_count > 0) traverse_bvh(&best, scene, o, d, self);
+    // A ray with a NaN or infinite component hits no sphere (every distance
+    // is NaN, so no test passes), but every box test passes: skip the tree
+    // rather than visit all of it to find nothing.
+    const bool finite_ray = all(isfinite(o)) && all(isfinite(d));
+#if ORB_BVH_CHECK
+    if (!finite_ray) printf("orb BVH check: a ray with a non-finite origin or direction\n");
+#endif
+    if (scene->bvh_node_count > 0 && finite_ray) traverse_bvh(&best, scene, o, d, self);
 #endif
     return best_hit(&best);
 }
