@@ -251,18 +251,65 @@ inline int hit_children(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, 
     return -(hit.x + hit.y + hit.z + hit.w);
 }
 
-// The children to defer, farthest first, of `count` sorted hit children:
-// lanes 1..count-1 reversed into the first count-1 lanes (the rest unused),
-// so that the caller may store all three without a branch per child.
-inline int4 deferred_children(int4 c, int count)
+// Pushes sorted hit children 1..count-1 (and their entry distances, when
+// `entries` is not null), farthest first, so the nearest is on top. CPUs
+// store three entries whatever the count, without a branch per child (two
+// spare stack entries take the unused ones); GPUs store only the children
+// pushed, as predicated stores, since every store there is local-memory
+// traffic. Returns the new top.
+inline int push_deferred(int* children, float* entries, int top, int4 c, float4 e, int count)
 {
-    return (int4)(count > 3 ? c.w : count > 2 ? c.z : c.y, count > 3 ? c.z : c.y, c.y, 0);
+#ifdef ORB_INTERSECT_SCALAR
+    if (count > 3) {
+        children[top] = c.w;
+        if (entries) entries[top] = e.w;
+        ++top;
+    }
+    if (count > 2) {
+        children[top] = c.z;
+        if (entries) entries[top] = e.z;
+        ++top;
+    }
+    if (count > 1) {
+        children[top] = c.y;
+        if (entries) entries[top] = e.y;
+        ++top;
+    }
+    return top;
+#else
+    children[top] = count > 3 ? c.w : count > 2 ? c.z : c.y;
+    children[top + 1] = count > 3 ? c.z : c.y;
+    children[top + 2] = c.y;
+    if (entries) {
+        entries[top] = count > 3 ? e.w : count > 2 ? e.z : e.y;
+        entries[top + 1] = count > 3 ? e.z : e.y;
+        entries[top + 2] = e.y;
+    }
+    return top + count - 1;
+#endif
 }
 
-inline float4 deferred_entries(float4 e, int count)
-{
-    return (float4)(count > 3 ? e.w : count > 2 ? e.z : e.y, count > 3 ? e.z : e.y, e.y, 0.0f);
-}
+// Development knob: -DORB_BVH_CHECK=1 (through ORB_CL_OPTIONS) checks every
+// index the traversals read (nodes, packets, stack entries) before reading,
+// and reports the first violation of a ray with printf and gives up the ray
+// instead of reading out of bounds. ORB_BVH_CHECK_STACK lowers the stack
+// limit it checks against (tests/render/bvh_render_test.cpp shows with a
+// small one that violations are reported). Off by default: no cost.
+#ifndef ORB_BVH_CHECK
+#define ORB_BVH_CHECK 0
+#endif
+#ifndef ORB_BVH_CHECK_STACK
+#define ORB_BVH_CHECK_STACK ORB_BVH_STACK_SIZE
+#endif
+#if ORB_BVH_CHECK
+#define ORB_BVH_EXPECT(ok, what, value, limit, give_up)                                        \
+    if (!(ok)) {                                                                               \
+        printf("orb BVH check: %s %d out of range (limit %d)\n", what, (int)(value), (int)(limit)); \
+        give_up;                                                                               \
+    }
+#else
+#define ORB_BVH_EXPECT(ok, what, value, limit, give_up)
+#endif
 
 // Closest hit along the ray, ordered front to back: of a node's children
 // the ray hits, the nearest is visited next and the others are pushed with
@@ -272,7 +319,7 @@ inline float4 deferred_entries(float4 e, int count)
 inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
 {
     const BoxRay ray = box_ray(o, d);
-    // Two spare entries: a push writes three children whatever their count.
+    // Two spare entries: a push may write three children whatever their count.
     int stack_child[ORB_BVH_STACK_SIZE + 2];
     float stack_entry[ORB_BVH_STACK_SIZE + 2];
     int top = 0;
@@ -280,21 +327,17 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
     for (;;) {
         if (current < 0) {
             const int packet = -1 - current;
+            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return)
             test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
         } else {
+            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return)
             int4 child;
             float4 entry;
             const int count = hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
             if (count > 0) {
-                const int4 pushed = deferred_children(child, count);
-                const float4 pushed_entry = deferred_entries(entry, count);
-                stack_child[top] = pushed.x;
-                stack_child[top + 1] = pushed.y;
-                stack_child[top + 2] = pushed.z;
-                stack_entry[top] = pushed_entry.x;
-                stack_entry[top + 1] = pushed_entry.y;
-                stack_entry[top + 2] = pushed_entry.z;
-                top += count - 1;
+                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
+                               ORB_BVH_CHECK_STACK, return)
+                top = push_deferred(stack_child, stack_entry, top, child, entry, count);
                 current = child.x;
                 continue;
             }
@@ -313,7 +356,14 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
     best_init(&best);
     for (int p = 0; p < scene->outside_packet_count; ++p) test_packet(&best, &scene->packets[p], 4 * p, o, d, self);
 #if ORB_BVH
-    if (scene->bvh_node_count > 0) traverse_bvh(&best, scene, o, d, self);
+    // A ray with a NaN or infinite component hits no sphere (every distance
+    // is NaN, so no test passes), but every box test passes: skip the tree
+    // rather than visit all of it to find nothing.
+    const bool finite_ray = all(isfinite(o)) && all(isfinite(d));
+#if ORB_BVH_CHECK
+    if (!finite_ray) printf("orb BVH check: a ray with a non-finite origin or direction\n");
+#endif
+    if (scene->bvh_node_count > 0 && finite_ray) traverse_bvh(&best, scene, o, d, self);
 #endif
     return best_hit(&best);
 }
@@ -322,6 +372,7 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 // ORB_NO_HIT when the ray misses it.
 inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d, int self)
 {
+    ORB_BVH_EXPECT(id >= 0 && id < scene->sphere_count, "light sphere", id, scene->sphere_count, return ORB_NO_HIT)
     return lane_distance(&scene->packets[id >> 2], id & 3, id, o, d, self);
 }
 
@@ -353,17 +404,19 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     for (;;) {
         if (current < 0) {
             const int packet = -1 - current;
+            ORB_BVH_EXPECT(packet < scene->packet_count, "shadow leaf packet", packet, scene->packet_count,
+                           return false)
             if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) return false;
         } else {
+            ORB_BVH_EXPECT(current < scene->bvh_node_count, "shadow node", current, scene->bvh_node_count,
+                           return false)
             int4 child;
             float4 entry;
             const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
             if (count > 0) {
-                const int4 pushed = deferred_children(child, count);
-                stack[top] = pushed.x;
-                stack[top + 1] = pushed.y;
-                stack[top + 2] = pushed.z;
-                top += count - 1;
+                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "shadow stack top", top + count - 1,
+                               ORB_BVH_CHECK_STACK, return false)
+                top = push_deferred(stack, 0, top, child, entry, count);
                 current = child.x;
                 continue;
             }

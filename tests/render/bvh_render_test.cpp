@@ -4,7 +4,9 @@
 // material and many lights.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <limits>
 #include <random>
 
@@ -95,6 +97,36 @@ TEST(BvhRender, SameImageWithAndWithoutTheTreeInTheGpuVariant) {
         throw;
     }
     ::unsetenv("ORB_CL_OPTIONS");
+}
+
+// What the kernels print while rendering `scene` with `options` added to
+// their build options (the development knob ORB_CL_OPTIONS).
+std::string kernel_output(const Scene& scene, const char* options)
+{
+    ::setenv("ORB_CL_OPTIONS", options, 1);
+    testing::internal::CaptureStdout();
+    try {
+        test::render(scene, small_config(48, 36, 11, 6), {4});
+    } catch (...) {
+        testing::internal::GetCapturedStdout();
+        ::unsetenv("ORB_CL_OPTIONS");
+        throw;
+    }
+    std::fflush(stdout);
+    ::unsetenv("ORB_CL_OPTIONS");
+    return testing::internal::GetCapturedStdout();
+}
+
+// With the traversal's bounds checks on (-DORB_BVH_CHECK=1), no node, packet
+// or stack index leaves its table, in the CPU variant and in the GPU variant
+// reading the scene from __global memory as GPUs do for large scenes. With
+// the checked stack limit lowered to 2, the checks do report.
+TEST(BvhRender, TraversalIndicesStayInBoundsInBothVariants) {
+    const Scene scene = cloud_scene(300, 5);
+    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1"), "");
+    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_SCENE_SPACE=__global"), "");
+    EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2").find("orb BVH check: stack top"),
+              std::string::npos);
 }
 
 TEST(BvhRender, TheIdPassNamesSceneSpheresInBvhOrder) {
