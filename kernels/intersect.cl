@@ -1,5 +1,5 @@
 // Ray-sphere intersection: the spheres outside the BVH (huge ones, or all of
-// a small scene) in a linear loop over packets of four, then the BVH
+// a small scene) in a linear loop over packets of four, then the 4-wide BVH
 // (librender/src/sphere_bvh.h), whose leaves are one packet each.
 //
 // Robustness without epsilons:
@@ -22,8 +22,19 @@
 #ifndef ORB_BVH
 #define ORB_BVH 1
 #endif
-// No root-to-leaf path of the BVH is longer (kBvhMaxDepth, sphere_bvh.h).
-#define ORB_BVH_STACK 64
+
+// Minimum and maximum of values that are never NaN here (distances from
+// finite boxes and spheres). OpenCL's fmin and fmax must return the other
+// operand of a NaN, which costs an x86 CPU a compare and a blend besides
+// each minps or maxps; a compare-select is the bare instruction. GPUs have
+// the NaN-aware instruction, so they keep fmin and fmax.
+#ifdef ORB_INTERSECT_SCALAR
+#define ORB_MIN(a, b) fmin(a, b)
+#define ORB_MAX(a, b) fmax(a, b)
+#else
+#define ORB_MIN(a, b) select(b, a, isless(a, b))
+#define ORB_MAX(a, b) select(b, a, isgreater(a, b))
+#endif
 
 typedef struct {
     float t;  // distance along the (unit) ray direction
@@ -76,7 +87,7 @@ inline float4 packet_roots(SCENE_MEM const SpherePacket* packet, int4 id, float3
     const float4 fy = ocy - b * d.y;
     const float4 fz = ocz - b * d.z;
     const float4 disc = packet->radius2 - (fx * fx + fy * fy + fz * fz);
-    const float4 s = sqrt(fmax(disc, (float4)(0.0f)));
+    const float4 s = sqrt(ORB_MAX(disc, (float4)(0.0f)));
     const float4 t_near = -b - s;
     const int4 is_self = id == (int4)(self);
     const float4 t = select(t_near, -b + s, is_self | (t_near <= (float4)(0.0f)));
@@ -106,8 +117,8 @@ inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, fl
 
 inline float best_distance(const BestHit* best)
 {
-    const float2 m2 = fmin(best->t.xy, best->t.zw);
-    return fmin(m2.x, m2.y);
+    const float2 m2 = ORB_MIN(best->t.xy, best->t.zw);
+    return ORB_MIN(m2.x, m2.y);
 }
 
 inline Hit best_hit(const BestHit* best)
@@ -159,17 +170,6 @@ inline float best_distance(const BestHit* best) { return best->t; }
 inline Hit best_hit(const BestHit* best) { return *best; }
 #endif
 
-// Where the ray enters the box, or ORB_NO_HIT if it misses it before t_max.
-inline float box_entry(SCENE_MEM const BvhNodeRecord* node, float3 o, float3 inv_d, float t_max)
-{
-    const float3 t0 = (node->lo_first.xyz - o) * inv_d;
-    const float3 t1 = (node->hi_count.xyz - o) * inv_d;
-    const float3 near = fmin(t0, t1), far = fmax(t0, t1);
-    const float enter = fmax(fmax(near.x, near.y), fmax(near.z, 0.0f));
-    const float leave = fmin(fmin(far.x, far.y), fmin(far.z, t_max));
-    return enter <= leave ? enter : ORB_NO_HIT;
-}
-
 inline float3 safe_inverse(float3 d)
 {
     // Direction components of (almost) zero get a huge finite inverse, so no
@@ -177,42 +177,176 @@ inline float3 safe_inverse(float3 d)
     return (float3)(1.0f) / select(d, copysign((float3)(1e-20f), d), isless(fabs(d), (float3)(1e-20f)));
 }
 
-// Closest hit along the ray, ordered front to back: the nearer child first,
-// the farther one on the stack with its entry distance, dropped when a hit
-// closer than that entry has been found by then.
+// A ray as the box tests read it: per axis, which of a node's planes
+// (BvhNodeRecord::bounds) it enters by, lo for a positive direction, hi for
+// a negative one, and leaves by. For a box with lo <= hi this gives what
+// min/max of the two slab distances would; an inverted box (an empty lane)
+// is entered after it is left, so no ray ever hits it.
+typedef struct {
+    float3 o;
+    float3 inv_d;
+    int enter_x, enter_y, enter_z;
+} BoxRay;
+
+inline BoxRay box_ray(float3 o, float3 d)
+{
+    BoxRay ray;
+    ray.o = o;
+    ray.inv_d = safe_inverse(d);
+    ray.enter_x = ray.inv_d.x < 0.0f ? 3 : 0;
+    ray.enter_y = ray.inv_d.y < 0.0f ? 4 : 1;
+    ray.enter_z = ray.inv_d.z < 0.0f ? 5 : 2;
+    return ray;
+}
+
+// The four children's boxes against the ray up to t_max: where the ray
+// enters each (*entry), and which it hits (-1 lanes).
+inline int4 child_boxes(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, float t_max, float4* entry)
+{
+    SCENE_MEM const float4* b = node->bounds;
+    const float4 enter_x = (b[ray->enter_x] - (float4)(ray->o.x)) * ray->inv_d.x;
+    const float4 enter_y = (b[ray->enter_y] - (float4)(ray->o.y)) * ray->inv_d.y;
+    const float4 enter_z = (b[ray->enter_z] - (float4)(ray->o.z)) * ray->inv_d.z;
+    const float4 leave_x = (b[3 - ray->enter_x] - (float4)(ray->o.x)) * ray->inv_d.x;
+    const float4 leave_y = (b[5 - ray->enter_y] - (float4)(ray->o.y)) * ray->inv_d.y;
+    const float4 leave_z = (b[7 - ray->enter_z] - (float4)(ray->o.z)) * ray->inv_d.z;
+    const float4 enter = ORB_MAX(ORB_MAX(enter_x, enter_y), ORB_MAX(enter_z, (float4)(0.0f)));
+    const float4 leave = ORB_MIN(ORB_MIN(leave_x, leave_y), ORB_MIN(leave_z, (float4)(t_max)));
+    *entry = enter;
+    return enter <= leave;
+}
+
+// Orders two (entry, child) pairs so that the nearer comes first.
+inline void order_pair(float* e0, int* c0, float* e1, int* c1)
+{
+    const bool swap = *e1 < *e0;
+    const float e = *e0;
+    const int c = *c0;
+    *e0 = swap ? *e1 : *e0;
+    *c0 = swap ? *c1 : *c0;
+    *e1 = swap ? e : *e1;
+    *c1 = swap ? c : *c1;
+}
+
+// The children of `node` whose boxes the ray enters before t_max, nearest
+// first: returns how many, and in the first that many lanes of *child and
+// *entry the children (as BvhNodeRecord::child) and their entry distances.
+inline int hit_children(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, float t_max, int4* child, float4* entry)
+{
+    float4 enter;
+    const int4 hit = child_boxes(node, ray, t_max, &enter);
+    // Missed children sort last: FLT_MAX is beyond every hit's entry (<= t_max <= 1e30).
+    enter = select((float4)(FLT_MAX), enter, hit);
+    const int4 c = node->child;
+    float e0 = enter.x, e1 = enter.y, e2 = enter.z, e3 = enter.w;
+    int c0 = c.x, c1 = c.y, c2 = c.z, c3 = c.w;
+    // A sorting network of four.
+    order_pair(&e0, &c0, &e1, &c1);
+    order_pair(&e2, &c2, &e3, &c3);
+    order_pair(&e0, &c0, &e2, &c2);
+    order_pair(&e1, &c1, &e3, &c3);
+    order_pair(&e1, &c1, &e2, &c2);
+    *child = (int4)(c0, c1, c2, c3);
+    *entry = (float4)(e0, e1, e2, e3);
+    return -(hit.x + hit.y + hit.z + hit.w);
+}
+
+// Pushes sorted hit children 1..count-1 (and their entry distances, when
+// `entries` is not null), farthest first, so the nearest is on top. CPUs
+// store three entries whatever the count, without a branch per child (two
+// spare stack entries take the unused ones); GPUs store only the children
+// pushed, as predicated stores, since every store there is local-memory
+// traffic. Returns the new top.
+inline int push_deferred(int* children, float* entries, int top, int4 c, float4 e, int count)
+{
+#ifdef ORB_INTERSECT_SCALAR
+    if (count > 3) {
+        children[top] = c.w;
+        if (entries) entries[top] = e.w;
+        ++top;
+    }
+    if (count > 2) {
+        children[top] = c.z;
+        if (entries) entries[top] = e.z;
+        ++top;
+    }
+    if (count > 1) {
+        children[top] = c.y;
+        if (entries) entries[top] = e.y;
+        ++top;
+    }
+    return top;
+#else
+    children[top] = count > 3 ? c.w : count > 2 ? c.z : c.y;
+    children[top + 1] = count > 3 ? c.z : c.y;
+    children[top + 2] = c.y;
+    if (entries) {
+        entries[top] = count > 3 ? e.w : count > 2 ? e.z : e.y;
+        entries[top + 1] = count > 3 ? e.z : e.y;
+        entries[top + 2] = e.y;
+    }
+    return top + count - 1;
+#endif
+}
+
+// Development knob: -DORB_BVH_CHECK=1 (through ORB_CL_OPTIONS) checks every
+// index the traversals read (nodes, packets, stack entries) before reading,
+// and reports the first violation of a ray with printf and gives up the ray
+// instead of reading out of bounds. ORB_BVH_CHECK_STACK lowers the stack
+// limit it checks against (tests/render/bvh_render_test.cpp shows with a
+// small one that violations are reported). Off by default: no cost.
+#ifndef ORB_BVH_CHECK
+#define ORB_BVH_CHECK 0
+#endif
+#ifndef ORB_BVH_CHECK_STACK
+#define ORB_BVH_CHECK_STACK ORB_BVH_STACK_SIZE
+#endif
+#if ORB_BVH_CHECK
+#define ORB_BVH_EXPECT(ok, what, value, limit, give_up)                                        \
+    if (!(ok)) {                                                                               \
+        printf("orb BVH check: %s %d out of range (limit %d)\n", what, (int)(value), (int)(limit)); \
+        give_up;                                                                               \
+    }
+#else
+#define ORB_BVH_EXPECT(ok, what, value, limit, give_up)
+#endif
+
+// Closest hit along the ray, ordered front to back: of a node's children
+// the ray hits, the nearest is visited next and the others are pushed with
+// their entry distances, nearest on top; a popped child whose entry lies
+// beyond the closest hit found by then is dropped. `current` is a node
+// (>= 0) or a leaf (< 0, its packet -1 - current), as in BvhNodeRecord::child.
 inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
 {
-    const float3 inv_d = safe_inverse(d);
-    uint stack_node[ORB_BVH_STACK];
-    float stack_entry[ORB_BVH_STACK];
+    const BoxRay ray = box_ray(o, d);
+    // Two spare entries: a push may write three children whatever their count.
+    int stack_child[ORB_BVH_STACK_SIZE + 2];
+    float stack_entry[ORB_BVH_STACK_SIZE + 2];
     int top = 0;
-    uint node = 0;
+    int current = 0;
     for (;;) {
-        SCENE_MEM const BvhNodeRecord* n = &scene->bvh_nodes[node];
-        const uint first = as_uint(n->lo_first.w);
-        if (as_uint(n->hi_count.w) > 0) {
-            test_packet(best, &scene->packets[first], (int)(4 * first), o, d, self);
+        if (current < 0) {
+            const int packet = -1 - current;
+            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return)
+            test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
         } else {
-            const float t_max = best_distance(best);
-            const float t_left = box_entry(&scene->bvh_nodes[first], o, inv_d, t_max);
-            const float t_right = box_entry(&scene->bvh_nodes[first + 1], o, inv_d, t_max);
-            if (t_left < ORB_NO_HIT && t_right < ORB_NO_HIT) {
-                const bool left_first = t_left <= t_right;
-                stack_node[top] = left_first ? first + 1 : first;
-                stack_entry[top] = left_first ? t_right : t_left;
-                ++top;
-                node = left_first ? first : first + 1;
-                continue;
-            }
-            if (t_left < ORB_NO_HIT || t_right < ORB_NO_HIT) {
-                node = t_left < ORB_NO_HIT ? first : first + 1;
+            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return)
+            int4 child;
+            float4 entry;
+            const int count = hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
+            if (count > 0) {
+                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
+                               ORB_BVH_CHECK_STACK, return)
+                top = push_deferred(stack_child, stack_entry, top, child, entry, count);
+                current = child.x;
                 continue;
             }
         }
-        // Next: the nearest deferred node that can still hold a closer hit.
-        while (top > 0 && stack_entry[top - 1] >= best_distance(best)) --top;
+        // Next: the nearest deferred child that can still hold a closer hit.
+        const float t_best = best_distance(best);
+        while (top > 0 && stack_entry[top - 1] >= t_best) --top;
         if (top == 0) break;
-        node = stack_node[--top];
+        current = stack_child[--top];
     }
 }
 
@@ -222,7 +356,14 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
     best_init(&best);
     for (int p = 0; p < scene->outside_packet_count; ++p) test_packet(&best, &scene->packets[p], 4 * p, o, d, self);
 #if ORB_BVH
-    if (scene->bvh_node_count > 0) traverse_bvh(&best, scene, o, d, self);
+    // A ray with a NaN or infinite component hits no sphere (every distance
+    // is NaN, so no test passes), but every box test passes: skip the tree
+    // rather than visit all of it to find nothing.
+    const bool finite_ray = all(isfinite(o)) && all(isfinite(d));
+#if ORB_BVH_CHECK
+    if (!finite_ray) printf("orb BVH check: a ray with a non-finite origin or direction\n");
+#endif
+    if (scene->bvh_node_count > 0 && finite_ray) traverse_bvh(&best, scene, o, d, self);
 #endif
     return best_hit(&best);
 }
@@ -231,6 +372,7 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 // ORB_NO_HIT when the ray misses it.
 inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d, int self)
 {
+    ORB_BVH_EXPECT(id >= 0 && id < scene->sphere_count, "light sphere", id, scene->sphere_count, return ORB_NO_HIT)
     return lane_distance(&scene->packets[id >> 2], id & 3, id, o, d, self);
 }
 
@@ -253,26 +395,34 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     }
     for (int p = 0; p < scene->outside_packet_count; ++p)
         if (packet_blocks(&scene->packets[p], 4 * p, o, d, self, light, t_light)) return false;
-    const float3 inv_d = safe_inverse(d);
-    uint stack[ORB_BVH_STACK];
+    // Any-hit: every child the ray hits up to the light is visited, nearest
+    // first as it happens; the first hit sphere other than the light ends it.
+    const BoxRay ray = box_ray(o, d);
+    int stack[ORB_BVH_STACK_SIZE + 2];  // two spare entries, as above
     int top = 0;
-    uint node = 0;
+    int current = 0;
     for (;;) {
-        SCENE_MEM const BvhNodeRecord* n = &scene->bvh_nodes[node];
-        const uint first = as_uint(n->lo_first.w);
-        if (as_uint(n->hi_count.w) > 0) {
-            if (packet_blocks(&scene->packets[first], (int)(4 * first), o, d, self, light, t_light)) return false;
+        if (current < 0) {
+            const int packet = -1 - current;
+            ORB_BVH_EXPECT(packet < scene->packet_count, "shadow leaf packet", packet, scene->packet_count,
+                           return false)
+            if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) return false;
         } else {
-            const bool left = box_entry(&scene->bvh_nodes[first], o, inv_d, t_light) < ORB_NO_HIT;
-            const bool right = box_entry(&scene->bvh_nodes[first + 1], o, inv_d, t_light) < ORB_NO_HIT;
-            if (left && right) stack[top++] = first + 1;
-            if (left || right) {
-                node = left ? first : first + 1;
+            ORB_BVH_EXPECT(current < scene->bvh_node_count, "shadow node", current, scene->bvh_node_count,
+                           return false)
+            int4 child;
+            float4 entry;
+            const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
+            if (count > 0) {
+                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "shadow stack top", top + count - 1,
+                               ORB_BVH_CHECK_STACK, return false)
+                top = push_deferred(stack, 0, top, child, entry, count);
+                current = child.x;
                 continue;
             }
         }
         if (top == 0) return true;
-        node = stack[--top];
+        current = stack[--top];
     }
 #endif
 }

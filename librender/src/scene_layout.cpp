@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <limits>
 #include <cmath>
 #include <numbers>
@@ -27,10 +26,11 @@ double length(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2]
 Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 device::float4 to_float4(const Vec3& a, double w) { return {f(a[0]), f(a[1]), f(a[2]), f(w)}; }
 
-// Lane `lane` of a packet's float4.
-float& lane_of(device::float4& v, std::size_t lane)
+// Lane `lane` of a packet's or a node's float4 or int4.
+template <typename Vector>
+auto& lane_of(Vector& v, std::size_t lane)
 {
-    float* lanes[4] = {&v.x, &v.y, &v.z, &v.w};
+    decltype(&v.x) lanes[4] = {&v.x, &v.y, &v.z, &v.w};
     return *lanes[lane];
 }
 
@@ -61,8 +61,17 @@ void check_sphere(const Scene& scene, std::size_t i) {
                                  std::to_string(scene.materials.size()) + " materials");
 }
 
-device::float4 uint_bits_in_w(const std::array<float, 3>& xyz, std::uint32_t w) {
-    return {xyz[0], xyz[1], xyz[2], std::bit_cast<float>(w)};
+// A node with every lane empty: an inverted box (sphere_bvh.h, device_types.h),
+// and a child no ray reaches (a harmless leaf, were one ever to).
+device::BvhNodeRecord empty_node_record() {
+    device::BvhNodeRecord record{};
+    constexpr float big = std::numeric_limits<float>::max();
+    for (int axis = 0; axis < 3; ++axis) {
+        record.bounds[axis] = {big, big, big, big};
+        record.bounds[axis + 3] = {-big, -big, -big, -big};
+    }
+    record.child = {-1, -1, -1, -1};
+    return record;
 }
 
 }  // namespace
@@ -81,7 +90,8 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh)
     // Slots: the outside spheres packed four to a packet, then one packet per leaf.
     const std::size_t outside_packets = (bvh.outside.size() + 3) / 4;
     std::size_t leaves = 0;
-    for (const BvhNode& node : bvh.nodes) leaves += node.count > 0;
+    for (const BvhNode& node : bvh.nodes)
+        for (std::uint32_t k = 0; k < node.child_count; ++k) leaves += node.children[k].leaf();
     const std::size_t packet_count = std::max<std::size_t>(outside_packets + leaves, sphere_count ? 1 : 0);
     // Unused lanes: radius^2 = -1 makes the discriminant negative, so they never hit.
     const device::float4 empty_lanes{0.0f, 0.0f, 0.0f, -1.0f};
@@ -115,16 +125,32 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh)
     };
     for (std::size_t k = 0; k < bvh.outside.size(); ++k) place(bvh.outside[k], k);
 
+    // The kernels' stack holds what this tree can defer (checked, not assumed).
+    if (bvh_stack_bound(bvh) > ORB_BVH_STACK_SIZE)
+        throw std::logic_error("BVH traversal would need " + std::to_string(bvh_stack_bound(bvh)) +
+                               " stack entries; the device has " + std::to_string(ORB_BVH_STACK_SIZE));
+    // A node's leaves get consecutive packets, in node order, so the spheres
+    // a node's visit may test next lie together.
     tables.bvh_nodes.reserve(bvh.nodes.size());
     std::size_t next_leaf_packet = outside_packets;
     for (const BvhNode& node : bvh.nodes) {
-        std::uint32_t first = node.first;
-        if (node.count > 0) {
-            first = static_cast<std::uint32_t>(next_leaf_packet++);
-            for (std::uint32_t lane = 0; lane < node.count; ++lane) place(bvh.order[node.first + lane], first * 4 + lane);
+        device::BvhNodeRecord record = empty_node_record();
+        for (std::uint32_t k = 0; k < node.child_count; ++k) {
+            const BvhChild& child = node.children[k];
+            for (int axis = 0; axis < 3; ++axis) {
+                lane_of(record.bounds[axis], k) = child.lo[axis];
+                lane_of(record.bounds[axis + 3], k) = child.hi[axis];
+            }
+            if (child.leaf()) {
+                const std::size_t packet = next_leaf_packet++;
+                for (std::uint32_t lane = 0; lane < child.count; ++lane)
+                    place(bvh.order[child.first + lane], packet * 4 + lane);
+                lane_of(record.child, k) = -1 - static_cast<int>(packet);
+            } else {
+                lane_of(record.child, k) = static_cast<int>(child.first);
+            }
         }
-        tables.bvh_nodes.push_back({uint_bits_in_w({node.lo[0], node.lo[1], node.lo[2]}, first),
-                                    uint_bits_in_w({node.hi[0], node.hi[1], node.hi[2]}, node.count)});
+        tables.bvh_nodes.push_back(record);
     }
 
     EnvironmentLayout environment = layout_environment(scene.environment);

@@ -3,6 +3,8 @@
 // the surface area heuristic; nodes of many spheres near the root build their
 // two subtrees on two threads. The tree is built as linked nodes per thread
 // and flattened at the end into depth-first order with adjacent children.
+// A split the SAH picks is kept only while the tree stays within
+// kBvhMaxDepth levels; past that budget nodes split at the median.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -106,10 +108,21 @@ Box sphere_box(const Sphere& s) {
     return b;
 }
 
-// Past this depth nodes split at the median, which halves them: with 10^7
-// spheres the tree stays under 40 + log2(10^7 / 4) < 62 levels, within the
-// device traversal stack of kBvhMaxDepth entries.
-constexpr int kMaxDepth = 40;
+// Levels (leaves included) of the tree that median splits build over n
+// prims: each split leaves at most ceil(n / 2) on either side.
+int median_levels(std::uint64_t n) {
+    int levels = 1;
+    for (; n > static_cast<std::uint64_t>(kBvhMaxLeafSize); n = (n + 1) / 2) ++levels;
+    return levels;
+}
+
+// The depth guarantee: a node at depth d (the root has 1) over n prims
+// satisfies d - 1 + median_levels(n) <= kBvhMaxDepth. The root does for any
+// count of prims a uint32 can index (median_levels(2^32) = 31), a median
+// split keeps it for both children, and an SAH split is taken only when it
+// keeps it too. So no leaf is deeper than kBvhMaxDepth, however the SAH
+// would have split (a chain of ever smaller clusters, say).
+static_assert(31 <= kBvhMaxDepth, "the root of any tree satisfies the depth guarantee");
 constexpr std::size_t kParallelMinimum = 4096;  // smaller subtrees are not worth a thread
 constexpr int kMaxBins = 64;
 
@@ -167,11 +180,11 @@ struct Builder {
         return index;
     }
 
-    // The SAH split of prims[begin, end): the index where the right part
-    // starts, or begin when no plane separates the centroids or the node is
-    // past kMaxDepth (the caller then splits at the median).
+    // The SAH split of prims[begin, end) of a node at `depth`: the index
+    // where the right part starts, or begin when no plane separates the
+    // centroids or the split would break the depth guarantee (the caller
+    // then splits at the median).
     std::uint32_t split(std::uint32_t begin, std::uint32_t end, const FloatBox& centroids, int depth) {
-        if (depth >= kMaxDepth) return begin;
         const int bins = std::clamp(settings.bins, 2, kMaxBins);
         double best_cost = std::numeric_limits<double>::infinity();
         int best_axis = -1, best_plane = 0;
@@ -219,6 +232,10 @@ struct Builder {
             }
         }
         if (best_axis < 0) return begin;
+        std::uint32_t left_count = 0;
+        for (int b = 0; b < best_plane; ++b) left_count += bin_count[best_axis][b];
+        const std::uint32_t larger = std::max(left_count, (end - begin) - left_count);
+        if (depth + median_levels(larger) > kBvhMaxDepth) return begin;  // the depth guarantee above
         const auto middle = std::partition(prims.begin() + begin, prims.begin() + end, [&](const Prim& p) {
             return bin_of(p.centre(best_axis), lo[best_axis], scale[best_axis], bins) < best_plane;
         });
@@ -244,11 +261,11 @@ struct Builder {
 
 struct Flattener {
     const std::vector<Prim>& prims;
-    SphereBvh& out;
+    BinaryBvh& out;
 
     void emit(const Builder& builder, std::int32_t index, std::size_t slot) {
         const BuildNode& node = builder.nodes[index];
-        BvhNode& flat = out.nodes[slot];
+        BinaryBvhNode& flat = out.nodes[slot];
         for (int a = 0; a < 3; ++a) {
             flat.lo[a] = node.box.lo[a];
             flat.hi[a] = node.box.hi[a];
@@ -297,8 +314,8 @@ std::vector<std::uint32_t> choose_outside(std::span<const Sphere> spheres, const
 
 }  // namespace
 
-SphereBvh build_sphere_bvh(std::span<const Sphere> spheres, const BvhSettings& settings) {
-    SphereBvh bvh;
+BinaryBvh build_binary_bvh(std::span<const Sphere> spheres, const BvhSettings& settings) {
+    BinaryBvh bvh;
     bvh.outside = choose_outside(spheres, settings);
 
     std::vector<char> is_outside(spheres.size(), 0);
@@ -320,7 +337,7 @@ SphereBvh build_sphere_bvh(std::span<const Sphere> spheres, const BvhSettings& s
 
     const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
     Builder root(prims, settings);
-    root.build(0, static_cast<std::uint32_t>(prims.size()), 0, threads - 1);
+    root.build(0, static_cast<std::uint32_t>(prims.size()), 1, threads - 1);
 
     bvh.nodes.reserve(2 * prims.size());
     bvh.order.reserve(prims.size());

@@ -4,9 +4,14 @@
 // material and many lights.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <limits>
 #include <random>
 
 #include "render_test_support.h"
+#include "scene_layout.h"
 
 using namespace orb;
 using namespace orb::render;
@@ -43,10 +48,9 @@ void expect_identical(const std::vector<float>& a, const std::vector<float>& b, 
     EXPECT_EQ(differing, 0u) << channel << ": " << differing << " of " << a.size() << " values differ";
 }
 
-}  // namespace
-
-TEST(BvhRender, SameImageWithAndWithoutTheTree) {
-    const Scene scene = cloud_scene(300, 5);
+// Every pass of the same seed's render, with the tree and without it.
+void expect_same_with_and_without_tree(const Scene& scene)
+{
     for (IntegratorMode mode : {IntegratorMode::Global, IntegratorMode::Direct}) {
         RenderConfig with = small_config(48, 36, 11, 6, mode), without = with;
         without.use_bvh = false;
@@ -59,6 +63,70 @@ TEST(BvhRender, SameImageWithAndWithoutTheTree) {
         expect_identical(a.depth, b.depth, "depth");
         expect_identical(a.object_id, b.object_id, "object id");  // scene indices, not table slots
     }
+}
+
+}  // namespace
+
+TEST(BvhRender, SameImageWithAndWithoutTheTree) {
+    const Scene scene = cloud_scene(300, 5);
+    // The tree has nodes with empty lanes (their inverted boxes must never be
+    // entered) and leaves of fewer than four spheres (padding lanes).
+    const SceneLayout layout = layout_scene(scene);
+    std::size_t empty_lanes = 0;
+    for (const device::BvhNodeRecord& node : layout.tables.bvh_nodes)
+        for (float lo_x : {node.bounds[0].x, node.bounds[0].y, node.bounds[0].z, node.bounds[0].w})
+            empty_lanes += lo_x == std::numeric_limits<float>::max();
+    EXPECT_GT(empty_lanes, 0u);
+    std::size_t padding_lanes = 0;
+    for (const device::SpherePacket& packet : layout.tables.packets)
+        for (float r2 : {packet.radius2.x, packet.radius2.y, packet.radius2.z, packet.radius2.w}) padding_lanes += r2 < 0.0f;
+    EXPECT_GT(padding_lanes, 0u);
+    expect_same_with_and_without_tree(scene);
+}
+
+// GPUs build the kernels with one-sphere-at-a-time intersection
+// (ORB_INTERSECT_SCALAR); its traversal must find the same spheres too. Run
+// here on PoCL through the development knob ORB_CL_OPTIONS.
+TEST(BvhRender, SameImageWithAndWithoutTheTreeInTheGpuVariant) {
+    const Scene scene = cloud_scene(300, 5);
+    ::setenv("ORB_CL_OPTIONS", "-DORB_INTERSECT_SCALAR=1", 1);
+    try {
+        expect_same_with_and_without_tree(scene);
+    } catch (...) {
+        ::unsetenv("ORB_CL_OPTIONS");
+        throw;
+    }
+    ::unsetenv("ORB_CL_OPTIONS");
+}
+
+// What the kernels print while rendering `scene` with `options` added to
+// their build options (the development knob ORB_CL_OPTIONS).
+std::string kernel_output(const Scene& scene, const char* options)
+{
+    ::setenv("ORB_CL_OPTIONS", options, 1);
+    testing::internal::CaptureStdout();
+    try {
+        test::render(scene, small_config(48, 36, 11, 6), {4});
+    } catch (...) {
+        testing::internal::GetCapturedStdout();
+        ::unsetenv("ORB_CL_OPTIONS");
+        throw;
+    }
+    std::fflush(stdout);
+    ::unsetenv("ORB_CL_OPTIONS");
+    return testing::internal::GetCapturedStdout();
+}
+
+// With the traversal's bounds checks on (-DORB_BVH_CHECK=1), no node, packet
+// or stack index leaves its table, in the CPU variant and in the GPU variant
+// reading the scene from __global memory as GPUs do for large scenes. With
+// the checked stack limit lowered to 2, the checks do report.
+TEST(BvhRender, TraversalIndicesStayInBoundsInBothVariants) {
+    const Scene scene = cloud_scene(300, 5);
+    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1"), "");
+    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_SCENE_SPACE=__global"), "");
+    EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2").find("orb BVH check: stack top"),
+              std::string::npos);
 }
 
 TEST(BvhRender, TheIdPassNamesSceneSpheresInBvhOrder) {

@@ -10,10 +10,11 @@
  * host includes below, comes before it in the program).
  *
  * Rules that keep the host's and the device's layouts identical:
- *  - Fields are int, uint, float (4 bytes, 4-aligned on both sides) or float4
- *    (16 bytes, 16-aligned on both sides). No float3 (16 bytes in OpenCL C but
- *    12 in a naive host struct), no bool, size_t, pointers or 64-bit integers
- *    (4-aligned on some 32-bit hosts, 8 on the device).
+ *  - Fields are int, uint, float (4 bytes, 4-aligned on both sides), float4
+ *    or int4 (16 bytes, 16-aligned on both sides), or arrays of them. No
+ *    float3 (16 bytes in OpenCL C but 12 in a naive host struct), no bool,
+ *    size_t, pointers or 64-bit integers (4-aligned on some 32-bit hosts, 8
+ *    on the device).
  *  - Padding is written out as named fields, so there is none implicit, and
  *    a struct holding a float4 is a multiple of 16 bytes (so arrays of it
  *    stay aligned on both sides).
@@ -48,8 +49,12 @@ using uint = std::uint32_t;
 struct alignas(16) float4 {
     float x, y, z, w;
 };
+struct alignas(16) int4 {
+    int x, y, z, w;
+};
 static_assert(sizeof(int) == 4 && sizeof(float) == 4, "OpenCL C's int and float are 4 bytes");
 static_assert(sizeof(float4) == 16 && alignof(float4) == 16, "OpenCL C's float4 is 16 bytes, 16-aligned");
+static_assert(sizeof(int4) == 16 && alignof(int4) == 16, "OpenCL C's int4 is 16 bytes, 16-aligned");
 
 /* C++: a scoped enum, MaterialKind::Diffuse, stored as the device's int. */
 #define ORB_ENUM(name) enum class name : int
@@ -107,16 +112,27 @@ typedef struct SphereRecord {
     int pad0;
 } SphereRecord;
 
-/* A node of the sphere BVH (librender/src/sphere_bvh.h): its box, and in the
- * w components the bits of two uints (as_uint on the device):
- *   lo_first.w: interior: index of the left child (the right one follows it);
- *               leaf: the packet holding its spheres
- *   hi_count.w: 0 for an interior node; a leaf's sphere count, 1..4
- * Two 16-byte loads per node. */
+/* A node of the 4-wide sphere BVH (librender/src/sphere_bvh.h): the boxes of
+ * its up to four children in structure-of-arrays form, lane k of each
+ * float4 being child k (CPUs test all four boxes with one vector instruction
+ * per float4), and what each child is:
+ *   child[k] >= 0: an interior node, index into the nodes table
+ *   child[k] <  0: a leaf, one packet of up to four spheres: packet -1 - child[k]
+ * bounds[] are the boxes' planes: lo_x, lo_y, lo_z, hi_x, hi_y, hi_z, so that
+ * a ray picks the plane it enters by per axis as bounds[axis] or
+ * bounds[axis + 3] (intersect.cl). A lane without a child holds the inverted
+ * box lo = FLT_MAX, hi = -FLT_MAX, which every ray leaves before it enters.
+ * 128 bytes: two 64-byte cache lines, eight 16-byte loads. */
 typedef struct BvhNodeRecord {
-    float4 lo_first;
-    float4 hi_count;
+    float4 bounds[6];
+    int4 child;
+    int4 pad0;
 } BvhNodeRecord;
+
+/* The traversal stack's entries (kernels/intersect.cl). The build keeps
+ * every tree within it: sphere_bvh.h says how, and the host checks each tree
+ * against it before upload. */
+#define ORB_BVH_STACK_SIZE 48
 
 typedef struct MaterialRecord {
     float4 color;    /* xyz: reflectance, base colour or tint in [0, 1]; w: 0 */
@@ -254,8 +270,8 @@ typedef struct RenderPassParams {
     SIZE(SphereRecord, 32)                                                                                 \
     FIELD(SphereRecord, centre_radius, 0) FIELD(SphereRecord, material, 16)                                \
     FIELD(SphereRecord, scene_index, 20) FIELD(SphereRecord, light_probability, 24)                        \
-    SIZE(BvhNodeRecord, 32)                                                                                \
-    FIELD(BvhNodeRecord, lo_first, 0) FIELD(BvhNodeRecord, hi_count, 16)                                   \
+    SIZE(BvhNodeRecord, 128)                                                                               \
+    FIELD(BvhNodeRecord, bounds, 0) FIELD(BvhNodeRecord, child, 96)                                        \
     SIZE(MaterialRecord, 48)                                                                               \
     FIELD(MaterialRecord, color, 0) FIELD(MaterialRecord, emission, 16) FIELD(MaterialRecord, ior, 32)     \
     FIELD(MaterialRecord, kind, 36) FIELD(MaterialRecord, roughness, 40) FIELD(MaterialRecord, metallic, 44) \
