@@ -18,8 +18,9 @@
 // density, proportional to each texel's radiance times its solid angle and
 // uniform in solid angle inside it, follows the radiance exactly.
 
-// The host builds a program without the environment's code for a scene
-// without one (-DORB_ENVIRONMENT=0; built when absent).
+// -DORB_ENVIRONMENT=0 leaves the environment's code out (built when absent).
+// The host does not: on NVIDIA's driver programs without it faulted now and
+// then with a tree and the Sobol sampler (docs/performance.md).
 #ifndef ORB_ENVIRONMENT
 #define ORB_ENVIRONMENT 1
 #endif

@@ -7,14 +7,16 @@
 namespace orb::render {
 namespace {
 
-// NVIDIA's compiler gives render_pass about 109 registers, which limits how
-// many warps an SM keeps in flight. Capping them at 80 (no spills) measured
-// 4.47 -> 4.73 G samples/s at 640x480 and 4.79 -> 5.21 G at 1920x1080 on an
-// H100 (docs/performance.md); 64 and below lose again.
-std::string nvidia_register_cap(const cl::Device& device)
+// NVIDIA's compiler gives render_pass more registers than let an SM keep
+// enough warps in flight. Capped at 80, tree-less scenes measured best (the
+// Cornell box: 64 is 2% slower); with a tree the traversal's memory waits
+// want more warps still, and 64 measured 8-9% faster at 100 k and 1 M
+// spheres (docs/performance.md, H200, 2026-11-23).
+std::string nvidia_register_cap(const cl::Device& device, bool has_tree)
 {
     const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
-    return extensions.find("cl_nv_compiler_options") != std::string::npos ? " -cl-nv-maxrregcount=80" : "";
+    if (extensions.find("cl_nv_compiler_options") == std::string::npos) return "";
+    return has_tree ? " -cl-nv-maxrregcount=64" : " -cl-nv-maxrregcount=80";
 }
 
 // Pass lengths aimed at: short on GPUs so no display watchdog fires and
@@ -82,14 +84,16 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           // A scene without a tree gets a program without traversal code.
                           (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
                           (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
-                          // Only the code the scene uses: each material kind's, rough
-                          // glass's and the environment's cost registers on GPUs whether
-                          // a scene uses them or not (docs/performance.md).
+                          // Only the code the scene uses: each material kind's and rough
+                          // glass's cost registers on GPUs whether a scene uses them or
+                          // not (docs/performance.md). The environment's code stays in
+                          // every program: NVIDIA's driver (580) faulted (-36) in about
+                          // half the Sobol renders of scenes with a tree without it,
+                          // never in 34 with it; the cause is not known.
                           " -DORB_MATERIAL_KINDS=" + std::to_string(scene.material_kinds) +
                           " -DORB_ROUGH_DIELECTRIC=" + (scene.rough_dielectric ? "1" : "0") +
-                          " -DORB_ENVIRONMENT=" + (scene.environment.width > 0 ? "1" : "0") +
                           (config_.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
-                          nvidia_register_cap(device);
+                          nvidia_register_cap(device, scene.counts.bvh_node_count > 0);
     if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
     return options;
 }

@@ -1,5 +1,5 @@
-// A scene's program carries only the code the scene needs (material kinds,
-// rough glass, the environment: build options from layout_scene). Leaving
+// A scene's program carries only the code the scene needs (material kinds
+// and rough glass: build options from layout_scene). Leaving
 // code out must change nothing but speed: the specialised program renders
 // the image the program with every kind renders.
 #include <gtest/gtest.h>
