@@ -204,6 +204,25 @@ TEST_F(TonemapCli, MeaninglessExposureOrBitsAreUsageErrors) {
         EXPECT_EQ(entry.path().filename().string(), "scene.exr");
 }
 
+// --bits that the output's format cannot hold is a command-line mistake:
+// exit 2 before any work, no file.
+TEST_F(TonemapCli, BitsTheFormatCannotHoldAreUsageErrors) {
+    struct Case {
+        std::string output, bits, message;
+    };
+    const std::vector<Case> cases = {
+        {"out.jpg", "16", "JPEG holds only 8 bits per channel"},
+        {"out.png", "32", "PNG holds 8 or 16 bits per channel"},
+        {"out.exr", "8", "EXR holds 16-bit half or 32-bit float, not 8 bits"},
+    };
+    for (const Case& c : cases) {
+        const auto r = run(kTonemap + " " + quote(input) + " --bits " + c.bits + " -o " + quote(dir.path(c.output)));
+        EXPECT_EQ(r.exit_code, 2) << c.output << "\n" << r.err;
+        EXPECT_EQ(r.err, "orb-tonemap: error: " + c.message + "\n");
+        EXPECT_FALSE(fs::exists(dir.path(c.output)));
+    }
+}
+
 TEST_F(TonemapCli, ListHonoursOcioAndConfigOverrides) {
     auto r = run(kTonemap + " --list");
     ASSERT_EQ(r.exit_code, 0) << r.err;

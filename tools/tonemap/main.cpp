@@ -177,6 +177,20 @@ int main(int argc, char** argv) {
             if (s.output == "-" && s.format.empty()) throw UsageError("-o - (stdout) needs --format, e.g. --format png");
             if (s.contact_sheet && s.pass != "beauty") throw UsageError("--contact-sheet shows every pass; drop --pass");
             const std::vector<Job> jobs = plan_jobs(s);
+            // A format and --bits that cannot go together (--bits 16 for a
+            // JPEG) are a mistake on the command line, found before any work.
+            for (const Job& job : jobs) {
+                WriteOptions options;
+                options.format = s.format.empty() ? extension_of(job.output) : s.format;
+                options.bits = s.bits;
+                if (options.format.empty()) continue;  // reported with the job
+                try {
+                    checked_write_options(options);
+                } catch (const orb::InputError& e) {
+                    throw UsageError(e.what());
+                }
+                if (!s.format.empty()) break;  // one format for every job
+            }
             refuse_overlaps(jobs, s);
             const ColorConfig config = load_color_config(s.color);
             // Sequences: a bad frame is reported and the rest still get done.
