@@ -67,7 +67,12 @@ std::uint64_t SampleRanges::end() const { return ranges_.empty() ? 0 : ranges_.b
 
 std::string SampleRanges::format() const {
     std::string text;
-    for (SampleRange r : ranges_) text += (text.empty() ? "" : ",") + spell(r);
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about
+    // const char* + std::string&& here.
+    for (SampleRange r : ranges_) {
+        if (!text.empty()) text += ',';
+        text += spell(r);
+    }
     return text;
 }
 

@@ -15,7 +15,7 @@ namespace orb::render::test {
 std::uint32_t add_material(Scene& scene, MaterialType type, Vec3 color, Vec3 emission, double ior)
 {
     Material m;
-    m.name = "m" + std::to_string(scene.materials.size());
+    m.name = std::string("m").append(std::to_string(scene.materials.size()));  // not "m" + ...: GCC 12's false -Wrestrict
     m.type = type;
     m.color = color;
     m.emission = emission;
@@ -27,7 +27,7 @@ std::uint32_t add_material(Scene& scene, MaterialType type, Vec3 color, Vec3 emi
 int add_sphere(Scene& scene, Vec3 centre, double radius, std::uint32_t material)
 {
     Sphere s;
-    s.name = "s" + std::to_string(scene.spheres.size());
+    s.name = std::string("s").append(std::to_string(scene.spheres.size()));
     s.center = centre;
     s.radius = radius;
     s.material = material;
