@@ -8,13 +8,7 @@ set -uo pipefail
 bundle=$(cd "$1" && pwd)
 out=$2
 mkdir -p "$out"
-export LD_LIBRARY_PATH=$bundle:${LD_LIBRARY_PATH:-}
-if [[ -e /usr/local/nvidia/lib64/libnvidia-opencl.so.1 ]]; then
-  mkdir -p /tmp/icd
-  echo /usr/local/nvidia/lib64/libnvidia-opencl.so.1 > /tmp/icd/nvidia.icd
-  cp /etc/OpenCL/vendors/pocl.icd /tmp/icd/ 2>/dev/null
-  export OCL_ICD_VENDORS=/tmp/icd
-fi
+source "$(dirname "$0")/gpu-node-env.sh" "$bundle"
 render=$bundle/orb-render
 scenes=$(dirname "$0")/../scenes
 run() { echo "\$ orb-render $*"; "$render" "$@"; echo "(exit $?)"; }

@@ -8,13 +8,7 @@ out=$2
 seconds=${3:-3}
 mkdir -p "$out"
 root=$(cd "$(dirname "$0")/.." && pwd)
-export LD_LIBRARY_PATH=$bundle:${LD_LIBRARY_PATH:-}
-if [[ -e /usr/local/nvidia/lib64/libnvidia-opencl.so.1 ]]; then
-  mkdir -p /tmp/icd
-  echo /usr/local/nvidia/lib64/libnvidia-opencl.so.1 > /tmp/icd/nvidia.icd
-  cp /etc/OpenCL/vendors/pocl.icd /tmp/icd/ 2>/dev/null
-  export OCL_ICD_VENDORS=/tmp/icd
-fi
+source "$(dirname "$0")/gpu-node-env.sh" "$bundle"
 render=$bundle/orb-render
 nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv 2>/dev/null
 for preset in 10 1k 100k 1m 10m; do

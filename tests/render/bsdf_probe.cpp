@@ -9,6 +9,7 @@
 
 #include "orb/render/device.h"
 #include "program_source.h"
+#include "opencl_devices.h"
 
 namespace orb::render::test {
 namespace {
@@ -69,19 +70,7 @@ struct BsdfProbe::Impl {
 BsdfProbe::BsdfProbe() : impl_(std::make_unique<Impl>())
 {
     const DeviceInfo info = choose_device("");
-    std::vector<cl::Platform> platforms;
-    cl::Platform::get(&platforms);
-    std::vector<cl::Device> devices;
-    for (const cl::Platform& platform : platforms) {
-        std::vector<cl::Device> found;
-        try {
-            platform.getDevices(CL_DEVICE_TYPE_ALL, &found);
-        } catch (const cl::Error&) {
-            continue;  // a platform without devices
-        }
-        devices.insert(devices.end(), found.begin(), found.end());
-    }
-    impl_->device = devices.at(static_cast<std::size_t>(info.index));
+    impl_->device = opencl_device(info.index);
     impl_->context = cl::Context(impl_->device);
     impl_->queue = cl::CommandQueue(impl_->context, impl_->device);
     impl_->program = cl::Program(impl_->context, program_source("") + kProbeKernels);

@@ -13,6 +13,7 @@
 #include "orb/kernels/device_types.h"
 #include "orb/kernels/embedded.h"
 #include "orb/render/device.h"
+#include "opencl_devices.h"
 
 namespace orb::render::test {
 namespace {
@@ -53,20 +54,7 @@ std::string probe_kernel_source()
 TEST(DeviceLayout, TheDeviceCompilerAgreesWithTheHostOnEverySizeAndOffset)
 {
     const DeviceInfo info = choose_device("");
-    std::vector<cl::Platform> platforms;
-    cl::Platform::get(&platforms);
-    std::vector<cl::Device> devices;
-    for (const cl::Platform& platform : platforms) {
-        std::vector<cl::Device> found;
-        try {
-            platform.getDevices(CL_DEVICE_TYPE_ALL, &found);
-        } catch (const cl::Error&) {
-            continue;  // CL_DEVICE_NOT_FOUND: list_devices() skips such platforms too
-        }
-        devices.insert(devices.end(), found.begin(), found.end());
-    }
-    ASSERT_LT(static_cast<std::size_t>(info.index), devices.size());
-    const cl::Device device = devices[static_cast<std::size_t>(info.index)];
+    const cl::Device device = opencl_device(info.index);
     const cl::Context context(device);
     cl::CommandQueue queue(context, device);
     cl::Program program(context, probe_kernel_source());

@@ -18,6 +18,7 @@
 #include "environment_layout.h"
 #include "orb/render/device.h"
 #include "program_source.h"
+#include "opencl_devices.h"
 
 namespace orb::render::test {
 namespace {
@@ -61,20 +62,8 @@ struct Probe {
 
 Probe build_probe() {
     const DeviceInfo info = choose_device("");
-    std::vector<cl::Platform> platforms;
-    cl::Platform::get(&platforms);
-    std::vector<cl::Device> devices;
-    for (const cl::Platform& platform : platforms) {
-        std::vector<cl::Device> found;
-        try {
-            platform.getDevices(CL_DEVICE_TYPE_ALL, &found);
-        } catch (const cl::Error&) {
-            continue;
-        }
-        devices.insert(devices.end(), found.begin(), found.end());
-    }
     Probe p;
-    p.device = devices.at(static_cast<std::size_t>(info.index));
+    p.device = opencl_device(info.index);
     p.context = cl::Context(p.device);
     p.queue = cl::CommandQueue(p.context, p.device);
     p.program = cl::Program(p.context, program_source("") + kProbes);

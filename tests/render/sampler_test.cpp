@@ -15,6 +15,7 @@
 
 #include "orb/kernels/embedded.h"
 #include "orb/render/device.h"
+#include "opencl_devices.h"
 
 namespace orb::render::test {
 namespace {
@@ -28,19 +29,7 @@ public:
     explicit SamplerProbe(bool sobol)
     {
         const DeviceInfo info = choose_device("");
-        std::vector<cl::Platform> platforms;
-        cl::Platform::get(&platforms);
-        std::vector<cl::Device> devices;
-        for (const cl::Platform& platform : platforms) {
-            std::vector<cl::Device> found;
-            try {
-                platform.getDevices(CL_DEVICE_TYPE_ALL, &found);
-            } catch (const cl::Error&) {
-                continue;
-            }
-            devices.insert(devices.end(), found.begin(), found.end());
-        }
-        device_ = devices.at(static_cast<std::size_t>(info.index));
+        device_ = opencl_device(info.index);
         context_ = cl::Context(device_);
         queue_ = cl::CommandQueue(context_, device_);
         std::string source;

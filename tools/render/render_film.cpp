@@ -92,14 +92,8 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     outcome.image = writer.image(final_state.elapsed_seconds, std::move(reuse));
     outcome.rendered = true;
 
+    outcome.stats = renderer_stats(renderer);
     RunStats& stats = outcome.stats;
-    stats.device = renderer.device();
-    for (std::size_t d = 0; d < renderer.devices().size(); ++d)
-        stats.devices.push_back({renderer.devices()[d], renderer.device_sample_ranges()[d].total()});
-    stats.width = plan.config.width;
-    stats.height = plan.config.height;
-    stats.device_memory_bytes = renderer.device_memory_bytes();
-    stats.spp = renderer.samples_per_pixel();
     stats.spp_this_run = stats.spp - start_spp;
     stats.passes = final_state.pass;
     stats.seconds = final_state.elapsed_seconds;

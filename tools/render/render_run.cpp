@@ -55,14 +55,7 @@ int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOu
               std::to_string(plan.config.height));
 
     if (outputs.stats) {
-        RunStats stats;
-        stats.device = renderer.device();
-        for (std::size_t d = 0; d < renderer.devices().size(); ++d)
-            stats.devices.push_back({renderer.devices()[d], renderer.device_sample_ranges()[d].total()});
-        stats.width = plan.config.width;
-        stats.height = plan.config.height;
-        stats.device_memory_bytes = renderer.device_memory_bytes();
-        stats.spp = renderer.samples_per_pixel();
+        RunStats stats = renderer_stats(renderer);
         stats.spp_this_run = stats.spp;
         stats.passes = result.passes;
         stats.seconds = result.seconds;

@@ -41,6 +41,18 @@ nlohmann::ordered_json to_json(const RunStats& s) {
 
 }  // namespace
 
+RunStats renderer_stats(const render::Renderer& renderer) {
+    RunStats stats;
+    stats.device = renderer.device();
+    for (std::size_t d = 0; d < renderer.devices().size(); ++d)
+        stats.devices.push_back({renderer.devices()[d], renderer.device_sample_ranges()[d].total()});
+    stats.width = renderer.config().width;
+    stats.height = renderer.config().height;
+    stats.device_memory_bytes = renderer.device_memory_bytes();
+    stats.spp = renderer.samples_per_pixel();
+    return stats;
+}
+
 std::string stats_json(const RunStats& s) { return to_json(s).dump(2) + "\n"; }
 
 std::string frames_stats_json(const std::vector<RunStats>& frames, const std::vector<long>& skipped) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "orb/render/device.h"
+#include "orb/render/renderer.h"
 
 namespace orb::render_cli {
 
@@ -31,6 +32,10 @@ struct RunStats {
     std::string sample_ranges;       // the sample indices in the image, "0:64"; "" for --benchmark
     std::optional<long> frame;       // --frame/--frames: the frame number
 };
+
+// What the renderer itself tells: its devices and their shares, the image
+// size, device memory and spp; the caller adds the run's own figures.
+RunStats renderer_stats(const render::Renderer& renderer);
 
 std::string stats_json(const RunStats& stats);
 

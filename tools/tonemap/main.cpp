@@ -1,6 +1,7 @@
 // orb-tonemap: scene-linear renders -> display images through OpenColorIO.
 #include <filesystem>
 #include <iostream>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -95,12 +96,32 @@ bool is_complete_output(const std::string& path) {
     }
 }
 
-void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
+// The command line's write options for one output (format unchecked).
+WriteOptions write_options_for(const Job& job, const Settings& s) {
     WriteOptions options;
     options.format = s.format.empty() ? extension_of(job.output) : s.format;
     options.bits = s.bits;
     options.dither = !s.no_dither;
-    options = checked_write_options(options);
+    return options;
+}
+
+// A format and --bits that cannot go together (--bits 16 for a JPEG) are a
+// mistake on the command line, found before any work: each format once.
+void check_formats(const std::vector<Job>& jobs, const Settings& s) {
+    std::set<std::string> checked;
+    for (const Job& job : jobs) {
+        const WriteOptions options = write_options_for(job, s);
+        if (options.format.empty() || !checked.insert(options.format).second) continue;  // empty: reported with the job
+        try {
+            checked_write_options(options);
+        } catch (const orb::InputError& e) {
+            throw UsageError(e.what());
+        }
+    }
+}
+
+void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
+    WriteOptions options = checked_write_options(write_options_for(job, s));
     options.premultiply_alpha = options.format == "exr" || options.format == "tif";
     orb::cli::OutputFile output(job.output, "-o");  // fails now, before the work, if it cannot be written
 
@@ -177,20 +198,7 @@ int main(int argc, char** argv) {
             if (s.output == "-" && s.format.empty()) throw UsageError("-o - (stdout) needs --format, e.g. --format png");
             if (s.contact_sheet && s.pass != "beauty") throw UsageError("--contact-sheet shows every pass; drop --pass");
             const std::vector<Job> jobs = plan_jobs(s);
-            // A format and --bits that cannot go together (--bits 16 for a
-            // JPEG) are a mistake on the command line, found before any work.
-            for (const Job& job : jobs) {
-                WriteOptions options;
-                options.format = s.format.empty() ? extension_of(job.output) : s.format;
-                options.bits = s.bits;
-                if (options.format.empty()) continue;  // reported with the job
-                try {
-                    checked_write_options(options);
-                } catch (const orb::InputError& e) {
-                    throw UsageError(e.what());
-                }
-                if (!s.format.empty()) break;  // one format for every job
-            }
+            check_formats(jobs, s);
             refuse_overlaps(jobs, s);
             const ColorConfig config = load_color_config(s.color);
             // Sequences: a bad frame is reported and the rest still get done.
