@@ -21,6 +21,7 @@
 #include "test_film.h"
 
 using namespace orb::exr;
+using orb::exr::testing::message_of;
 using orb::exr::testing::scratch_path;
 using orb::exr::testing::synthetic_film;
 using orb::exr::testing::synthetic_metadata;
@@ -39,15 +40,6 @@ void expect_sums_near(const std::vector<float>& expected, const std::vector<floa
     for (std::size_t i = 0; i < expected.size(); ++i)
         ASSERT_TRUE(within_float_rounding(expected[i], actual[i])) << what << "[" << i << "]: " << expected[i]
                                                                    << " vs " << actual[i];
-}
-
-std::string message_of(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const orb::InputError& e) {
-        return e.what();
-    }
-    return "(no orb::InputError thrown)";
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "test_film.h"
 
 using namespace orb::exr;
+using orb::exr::testing::message_of;
 using orb::exr::testing::scratch_path;
 using orb::exr::testing::synthetic_film;
 using orb::exr::testing::synthetic_metadata;
@@ -53,15 +54,6 @@ orb::render::Film film_of(const char* ranges) {
     orb::render::Film film = synthetic_film(4, 3, parsed.total());
     film.sample_ranges = parsed;
     return film;
-}
-
-std::string message_of(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const orb::InputError& e) {
-        return e.what();
-    }
-    return "(no orb::InputError thrown)";
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "test_film.h"
 
+#include "orb/scene/error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,6 +72,15 @@ bool within_float_rounding(double a, double b, double ulps) {
     if (std::isinf(a) || std::isinf(b)) return a == b;
     const double scale = std::max({std::fabs(a), std::fabs(b), 1e-30});
     return std::fabs(a - b) <= ulps * std::numeric_limits<float>::epsilon() * scale;
+}
+
+std::string message_of(const std::function<void()>& action) {
+    try {
+        action();
+    } catch (const orb::InputError& e) {
+        return e.what();
+    }
+    return "(no orb::InputError thrown)";
 }
 
 }  // namespace orb::exr::testing

@@ -1,6 +1,7 @@
 // Synthetic films with known sums for the EXR tests, and scratch paths.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "orb/exr/film_exr.h"
@@ -17,6 +18,9 @@ ExrMetadata synthetic_metadata();
 
 // A fresh path inside a per-test scratch folder.
 std::string scratch_path(const std::string& name);
+
+// The message of the orb::InputError `action` throws, or a note that it threw none.
+std::string message_of(const std::function<void()>& action);
 
 // |a - b| within a few float roundings of the larger magnitude.
 bool within_float_rounding(double a, double b, double ulps = 4);

@@ -120,4 +120,26 @@ void expect_same_within_float_rounding(const exr::testing::RawExr& a, const exr:
     }
 }
 
+void expect_sums_within(const exr::ExrFilm& a, const exr::ExrFilm& b, double relative_bound) {
+    const double n = static_cast<double>(a.film.samples_per_pixel);
+    for (const orb::film::ChannelInfo& info : orb::film::kChannels) {
+        const auto& x = a.film.channel(info.channel);
+        const auto& y = b.film.channel(info.channel);
+        ASSERT_EQ(x.size(), y.size()) << info.name;
+        if (info.merge == orb::film::MergeRule::Same) {
+            EXPECT_EQ(x, y) << info.name;  // the pixel-centre ray: no sum at all
+            continue;
+        }
+        int reported = 0;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            const double magnitude = info.stored_as == orb::film::StoredAs::UnitVector
+                                         ? n
+                                         : std::max(std::fabs(double(x[i])), std::fabs(double(y[i])));
+            if (std::fabs(double(x[i]) - y[i]) > relative_bound * magnitude && reported++ < 5)
+                ADD_FAILURE() << info.name << "[" << i << "]: " << x[i] << " vs " << y[i] << " (bound "
+                              << relative_bound * magnitude << ")";
+        }
+    }
+}
+
 }  // namespace orb::test

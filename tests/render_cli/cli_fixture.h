@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "exr_channels.h"
+#include "orb/exr/film_exr.h"
 #include "orb/scene/scene.h"
 #include "process.h"
 
@@ -48,5 +49,12 @@ std::string render_exe();
 // relative difference allowed covers the sums' different addition order
 // (resume, pass splits) and the mean*n recovery, a few dozen float ulps.
 void expect_same_within_float_rounding(const exr::testing::RawExr& a, const exr::testing::RawExr& b);
+
+// Every channel of two films of the same samples, summed in different
+// groupings: equal for the pixel-centre channels (no sums), else within
+// `relative_bound` of the sum of magnitudes per value (the value itself for
+// the non-negative channels, n samples for normals, |component| <= 1).
+// Each test derives its bound from how its films were summed.
+void expect_sums_within(const exr::ExrFilm& a, const exr::ExrFilm& b, double relative_bound);
 
 }  // namespace orb::test

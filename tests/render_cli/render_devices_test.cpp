@@ -26,24 +26,8 @@ ProcessResult render_on_two(const std::vector<std::string>& args) {
 // (2 N + 8) u of the sum of magnitudes (u = 2^-24; see render_slices_test.cpp).
 void expect_same_samples(const orb::exr::ExrFilm& a, const orb::exr::ExrFilm& b) {
     ASSERT_EQ(a.film.sample_ranges, b.film.sample_ranges);
-    const std::uint64_t n = a.film.samples_per_pixel;
-    const double bound = (2.0 * static_cast<double>(n) + 8.0) * std::ldexp(1.0, -24);
-    for (const orb::film::ChannelInfo& info : orb::film::kChannels) {
-        const auto& x = a.film.channel(info.channel);
-        const auto& y = b.film.channel(info.channel);
-        if (info.merge == orb::film::MergeRule::Same) {
-            EXPECT_EQ(x, y) << info.name;
-            continue;
-        }
-        int reported = 0;
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            const double magnitude = info.stored_as == orb::film::StoredAs::UnitVector
-                                         ? static_cast<double>(n)
-                                         : std::max(std::fabs(double(x[i])), std::fabs(double(y[i])));
-            if (std::fabs(double(x[i]) - y[i]) > bound * magnitude && reported++ < 5)
-                ADD_FAILURE() << info.name << "[" << i << "]: " << x[i] << " vs " << y[i];
-        }
-    }
+    const double n = static_cast<double>(a.film.samples_per_pixel);
+    expect_sums_within(a, b, (2.0 * n + 8.0) * std::ldexp(1.0, -24));
 }
 
 }  // namespace

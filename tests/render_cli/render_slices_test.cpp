@@ -31,26 +31,7 @@ void expect_same_render(const std::string& path_a, const std::string& path_b, in
     ASSERT_EQ(a.film.samples_per_pixel, b.film.samples_per_pixel);
     ASSERT_EQ(a.film.sample_ranges, b.film.sample_ranges);
     ASSERT_EQ(a.passes, b.passes);
-    const std::uint64_t n = a.film.samples_per_pixel;
-    const double bound = rounding_bound(n, files);
-    for (const orb::film::ChannelInfo& info : orb::film::kChannels) {
-        const auto& x = a.film.channel(info.channel);
-        const auto& y = b.film.channel(info.channel);
-        ASSERT_EQ(x.size(), y.size()) << info.name;
-        if (info.merge == orb::film::MergeRule::Same) {
-            EXPECT_EQ(x, y) << info.name;  // the pixel-centre ray: no sum at all
-            continue;
-        }
-        int reported = 0;
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            const double magnitude = info.stored_as == orb::film::StoredAs::UnitVector
-                                         ? static_cast<double>(n)
-                                         : std::max(std::fabs(double(x[i])), std::fabs(double(y[i])));
-            if (std::fabs(double(x[i]) - y[i]) > bound * magnitude && reported++ < 5)
-                ADD_FAILURE() << info.name << "[" << i << "]: " << x[i] << " vs " << y[i] << " (bound "
-                              << bound * magnitude << ")";
-        }
-    }
+    expect_sums_within(a, b, rounding_bound(a.film.samples_per_pixel, files));
 }
 
 }  // namespace
