@@ -19,7 +19,8 @@
 //       for the lobes with a density (delta lobes contribute nothing), and in
 //       pdf the solid-angle density with which NAME_sample returns wi.
 //   NAME_has_density(b): false when every lobe is a delta (mirror, smooth
-//       glass): next-event estimation is then pointless and is skipped.
+//       glass): next-event estimation is then pointless and is skipped, and
+//       NAME_sample must not use u, v (the integrator does not draw them).
 //   NAME_albedo(b, wo, n): the reflectance the albedo pass records.
 
 // A material's scattering parameters, unpacked from its MaterialRecord.

@@ -41,13 +41,16 @@ inline void film_sums_clear(FilmSums* sums) { ORB_FILM_CHANNELS(ORB_FILM_ZERO) }
 
 // Inside render_pass, whose arguments film_<name> are the buffers: adds the
 // FilmSums `sums` to pixel `pixel`, or stores the FilmCentre `centre` there
-// (local variables of those names), one statement per channel.
-#define ORB_FILM_ADD_IF_Sum(name, components) film_add##components(film_##name, pixel, sums.name);
+// (local variables of those names), one statement per channel the program
+// builds (ORB_FILM_BUILT); what a channel left out would add is dead code.
+#define ORB_FILM_ADD_IF_Sum(name, components) \
+    if (ORB_FILM_BUILT(name)) film_add##components(film_##name, pixel, sums.name);
 #define ORB_FILM_ADD_IF_CentreRay(name, components)
 #define ORB_FILM_ADD(name, components, clear, accumulate, merge, layer, stored_as, paired, names) ORB_FILM_ADD_IF_##accumulate(name, components)
 #define ORB_FILM_ADD_SUMS ORB_FILM_CHANNELS(ORB_FILM_ADD)
 
 #define ORB_FILM_SET_IF_Sum(name, components)
-#define ORB_FILM_SET_IF_CentreRay(name, components) film_set##components(film_##name, pixel, centre.name);
+#define ORB_FILM_SET_IF_CentreRay(name, components) \
+    if (ORB_FILM_BUILT(name)) film_set##components(film_##name, pixel, centre.name);
 #define ORB_FILM_SET(name, components, clear, accumulate, merge, layer, stored_as, paired, names) ORB_FILM_SET_IF_##accumulate(name, components)
 #define ORB_FILM_SET_CENTRE ORB_FILM_CHANNELS(ORB_FILM_SET)

@@ -83,13 +83,16 @@ inline void begin_path(PathState* path, PathSample* out, float3 o, float3 d)
     out->alpha = 0.0f;
 }
 
-// Starts sample `sample` of pixel (x, y) at the camera (RNG block 0).
-inline void begin_camera_path(const CameraParams* cam, int x, int y, int width, int height, uint pixel, ulong sample,
-                              uint2 seed, PathState* path, PathSample* out)
+// Starts the camera path of sample `coords` of pixel (x, y) (RNG block 0:
+// pair 0 jitters the pixel, pair 1, drawn only for a thin lens, the lens).
+inline void begin_camera_path(const CameraParams* cam, int x, int y, int width, int height,
+                              const SampleCoords* coords, PathState* path, PathSample* out)
 {
-    const Rand5 c = rng_block(pixel, sample, 0u, seed);
+    const RandBlock r = rand_block(coords, 0u);
+    const float2 jitter = rand_pair(&r, 0u);
+    const float2 lens = cam->lens_radius > 0.0f ? rand_pair(&r, 1u) : (float2)(0.5f);
     float3 o, d;
-    camera_ray(cam, (float)x + c.u0, (float)y + c.u1, width, height, c.u2, c.u3, &o, &d);
+    camera_ray(cam, (float)x + jitter.x, (float)y + jitter.y, width, height, lens.x, lens.y, &o, &d);
     begin_path(path, out, o, d);
 }
 
@@ -98,26 +101,27 @@ inline void begin_camera_path(const CameraParams* cam, int x, int y, int width, 
 // the environment by its share; docs/rendering.md, "Picking a light").
 // Returns the radiance towards wo.
 inline float3 sample_lights(const SceneView* scene, float3 p, int self, const Bsdf* bsdf, float3 wo, float3 n,
-                            bool outside, const Rand5* r, int mode)
+                            bool outside, float2 u_light, int mode)
 {
     const int light_count = scene->light_count;
     float3 sum = (float3)(0.0f);
     if (mode == IntegratorMode_Direct) {
         for (int i = 0; i < light_count; ++i)
-            sum += estimate_light(scene, scene->lights[i].sphere, 1.0f, p, self, bsdf, wo, n, outside, r->u0, r->u1);
+            sum += estimate_light(scene, scene->lights[i].sphere, 1.0f, p, self, bsdf, wo, n, outside, u_light.x,
+                                  u_light.y);
         return sum;
     }
     if (light_count == 0) return sum;
     // One uniform number picks the light by power (the alias table) and,
     // rescaled to [0, 1) again, samples it.
-    const float scaled = r->u0 * (float)light_count;
+    const float scaled = u_light.x * (float)light_count;
     const int slot = min((int)scaled, light_count - 1);
 #if ORB_UNIFORM_LIGHTS
     // Lights of equal power: the alias table is the identity, so skip it
     // (the same picks and pdfs, fewer loads; 2% on an H100).
     const float u = fmin(scaled - (float)slot, 0x1.fffffep-1f);
     return estimate_light(scene, scene->lights[slot].sphere, 1.0f / (float)light_count, p, self, bsdf, wo, n, outside,
-                          u, r->u1);
+                          u, u_light.y);
 #else
     const float rest = scaled - (float)slot;
     SCENE_MEM const LightRecord* entry = &scene->lights[slot];
@@ -127,14 +131,14 @@ inline float3 sample_lights(const SceneView* scene, float3 p, int self, const Bs
                              : (rest - entry->alias_threshold) / (1.0f - entry->alias_threshold),
                          0x1.fffffep-1f);
     SCENE_MEM const LightRecord* light = &scene->lights[pick];
-    return estimate_light(scene, light->sphere, light->probability, p, self, bsdf, wo, n, outside, u, r->u1);
+    return estimate_light(scene, light->sphere, light->probability, p, self, bsdf, wo, n, outside, u, u_light.y);
 #endif
 }
 
 // Casts the path's next ray and handles what it hits: emission, next-event
 // estimation, scattering. Returns false when the path has ended.
-inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out, uint pixel, ulong sample,
-                        uint2 seed, int max_depth, int mode)
+inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out, const SampleCoords* coords,
+                        int max_depth, int mode)
 {
     const Hit hit = intersect_scene(scene, path->o, path->d, path->self);
     if (hit.id < 0) {
@@ -156,7 +160,7 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
     const int depth = path->depth;
     if (depth == 0) {
         out->alpha = 1.0f;
-        out->normal = n;
+        if (ORB_FILM_BUILT(normal)) out->normal = n;
     }
 
     if (m.emission.x + m.emission.y + m.emission.z > 0.0f) {
@@ -179,23 +183,28 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
     // Direct mode: the ray after the first non-delta vertex was traced only for its emission.
     if (mode == IntegratorMode_Direct && path->nondelta_vertices == 1) return false;
 
-    const Rand5 r = rng_block(pixel, sample, (uint)(depth + 1), seed);
+    // The numbers of this scattering event (block depth + 1), drawn as used:
+    // a vertex with only delta lobes needs neither the light pair nor the
+    // direction pair (its BSDF ignores u, v: bsdf_types.cl).
+    const RandBlock r = rand_block(coords, (uint)(depth + 1));
     const bool has_density = bsdf_has_density(&m.bsdf);
+    float2 u_direction = (float2)(0.5f);
     if (has_density) {
-        if (!path->albedo_set) {
+        if (ORB_FILM_BUILT(albedo) && !path->albedo_set) {
             out->albedo = path->beta * bsdf_albedo(&m.bsdf, wo, n);
             path->albedo_set = true;
         }
         add_by_vertex_count(out, path->nondelta_vertices + 1,
-                            path->beta * sample_lights(scene, p, hit.id, &m.bsdf, wo, n, outside, &r, mode));
+                            path->beta * sample_lights(scene, p, hit.id, &m.bsdf, wo, n, outside, rand_pair(&r, 0u),
+                                                       mode));
+        u_direction = rand_pair(&r, 1u);
     }
 
-    // The number that picks a lobe: u0 where next-event estimation left it
-    // unused, else the roulette number, which the BSDF hands back rescaled
-    // (uniform again and independent of its pick) for the roulette below.
-    float choice = has_density ? r.u4 : r.u0;
-    const BsdfSample bs = bsdf_sample(&m.bsdf, wo, n, outside, r.u2, r.u3, &choice);
-    const float roulette = has_density ? choice : r.u4;
+    // u4 picks the lobe, and the BSDF hands it back rescaled (uniform again
+    // and independent of its pick) for the roulette below.
+    float choice = rand_single(&r);
+    const BsdfSample bs = bsdf_sample(&m.bsdf, wo, n, outside, u_direction.x, u_direction.y, &choice);
+    const float roulette = choice;
     float3 beta = path->beta * bs.weight;
     const float beta_max = fmax(beta.x, fmax(beta.y, beta.z));
     if (beta_max <= 0.0f) return false;
@@ -306,19 +315,20 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     PathState path;
     PathSample s;
     int i = 0;
-    ulong sample = first_sample;
-    if (sample_count > 0) begin_camera_path(&cam, x, y, width, height, pixel, sample, seed, &path, &s);
+    const uint pixel_key = sampler_pixel_key(pixel, seed);
+    SampleCoords coords = sample_coords(pixel_key, pixel, first_sample, seed);
+    if (sample_count > 0) begin_camera_path(&cam, x, y, width, height, &coords, &path, &s);
     while (i < sample_count) {
-        if (extend_path(&scene, &path, &s, pixel, sample, seed, max_depth, mode)) continue;
+        if (extend_path(&scene, &path, &s, &coords, max_depth, mode)) continue;
         film_add_sample(&sums, &s);
         if (++i < sample_count) {
-            sample = first_sample + (ulong)i;
-            begin_camera_path(&cam, x, y, width, height, pixel, sample, seed, &path, &s);
+            coords = sample_coords(pixel_key, pixel, first_sample + (ulong)i, seed);
+            begin_camera_path(&cam, x, y, width, height, &coords, &path, &s);
         }
     }
     ORB_FILM_ADD_SUMS
 
-    if (params.pass.write_centre_ray) {
+    if (params.pass.write_centre_ray && (ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id))) {
         const FilmCentre centre = film_centre_ray(&scene, &cam, x, y, width, height);
         ORB_FILM_SET_CENTRE
     }

@@ -2,7 +2,8 @@
 // five uniform numbers in [0, 1) for block `block` of sample `sample` of a
 // pixel. Block 0 is the camera: u0, u1 jitter the pixel, u2, u3 the lens.
 // Block k >= 1 is scattering event k: u0, u1 sample a light (u0 first picks
-// it), u2, u3 the BSDF direction, u4 Russian roulette.
+// it), u2, u3 the BSDF direction, u4 the lobe choice and then, rescaled,
+// Russian roulette.
 //
 // Two samplers, chosen when the program is built (docs/rendering.md):
 //  * ORB_SAMPLER_SOBOL=0: independent numbers, Philox (kernels/rng.cl).
@@ -17,7 +18,9 @@
 //    correlated with each other, across bounces or across pixels. Any 2^k
 //    consecutive, 2^k-aligned sample indices of a pixel are stratified in
 //    every pair: each of the 2^k elementary intervals of every shape holds
-//    one point.
+//    one point. The scrambles' seeds are hashes of a per-pixel key
+//    (sampler_pixel_key), and each vertex draws only the numbers it uses
+//    (rand_pair, rand_single).
 // Both are pure functions of (pixel, sample, block, seed): an image depends
 // only on which sample indices were rendered, never on how passes, slices
 // or resumes split them.
@@ -104,50 +107,134 @@ inline uint sobol_dimension1_reversed(uint i)
 
 inline float scrambled_unit(uint bits) { return (float)(bits >> 8) * 0x1p-24f; }
 
-// One scrambled 2D Sobol point: index j of the sequence (j already
-// shuffled where the caller wants it). Scrambling works on the reversed
-// digits, owen_scramble(x) = reverse(lk(reverse(x))), and dimension 0 of j
-// is reverse(j), so both points are formed in reversed form and reversed
-// once at the end.
-inline float2 sobol_pair(uint j, uint seed)
-{
-    const uint seed_x = mix32(seed ^ 0x9e3779b9u), seed_y = mix32(seed ^ 0x7f4a7c15u);
-    return (float2)(scrambled_unit(reverse_bits32(lk_permutation(j, seed_x))),
-                    scrambled_unit(reverse_bits32(lk_permutation(sobol_dimension1_reversed(j), seed_y))));
-}
-
 // Owen scrambling of the sample index, given reversed: a random order of the
 // samples within every aligned power-of-two block.
 inline uint shuffled_index(uint i_reversed, uint seed) { return reverse_bits32(lk_permutation(i_reversed, seed)); }
 
-inline Rand5 sobol_block(uint pixel, ulong sample, uint block, uint2 seed)
+// Where one camera path's numbers come from: set once when the path starts.
+typedef struct {
+    uint pixel;
+    ulong sample;
+    uint2 seed;
+#if ORB_SAMPLER_SOBOL
+    uint key;         // every Sobol seed of this sample derives from it (below)
+    uint i_reversed;  // the sample index, low 32 bits, bit-reversed
+#endif
+} SampleCoords;
+
+// A hash of (pixel, seed), computed once per work-item and pass: Philox is
+// a good hash but costs about as much as a whole Sobol pair, so it is not
+// run per sample or per block.
+inline uint sampler_pixel_key(uint pixel, uint2 seed)
 {
-    // Per pixel and block (and per 2^32 samples, so indices past 2^32 do not
-    // repeat points): the seeds of the three groups.
-    const uint4 h = philox4x32((uint4)(block, (uint)(sample >> 32), 0x536f626cu, pixel), seed);
-    const uint i_reversed = reverse_bits32((uint)sample);
-    // Every pair, and the fifth number, takes the samples in its own random
-    // order. Scrambled copies of one sequence taken in the same order are
-    // correlated (their leading digits are equal or opposite), which would
-    // tie the pixel jitter to the light samples of every bounce.
-    const float2 a = sobol_pair(shuffled_index(i_reversed, h.x), h.x);
-    const float2 b = sobol_pair(shuffled_index(i_reversed, h.y), h.y);
-    Rand5 r;
-    r.u0 = a.x;
-    r.u1 = a.y;
-    r.u2 = b.x;
-    r.u3 = b.y;
-    // 1D: van der Corput of the shuffled index, scrambled.
-    r.u4 = scrambled_unit(reverse_bits32(lk_permutation(shuffled_index(i_reversed, h.z), h.w)));
+    return philox4x32((uint4)(0x536f626cu, pixel, 0x9e3779b9u, pixel ^ 0x85ebca6bu), seed).x;
+}
+
+inline SampleCoords sample_coords(uint pixel_key, uint pixel, ulong sample, uint2 seed)
+{
+    SampleCoords c;
+    c.pixel = pixel;
+    c.sample = sample;
+    c.seed = seed;
+#if ORB_SAMPLER_SOBOL
+    // Per 2^32 samples a new key, so indices past 2^32 do not repeat points.
+    c.key = mix32(pixel_key ^ ((uint)(sample >> 32) * 0x632be5abu));
+    c.i_reversed = reverse_bits32((uint)sample);
+#endif
+    return c;
+}
+
+// The numbers of one block of a path (block 0 the camera, block k scattering
+// event k), drawn when asked for: a Sobol block computes only the pairs its
+// vertex uses (a pinhole camera needs no lens pair, a mirror no numbers but
+// the roulette's), which on small scenes halved the sampler's share of the
+// time; an independent block is one Philox call for all five.
+typedef struct {
+#if ORB_SAMPLER_SOBOL
+    bool sobol;
+    uint key, i_reversed, block;
+#endif
+    Rand5 independent;
+} RandBlock;
+
+inline RandBlock rand_block(const SampleCoords* c, uint block)
+{
+    RandBlock r;
+#if ORB_SAMPLER_SOBOL
+    r.sobol = block < ORB_SOBOL_BLOCKS;
+    r.key = c->key;
+    r.i_reversed = c->i_reversed;
+    r.block = block;
+    if (r.sobol) return r;
+#endif
+    r.independent = philox_block(c->pixel, c->sample, block, c->seed);
     return r;
 }
 
-inline Rand5 rng_block(uint pixel, ulong sample, uint block, uint2 seed)
+#if ORB_SAMPLER_SOBOL
+// Seed number `slot` (0..7) of a block: a different 32-bit hash for every
+// (pixel, seed, sample >> 32, block, slot). Slots 0-2 belong to pair 0,
+// 3-5 to pair 1, 6-7 to the fifth number.
+inline uint block_seed(uint key, uint block, uint slot) { return mix32(key ^ ((block * 8u + slot) * 0x9e3779b9u)); }
+
+// One scrambled 2D Sobol point: the sample index in this pair's own random
+// order (an Owen scramble of the index: a random order within every aligned
+// power-of-two block, so the pairs are not correlated with each other), then
+// its first two Sobol dimensions, each Owen-scrambled. Scrambling works on
+// reversed digits, owen_scramble(x) = reverse(lk(reverse(x))), and dimension
+// 0 of j is reverse(j), so both are formed reversed and reversed once.
+// (Scalar arguments, not the RandBlock: where PoCL does not inline this, a
+// struct passed by address went through memory and stalled the caller.)
+inline float2 sobol_pair(uint key, uint i_reversed, uint block, uint pair)
+{
+    const uint slot = 3u * pair;
+    const uint j = shuffled_index(i_reversed, block_seed(key, block, slot));
+    return (float2)(scrambled_unit(reverse_bits32(lk_permutation(j, block_seed(key, block, slot + 1u)))),
+                    scrambled_unit(reverse_bits32(
+                        lk_permutation(sobol_dimension1_reversed(j), block_seed(key, block, slot + 2u)))));
+}
+
+// A van der Corput point of the index in its own random order, scrambled.
+inline float sobol_single(uint key, uint i_reversed, uint block)
+{
+    const uint j = shuffled_index(i_reversed, block_seed(key, block, 6u));
+    return scrambled_unit(reverse_bits32(lk_permutation(j, block_seed(key, block, 7u))));
+}
+#endif
+
+// Pair 0 is (u0, u1): the light sample at a scattering event (u0 first picks
+// the light), the pixel jitter for the camera. Pair 1 is (u2, u3): the BSDF
+// direction, the lens position for the camera.
+inline float2 rand_pair(const RandBlock* r, uint pair)
 {
 #if ORB_SAMPLER_SOBOL
-    if (block < ORB_SOBOL_BLOCKS) return sobol_block(pixel, sample, block, seed);
-    return philox_block(pixel, sample, block, seed);
-#else
-    return philox_block(pixel, sample, block, seed);
+    if (r->sobol) return sobol_pair(r->key, r->i_reversed, r->block, pair);
 #endif
+    return pair == 0u ? (float2)(r->independent.u0, r->independent.u1)
+                      : (float2)(r->independent.u2, r->independent.u3);
+}
+
+// u4: picks a BSDF lobe, and then (rescaled) decides the Russian roulette.
+inline float rand_single(const RandBlock* r)
+{
+#if ORB_SAMPLER_SOBOL
+    if (r->sobol) return sobol_single(r->key, r->i_reversed, r->block);
+#endif
+    return r->independent.u4;
+}
+
+// All five numbers of a block at once (the sampler tests and BSDF probes;
+// the integrator asks for what it uses).
+inline Rand5 rng_block(uint pixel, ulong sample, uint block, uint2 seed)
+{
+    const SampleCoords c = sample_coords(sampler_pixel_key(pixel, seed), pixel, sample, seed);
+    const RandBlock r = rand_block(&c, block);
+    const float2 a = rand_pair(&r, 0u), b = rand_pair(&r, 1u);
+    Rand5 out;
+    out.u0 = a.x;
+    out.u1 = a.y;
+    out.u2 = b.x;
+    out.u3 = b.y;
+    out.u4 = rand_single(&r);
+    return out;
 }

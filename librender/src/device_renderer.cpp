@@ -93,6 +93,7 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           " -DORB_MATERIAL_KINDS=" + std::to_string(scene.material_kinds) +
                           " -DORB_ROUGH_DIELECTRIC=" + (scene.rough_dielectric ? "1" : "0") +
                           (config_.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
+                          " -DORB_FILM_CHANNELS_BUILT=" + std::to_string(config_.film_channels) + "u" +
                           nvidia_register_cap(device, scene.counts.bvh_node_count > 0);
     if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
     return options;

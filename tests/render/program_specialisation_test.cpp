@@ -102,3 +102,29 @@ TEST(ProgramSpecialisation, AKindLeftOutIsRenderedAsDiffuse) {
     const Scene scene = room_with({MaterialType::Mirror, MaterialType::Dielectric});
     EXPECT_NE(render_with_options(scene, "-DORB_MATERIAL_KINDS=1").radiance, render_with_options(scene, nullptr).radiance);
 }
+
+// A run that writes only some layers computes only their channels
+// (RenderConfig::film_channels, from --passes): those are exactly what the
+// program with every channel gives, and the others stay at their clear values.
+TEST(ProgramSpecialisation, ChannelsLeftOutStayClearAndTheRestIsUnchanged) {
+    const Scene scene = room_with({MaterialType::Mirror, MaterialType::Dielectric, MaterialType::Pbr});
+    const Film everything = test::render(scene, small_config(40, 30, 3), {4});
+    const std::vector<film::Layer> layer_sets[] = {
+        {film::Layer::Beauty}, {film::Layer::Variance}, {film::Layer::Albedo, film::Layer::Depth}};
+    for (const std::vector<film::Layer>& layers : layer_sets) {
+        RenderConfig config = small_config(40, 30, 3);
+        config.film_channels = film::channels_for(layers);
+        const Film some = test::render(scene, config, {4});
+        for (const film::ChannelInfo& c : film::kChannels) {
+            SCOPED_TRACE(c.name);
+            if (config.film_channels & film::channel_bit(c.channel)) {
+                EXPECT_EQ(some.channel(c.channel), everything.channel(c.channel));
+            } else {
+                for (float value : some.channel(c.channel)) ASSERT_EQ(value, c.clear);
+            }
+        }
+    }
+    // The variance needs the mean it is the variance of.
+    EXPECT_EQ(film::channels_for(std::vector{film::Layer::Variance}),
+              film::channel_bit(film::Channel::radiance_sq) | film::channel_bit(film::Channel::radiance));
+}

@@ -178,7 +178,6 @@ void check_option_combinations(const RenderOptions& o) {
                                   : o.sample_range    ? "--sample-range"
                                   : o.time_limit      ? "--time"
                                   : o.half            ? "--half"
-                                  : o.passes          ? "--passes"
                                                       : nullptr;
         if (conflicting)
             throw UsageError(std::string("--benchmark writes no image and takes no ") + conflicting +

@@ -114,6 +114,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
         throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
                          " samples per pixel, more than the " + std::to_string(plan.target_spp) + " asked for");
     plan.passes = o.passes ? exr::parse_passes(*o.passes) : file.passes;
+    plan.config.film_channels = film::channels_for(plan.passes);
     exr::require_resumable(file, plan.passes, path);
     plan.resumed = std::move(file);
 }
@@ -148,6 +149,7 @@ RenderPlan make_render_plan(const RenderOptions& o) {
         plan.target_spp = slice.count;
     }
     plan.passes = o.passes ? exr::parse_passes(*o.passes) : exr::all_passes();
+    plan.config.film_channels = film::channels_for(plan.passes);
     if (renders_frames(o)) {
         plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
         plan.fps = o.fps.value_or(kDefaultFps);

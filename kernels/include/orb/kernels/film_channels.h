@@ -90,10 +90,25 @@
 
 #define ORB_FILM_INFINITY INFINITY
 
+/* Channel k of the table is bit k of a channel mask. A program computes only
+ * the channels in ORB_FILM_CHANNELS_BUILT (the host passes those of the
+ * layers a run writes, film::channels_for); the others stay at their clear
+ * value. */
+#define ORB_FILM_CHANNEL_INDEX(name, components, clear, accumulate, merge, layer, stored_as, paired, names) \
+    FilmChannel_##name,
+enum FilmChannelIndex { ORB_FILM_CHANNELS(ORB_FILM_CHANNEL_INDEX) FilmChannel_count };
+#undef ORB_FILM_CHANNEL_INDEX
+
+#ifndef ORB_FILM_CHANNELS_BUILT
+#define ORB_FILM_CHANNELS_BUILT 0xffffffffu
+#endif
+#define ORB_FILM_BUILT(name) (((((uint)(ORB_FILM_CHANNELS_BUILT)) >> FilmChannel_##name) & 1u) != 0u)
+
 #else
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 
 #define ORB_FILM_INFINITY (std::numeric_limits<float>::infinity())
@@ -206,6 +221,23 @@ constexpr bool table_is_consistent()
     return true;
 }
 static_assert(table_is_consistent(), "ORB_FILM_CHANNELS breaks a rule listed at the top of film_channels.h");
+static_assert(kChannelCount <= 32, "one bit per channel in a channel mask");
+
+inline constexpr std::uint32_t kAllChannels = (kChannelCount == 32) ? ~0u : (1u << kChannelCount) - 1u;
+
+constexpr std::uint32_t channel_bit(Channel channel) { return 1u << static_cast<int>(channel); }
+
+// The channels that writing `layers` needs: each layer's own, and the
+// channel a VarianceOfMean is the square of (its mean enters the variance).
+template <typename Layers>
+constexpr std::uint32_t channels_for(const Layers& layers)
+{
+    std::uint32_t mask = 0;
+    for (const ChannelInfo& c : kChannels)
+        for (Layer layer : layers)
+            if (c.layer == layer) mask |= channel_bit(c.channel) | (c.paired != Channel::none ? channel_bit(c.paired) : 0u);
+    return mask;
+}
 
 }  // namespace orb::film
 

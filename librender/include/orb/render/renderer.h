@@ -41,6 +41,10 @@ struct RenderConfig {
     std::string kernel_dir;   // development override of the embedded kernels ("" = embedded; env ORB_KERNEL_DIR too)
     bool use_binary_cache = true;  // $XDG_CACHE_HOME/orb (or ~/.cache/orb)
     bool use_bvh = true;  // false: every ray tests every sphere (for tests and comparisons; same image)
+    // The film channels the kernels compute (bits of film::channel_bit;
+    // film::channels_for(layers) for the layers a run writes): the others
+    // stay at their clear values and cost nothing.
+    std::uint32_t film_channels = film::kAllChannels;
 };
 
 class Renderer final : public PassRenderer {
