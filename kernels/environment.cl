@@ -126,7 +126,7 @@ inline float3 estimate_environment_light(const SceneView* scene, float pick_pdf,
     if (!(f_cos.x + f_cos.y + f_cos.z > 0.0f)) return (float3)(0.0f);
     if (!light_visible(scene, p, wi, self, -1)) return (float3)(0.0f);
     const float light_pdf = pick_pdf * texel.w;
-    const float weight = power_heuristic(light_pdf, bsdf_pdf);
+    const float weight = power_heuristic(light_pdf, continuation_pdf(scene, p, bsdf_pdf, wi));
     return texel.xyz * f_cos * (weight / light_pdf);
 }
 

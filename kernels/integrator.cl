@@ -200,10 +200,14 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
         u_direction = rand_pair(&r, 1u);
     }
 
-    // u4 picks the lobe, and the BSDF hands it back rescaled (uniform again
-    // and independent of its pick) for the roulette below.
+    // u4 picks the strategy and the lobe, and comes back rescaled (uniform
+    // again and independent of those picks) for the roulette below. Where
+    // the BSDF has a density the direction comes from the continuation's
+    // mixture, which also aims at glass and mirror balls (caustic_casters.cl).
     float choice = rand_single(&r);
-    const BsdfSample bs = bsdf_sample(&m.bsdf, wo, n, outside, u_direction.x, u_direction.y, &choice);
+    const BsdfSample bs =
+        has_density ? sample_continuation(scene, &m.bsdf, p, wo, n, outside, u_direction.x, u_direction.y, &choice)
+                    : bsdf_sample(&m.bsdf, wo, n, outside, u_direction.x, u_direction.y, &choice);
     const float roulette = choice;
     float3 beta = path->beta * bs.weight;
     const float beta_max = fmax(beta.x, fmax(beta.y, beta.z));
@@ -296,6 +300,7 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     scene.light_count = params.scene.light_count;
     scene.outside_packet_count = params.scene.outside_packet_count;
     scene.bvh_node_count = params.scene.bvh_node_count;
+    scene.caster_count = params.scene.caster_count;
     scene.environment = params.environment;
 
     const CameraParams cam = params.camera;

@@ -16,14 +16,6 @@ inline bool light_surrounds(float3 p, int self, int light_id, float3 centre, flo
     return self == light_id || dot(pc, pc) <= radius * radius;
 }
 
-// 1 - cos(theta_max) of the cone subtended by a sphere seen from outside,
-// computed as sin^2 / (1 + cos) to keep precision for distant lights.
-inline float cone_one_minus_cos(float distance2, float radius)
-{
-    const float sin2 = fmin(1.0f, radius * radius / distance2);
-    return sin2 / (1.0f + sqrt(1.0f - sin2));
-}
-
 inline float light_direction_pdf(float3 p, int self, int light_id, float3 centre, float radius)
 {
     if (light_surrounds(p, self, light_id, centre, radius)) return ORB_INV_4PI;
@@ -63,6 +55,7 @@ inline float3 estimate_direct_light(const SceneView* scene, int light_id, float 
     if (!(f_cos.x + f_cos.y + f_cos.z > 0.0f)) return (float3)(0.0f);
     if (!light_visible(scene, p, wi, self, light_id)) return (float3)(0.0f);
     const float light_pdf = pick_pdf * direction_pdf;
-    const float weight = power_heuristic(light_pdf, bsdf_pdf);
+    // BSDF sampling's side of the pair is the continuation's mixture (caustic_casters.cl).
+    const float weight = power_heuristic(light_pdf, continuation_pdf(scene, p, bsdf_pdf, wi));
     return light.emission * f_cos * (weight / light_pdf);
 }

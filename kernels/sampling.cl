@@ -87,3 +87,11 @@ inline float power_heuristic(float pdf_f, float pdf_g)
     const float f2 = pdf_f * pdf_f;
     return f2 / (f2 + pdf_g * pdf_g);
 }
+
+// 1 - cos(theta_max) of the cone subtended by a sphere seen from outside,
+// computed as sin^2 / (1 + cos) to keep precision for distant spheres.
+inline float cone_one_minus_cos(float distance2, float radius)
+{
+    const float sin2 = fmin(1.0f, radius * radius / distance2);
+    return sin2 / (1.0f + sqrt(1.0f - sin2));
+}

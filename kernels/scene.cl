@@ -25,6 +25,7 @@ typedef struct {
     int light_count;
     int outside_packet_count;
     int bvh_node_count;
+    int caster_count;
     EnvironmentParams environment;  // width 0: none
 } SceneView;
 

@@ -120,6 +120,12 @@ def ladder(first: int, last: int) -> list[int]:
 def orb_curve(bin_dir: Path, scene: str, reference: str, width: int, height: int, depth: int,
               max_spp: int, seed: int, workdir: Path, extra: list[str]) -> Curve:
     curve = Curve("orb", scene)
+    # A warm-up render with the ladder's settings, untimed, as Mitsuba gets
+    # one: the kernels' compilation (OpenCL's build and PoCL's code
+    # generation at the first launch) then comes from the caches and is not
+    # counted in the first rung.
+    run([tool("orb-render", bin_dir), scene, "--spp", "1", "--passes", "beauty", "-o", str(workdir / "warm-up.exr"),
+         "-q", "--width", str(width), "--height", str(height), "--max-depth", str(depth), "--seed", str(seed)] + extra)
     previous, total = None, 0.0
     for spp in ladder(1, max_spp):
         image = workdir / f"orb-{spp}.exr"

@@ -56,12 +56,14 @@ public:
 private:
     std::string build_options(const SceneLayout& scene) const;
     void choose_work_sizes();
+    void prepare_kernel();
     [[noreturn]] void fail(const cl::Error& error, const std::string& what) const;
 
     std::shared_ptr<DeviceSession> session_;
     RenderConfig config_;
     DeviceFilm film_;
     const cl::Program* program_ = nullptr;
+    bool kernel_prepared_ = false;  // prepare_kernel() has run for program_
     cl::Kernel kernel_;
     SceneBuffers scene_buffers_;
     std::uint64_t scene_bytes_ = 0;

@@ -15,6 +15,21 @@
 namespace orb::render {
 namespace {
 
+// Spheres through which light reaches surfaces only along BSDF-sampled paths:
+// materials without a density (kernels/caustic_casters.cl). Roughness exactly
+// 0 rather than the kernels' smoothness threshold: any set of casters keeps
+// the estimator unbiased, so the rule only has to pick the spheres worth
+// aiming at.
+bool is_caustic_caster(const device::MaterialRecord& m)
+{
+    switch (static_cast<device::MaterialKind>(m.kind)) {
+    case device::MaterialKind::Mirror: return true;
+    case device::MaterialKind::Dielectric: return m.roughness == 0.0f;
+    case device::MaterialKind::Pbr: return m.roughness == 0.0f && m.metallic >= 1.0f;
+    default: return false;
+    }
+}
+
 float f(double value) { return static_cast<float>(value); }
 
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -196,6 +211,12 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh)
     layout.counts.light_count = static_cast<int>(tables.lights.size());
     layout.counts.outside_packet_count = static_cast<int>(outside_packets);
     layout.counts.bvh_node_count = static_cast<int>(tables.bvh_nodes.size());
+
+    for (const Sphere& sphere : scene.spheres)
+        if (is_caustic_caster(tables.materials[sphere.material]))
+            tables.casters.push_back({to_float4(sphere.center, sphere.radius)});
+    if (tables.casters.size() > kMaxCausticCasters) tables.casters.clear();
+    layout.counts.caster_count = static_cast<int>(tables.casters.size());
     return layout;
 }
 

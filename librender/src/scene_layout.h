@@ -55,6 +55,11 @@ SceneLayout layout_scene(const Scene& scene, bool use_bvh = true);
 // costs at most a factor 2 in the variance of either kind of light.
 inline constexpr double kEnvironmentLightShare = 0.5;
 
+// Casters (kernels/caustic_casters.cl) are listed when a scene has at most
+// this many; past it none are. Every vertex with a density tests every
+// caster's cone, and a cloud of glass beads gains little from aiming at each.
+inline constexpr std::size_t kMaxCausticCasters = 8;
+
 // Throws std::runtime_error for a camera without a direction.
 device::CameraParams layout_camera(const Camera& camera, int width, int height);
 

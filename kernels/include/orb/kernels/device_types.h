@@ -154,6 +154,15 @@ typedef struct LightRecord {
     int alias;             /* index into the lights table */
 } LightRecord;
 
+/* A sphere that BSDF sampling at diffuse and glossy vertices also aims at
+ * (kernels/caustics.cl): one whose material has no density, so that light
+ * reaches a surface through it only along BSDF-sampled paths (the caustics
+ * of glass and mirror balls, which next-event estimation cannot find).
+ * Filled by librender/src/scene_layout.cpp. */
+typedef struct CasterRecord {
+    float4 centre_radius; /* xyz: centre; w: radius */
+} CasterRecord;
+
 /* One texel of the environment (kernels/environment.cl), row-major from the
  * top row (+y). A uniform environment is a single texel. Filled by
  * librender/src/environment_layout.cpp. */
@@ -195,7 +204,8 @@ typedef struct SceneCounts {
     int light_count;
     int outside_packet_count; /* packets [0, this) hold the spheres outside the BVH: every ray tests them */
     int bvh_node_count;       /* 0: no tree, every sphere is outside it */
-    int pad0, pad1, pad2;
+    int caster_count;         /* records of the casters table; 0: BSDF sampling aims at no sphere */
+    int pad1, pad2;
 } SceneCounts;
 
 /* Fixed for a whole render. */
@@ -253,6 +263,7 @@ typedef struct RenderPassParams {
     TABLE(SphereRecord, spheres)                       \
     TABLE(MaterialRecord, materials)                   \
     TABLE(LightRecord, lights)                         \
+    TABLE(CasterRecord, casters)                       \
     TABLE(EnvironmentTexel, environment_texels)        \
     TABLE(EnvironmentCdf, environment_cdf)             \
     PARAMS(RenderPassParams, params)
@@ -286,13 +297,15 @@ typedef struct RenderPassParams {
     SIZE(SceneCounts, 32)                                                                                  \
     FIELD(SceneCounts, packet_count, 0) FIELD(SceneCounts, sphere_count, 4)                                \
     FIELD(SceneCounts, light_count, 8) FIELD(SceneCounts, outside_packet_count, 12)                        \
-    FIELD(SceneCounts, bvh_node_count, 16)                                                                 \
+    FIELD(SceneCounts, bvh_node_count, 16) FIELD(SceneCounts, caster_count, 20)                            \
     SIZE(RenderSettings, 32)                                                                               \
     FIELD(RenderSettings, width, 0) FIELD(RenderSettings, height, 4) FIELD(RenderSettings, max_depth, 8)   \
     FIELD(RenderSettings, mode, 12) FIELD(RenderSettings, seed_lo, 16) FIELD(RenderSettings, seed_hi, 20)  \
     SIZE(PassRange, 16)                                                                                    \
     FIELD(PassRange, first_sample_lo, 0) FIELD(PassRange, first_sample_hi, 4)                              \
     FIELD(PassRange, sample_count, 8) FIELD(PassRange, write_centre_ray, 12)                               \
+    SIZE(CasterRecord, 16)                                                                                 \
+    FIELD(CasterRecord, centre_radius, 0)                                                                  \
     SIZE(EnvironmentTexel, 16)                                                                             \
     FIELD(EnvironmentTexel, radiance_pdf, 0)                                                               \
     SIZE(EnvironmentCdf, 4)                                                                                \
