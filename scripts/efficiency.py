@@ -1,9 +1,8 @@
 #!/usr/bin/env python3
 """Time to equal error: how long a renderer takes to reach a given relMSE.
 
-Renders a scene progressively with orb-render (each rung of an spp ladder
-resumes the previous one, so the times add up to one progressive render),
-measures relMSE against a converged reference with orb-diff, and reports the
+Renders a scene with orb-render at each rung of an spp ladder (1, 2, 4, ...
+spp; each rung a fresh render timed alone, as Mitsuba's rungs are), measures relMSE against a converged reference with orb-diff, and reports the
 time to reach relMSE 0.01 and 0.001, interpolated on log-log between the two
 rungs that bracket each target and never extrapolated, plus samples/s and
 relMSE x seconds (lower is better; constant for an unbiased estimator whose
@@ -43,7 +42,7 @@ TARGETS = (0.01, 0.001)
 @dataclass
 class Rung:
     spp: int
-    seconds: float  # cumulative rendering time up to this rung
+    seconds: float  # rendering time of this rung's image
     relmse: float
 
 
@@ -120,29 +119,24 @@ def ladder(first: int, last: int) -> list[int]:
 def orb_curve(bin_dir: Path, scene: str, reference: str, width: int, height: int, depth: int,
               max_spp: int, seed: int, workdir: Path, extra: list[str]) -> Curve:
     curve = Curve("orb", scene)
+    settings = ["--width", str(width), "--height", str(height), "--max-depth", str(depth), "--seed", str(seed)] + extra
     # A warm-up render with the ladder's settings, untimed, as Mitsuba gets
     # one: the kernels' compilation (OpenCL's build and PoCL's code
     # generation at the first launch) then comes from the caches and is not
     # counted in the first rung.
     run([tool("orb-render", bin_dir), scene, "--spp", "1", "--passes", "beauty", "-o", str(workdir / "warm-up.exr"),
-         "-q", "--width", str(width), "--height", str(height), "--max-depth", str(depth), "--seed", str(seed)] + extra)
-    previous, total = None, 0.0
+         "-q"] + settings)
     for spp in ladder(1, max_spp):
+        # Each rung is a fresh render of its spp, timed alone, as
+        # compare_mitsuba.py times Mitsuba's: the time a user waits for an
+        # image of that many samples.
         image = workdir / f"orb-{spp}.exr"
         stats = workdir / f"orb-{spp}.json"
-        args = [tool("orb-render", bin_dir), scene, "--spp", str(spp), "--passes", "beauty", "-o", str(image),
-                "--stats-json", str(stats), "-q"]
-        if previous:
-            args += ["--resume", str(previous)]
-        else:
-            args += ["--width", str(width), "--height", str(height), "--max-depth", str(depth), "--seed",
-                     str(seed)] + extra
-        run(args)
-        total += json.loads(stats.read_text())["seconds"]
-        curve.rungs.append(Rung(spp, total, relmse(bin_dir, reference, str(image))))
-        if previous:
-            previous.unlink()
-        previous = image
+        run([tool("orb-render", bin_dir), scene, "--spp", str(spp), "--passes", "beauty", "-o", str(image),
+             "--stats-json", str(stats), "-q"] + settings)
+        seconds = json.loads(stats.read_text())["seconds"]
+        curve.rungs.append(Rung(spp, seconds, relmse(bin_dir, reference, str(image))))
+        image.unlink()
         if curve.rungs[-1].relmse < min(TARGETS) * 0.7:
             break
     return curve

@@ -15,38 +15,62 @@ namespace orb::render::test {
 namespace {
 
 // Appended to the whole Orb program (so the BSDFs are exactly the ones
-// render_pass uses). The shading frame is n = +z; `wo_outside` carries wo in
-// xyz and the `outside` flag in w.
+// render_pass uses). The shading frame is n = +z at the origin; `wo_outside`
+// carries wo in xyz and the `outside` flag in w. Sampling and densities go
+// through the continuation's mixture (caustic_casters.cl), which with no
+// casters is the BSDF's own sampling and pdf.
 constexpr const char* kProbeKernels = R"CL(
-__kernel void probe_sample(__constant MaterialRecord* material, float4 wo_outside, uint2 seed,
-                           __global float4* direction, __global float4* weight, __global float4* check)
+inline SceneView probe_scene(__constant CasterRecord* casters, int caster_count)
+{
+    SceneView scene;
+    scene.casters = casters;
+    scene.caster_count = caster_count;
+    return scene;
+}
+
+__kernel void probe_sample(__constant MaterialRecord* material, __constant CasterRecord* casters, int caster_count,
+                           float4 wo_outside, uint2 seed, __global float4* direction, __global float4* weight,
+                           __global float4* check)
 {
     const uint i = get_global_id(0);
+    const SceneView scene = probe_scene(casters, caster_count);
     const Bsdf b = load_bsdf(material);
-    const float3 n = (float3)(0.0f, 0.0f, 1.0f);
+    const float3 p = (float3)(0.0f), n = (float3)(0.0f, 0.0f, 1.0f);
     const bool outside = wo_outside.w > 0.5f;
     const Rand5 r = rng_block(i, 0, 0u, seed);
     float choice = r.u4;
-    const BsdfSample s = bsdf_sample(&b, wo_outside.xyz, n, outside, r.u2, r.u3, &choice);
-    float eval_pdf;
-    const float3 f_cos = bsdf_eval(&b, wo_outside.xyz, s.wi, n, outside, &eval_pdf);
-    const bool valid = s.weight.x + s.weight.y + s.weight.z > 0.0f;
-    direction[i] = (float4)(s.wi, valid ? (s.delta ? 2.0f : 1.0f) : 0.0f);
+    const BsdfSample s = sample_continuation(&scene, &b, p, wo_outside.xyz, n, outside, r.u2, r.u3, &choice);
+    float bsdf_pdf;
+    const float3 f_cos = bsdf_eval(&b, wo_outside.xyz, s.wi, n, outside, &bsdf_pdf);
+    // A direction was returned: one with a density (its weight may be 0:
+    // an aimed direction below the surface), or a delta lobe's.
+    const bool carries = s.weight.x + s.weight.y + s.weight.z > 0.0f;
+    direction[i] = (float4)(s.wi, s.delta ? (carries ? 2.0f : 0.0f) : (s.pdf > 0.0f ? 1.0f : 0.0f));
     weight[i] = (float4)(s.weight, s.pdf);
-    check[i] = (float4)(f_cos, eval_pdf);
+    check[i] = (float4)(f_cos, continuation_pdf(&scene, p, bsdf_pdf, s.wi));
 }
 
-__kernel void probe_eval(__constant MaterialRecord* material, int outside, __global const float4* wo,
-                         __global const float4* wi, __global float4* out)
+__kernel void probe_eval(__constant MaterialRecord* material, __constant CasterRecord* casters, int caster_count,
+                         int outside, __global const float4* wo, __global const float4* wi, __global float4* out)
 {
     const uint i = get_global_id(0);
+    const SceneView scene = probe_scene(casters, caster_count);
     const Bsdf b = load_bsdf(material);
-    const float3 n = (float3)(0.0f, 0.0f, 1.0f);
+    const float3 p = (float3)(0.0f), n = (float3)(0.0f, 0.0f, 1.0f);
     float pdf;
     const float3 f_cos = bsdf_eval(&b, wo[i].xyz, wi[i].xyz, n, outside != 0, &pdf);
-    out[i] = (float4)(f_cos, pdf);
+    out[i] = (float4)(f_cos, continuation_pdf(&scene, p, pdf, wi[i].xyz));
 }
 )CL";
+
+// The casters as a buffer (one placeholder record when there are none: OpenCL has no empty buffers).
+cl::Buffer caster_buffer(const cl::Context& context, const std::vector<device::CasterRecord>& casters)
+{
+    std::vector<device::CasterRecord> records = casters;
+    if (records.empty()) records.push_back({});
+    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, records.size() * sizeof(records[0]),
+                      records.data());
+}
 
 cl_float4 wo_outside(const Dir& wo, bool outside)
 {
@@ -87,23 +111,27 @@ BsdfProbe::BsdfProbe() : impl_(std::make_unique<Impl>())
 BsdfProbe::~BsdfProbe() = default;
 
 std::vector<ProbeSample> BsdfProbe::sample(const device::MaterialRecord& material, const Dir& wo, bool outside,
-                                           std::size_t count, unsigned seed)
+                                           std::size_t count, unsigned seed,
+                                           const std::vector<device::CasterRecord>& casters)
 {
     cl::Buffer record(impl_->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof material,
                       const_cast<device::MaterialRecord*>(&material));
     cl::Buffer direction(impl_->context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
     cl::Buffer weight(impl_->context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
     cl::Buffer check(impl_->context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
+    const cl::Buffer caster_records = caster_buffer(impl_->context, casters);
     cl::Kernel kernel(impl_->program, "probe_sample");
     kernel.setArg(0, record);
-    kernel.setArg(1, wo_outside(wo, outside));
+    kernel.setArg(1, caster_records);
+    kernel.setArg(2, cl_int(casters.size()));
+    kernel.setArg(3, wo_outside(wo, outside));
     cl_uint2 key;
     key.s[0] = seed;
     key.s[1] = 0x5eedu;
-    kernel.setArg(2, key);
-    kernel.setArg(3, direction);
-    kernel.setArg(4, weight);
-    kernel.setArg(5, check);
+    kernel.setArg(4, key);
+    kernel.setArg(5, direction);
+    kernel.setArg(6, weight);
+    kernel.setArg(7, check);
     impl_->queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(count));
     std::vector<cl_float4> d(count), w(count), c(count);
     impl_->queue.enqueueReadBuffer(direction, CL_TRUE, 0, count * sizeof(cl_float4), d.data());
@@ -124,7 +152,7 @@ std::vector<ProbeSample> BsdfProbe::sample(const device::MaterialRecord& materia
 }
 
 std::vector<ProbeEval> BsdfProbe::eval(const device::MaterialRecord& material, bool outside, const std::vector<Dir>& wo,
-                                       const std::vector<Dir>& wi)
+                                       const std::vector<Dir>& wi, const std::vector<device::CasterRecord>& casters)
 {
     const std::size_t count = wi.size();
     if (wo.size() != count) throw std::invalid_argument("BsdfProbe::eval: as many wo as wi");
@@ -143,12 +171,15 @@ std::vector<ProbeEval> BsdfProbe::eval(const device::MaterialRecord& material, b
     cl::Buffer wi_buffer(impl_->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, count * sizeof(cl_float4),
                          wi_in.data());
     cl::Buffer result(impl_->context, CL_MEM_WRITE_ONLY, count * sizeof(cl_float4));
+    const cl::Buffer caster_records = caster_buffer(impl_->context, casters);
     cl::Kernel kernel(impl_->program, "probe_eval");
     kernel.setArg(0, record);
-    kernel.setArg(1, cl_int(outside ? 1 : 0));
-    kernel.setArg(2, wo_buffer);
-    kernel.setArg(3, wi_buffer);
-    kernel.setArg(4, result);
+    kernel.setArg(1, caster_records);
+    kernel.setArg(2, cl_int(casters.size()));
+    kernel.setArg(3, cl_int(outside ? 1 : 0));
+    kernel.setArg(4, wo_buffer);
+    kernel.setArg(5, wi_buffer);
+    kernel.setArg(6, result);
     impl_->queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(count));
     std::vector<cl_float4> r(count);
     impl_->queue.enqueueReadBuffer(result, CL_TRUE, 0, count * sizeof(cl_float4), r.data());
@@ -157,9 +188,9 @@ std::vector<ProbeEval> BsdfProbe::eval(const device::MaterialRecord& material, b
 }
 
 std::vector<ProbeEval> BsdfProbe::eval(const device::MaterialRecord& material, bool outside, const Dir& wo,
-                                       const std::vector<Dir>& wi)
+                                       const std::vector<Dir>& wi, const std::vector<device::CasterRecord>& casters)
 {
-    return eval(material, outside, std::vector<Dir>(wi.size(), wo), wi);
+    return eval(material, outside, std::vector<Dir>(wi.size(), wo), wi, casters);
 }
 
 device::MaterialRecord material_record(device::MaterialKind kind, std::array<float, 3> color, float roughness,

@@ -1,7 +1,10 @@
 // Calls the kernels' BSDF interface (kernels/bsdf.cl) directly on the
 // default OpenCL device (PoCL here), for the BSDF tests: the whole Orb
 // program plus two small probe kernels, one that samples and one that
-// evaluates. The shading frame is fixed: n = +z, wo in the xz plane.
+// evaluates. The shading frame is fixed: the origin, n = +z, wo in the xz
+// plane. Both go through the continuation's mixture (caustic_casters.cl):
+// with casters, directions also aim at their cones and densities are the
+// mixture's; with none, they are the BSDF's own.
 #pragma once
 
 #include <array>
@@ -18,11 +21,11 @@ using Dir = std::array<double, 3>;
 struct ProbeSample {
     Dir wi;
     std::array<double, 3> weight;
-    double pdf = 0;          // as bsdf_sample returned it
-    bool valid = false;      // a non-zero weight was returned
+    double pdf = 0;          // as the sampling returned it
+    bool valid = false;      // a direction was returned: with a density (pdf > 0), or a delta lobe's with a non-zero weight
     bool delta = false;
     std::array<double, 3> eval_f_cos;  // bsdf_eval at (wo, wi)
-    double eval_pdf = 0;               // its pdf
+    double eval_pdf = 0;               // the density of wi (the mixture's, with casters)
 };
 
 struct ProbeEval {
@@ -41,13 +44,14 @@ public:
     // outside the sphere), with the random numbers of RNG blocks 0..count-1
     // under `seed`.
     std::vector<ProbeSample> sample(const device::MaterialRecord& material, const Dir& wo, bool outside,
-                                    std::size_t count, unsigned seed);
+                                    std::size_t count, unsigned seed,
+                                    const std::vector<device::CasterRecord>& casters = {});
     // bsdf_eval for each pair (wo[k], wi[k]); every wo[k].z > 0 (n = +z).
     std::vector<ProbeEval> eval(const device::MaterialRecord& material, bool outside, const std::vector<Dir>& wo,
-                                const std::vector<Dir>& wi);
+                                const std::vector<Dir>& wi, const std::vector<device::CasterRecord>& casters = {});
     // The same with one wo for all.
     std::vector<ProbeEval> eval(const device::MaterialRecord& material, bool outside, const Dir& wo,
-                                const std::vector<Dir>& wi);
+                                const std::vector<Dir>& wi, const std::vector<device::CasterRecord>& casters = {});
 
 private:
     struct Impl;

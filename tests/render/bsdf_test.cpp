@@ -93,6 +93,7 @@ struct Case {
     device::MaterialRecord material;
     double cos_o;
     bool outside = true;
+    std::vector<device::CasterRecord> casters = {};  // the continuation's mixture aims at these too
 };
 
 device::MaterialRecord pbr(std::array<float, 3> color, float roughness, float metallic)
@@ -136,11 +137,14 @@ void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
 class BsdfSampling : public ::testing::TestWithParam<Case> {};
 
-TEST_P(BsdfSampling, MatchesItsPdfAndWeighsByEvalOverPdf)
+// Samples the case (through the continuation's mixture when it has
+// casters) and checks them against the density it reports: the weight is
+// f |cos| / pdf, the pdf integrates to the share of samples with a density,
+// and the directions follow it (chi-square, Sidak level over `tests` tests).
+void expect_sampling_matches_pdf(const Case& c, int tests)
 {
-    const Case& c = GetParam();
     const Dir wo = direction_at(c.cos_o);
-    const std::vector<ProbeSample> samples = probe().sample(c.material, wo, c.outside, kSamples, 1234u);
+    const std::vector<ProbeSample> samples = probe().sample(c.material, wo, c.outside, kSamples, 1234u, c.casters);
 
     std::vector<double> observed(kBins, 0.0);
     std::size_t with_density = 0;
@@ -162,7 +166,7 @@ TEST_P(BsdfSampling, MatchesItsPdfAndWeighsByEvalOverPdf)
     ASSERT_GT(with_density, kSamples / 10) << "most samples must come from lobes with a density";
 
     const Grid& grid = integration_grid();
-    const std::vector<ProbeEval> values = probe().eval(c.material, c.outside, wo, grid.directions);
+    const std::vector<ProbeEval> values = probe().eval(c.material, c.outside, wo, grid.directions, c.casters);
     std::vector<double> expected(kBins, 0.0);
     double integral = 0;
     for (std::size_t i = 0; i < values.size(); ++i) {
@@ -185,9 +189,49 @@ TEST_P(BsdfSampling, MatchesItsPdfAndWeighsByEvalOverPdf)
         std::fprintf(stderr, "%s: p %.4f chi2 %.1f dof %d integral %.5f share %.5f weight %.2e pdf %.2e\n",
                      c.name.c_str(), chi2.p_value, chi2.statistic, chi2.dof, integral, share, worst_weight, worst_pdf);
     ASSERT_TRUE(chi2.problem.empty()) << chi2.problem;
-    const double level = sidak_level(kSignificance, static_cast<int>(chi2_cases().size()));
+    const double level = sidak_level(kSignificance, tests);
     EXPECT_GT(chi2.p_value, level) << "chi2 " << chi2.statistic << " with " << chi2.dof << " degrees of freedom";
 }
+
+TEST_P(BsdfSampling, MatchesItsPdfAndWeighsByEvalOverPdf)
+{
+    expect_sampling_matches_pdf(GetParam(), static_cast<int>(chi2_cases().size()));
+}
+
+// The continuation's mixture (kernels/caustic_casters.cl) at a vertex at the
+// origin, n = +z: casters above the surface, one cut by the horizon, two
+// whose cones overlap, one the vertex is inside of (a lost strategy), under
+// a diffuse, a glossy, a smooth-coated (a delta lobe beside the density) and
+// a rough glass BSDF (from inside, so aimed directions also transmit).
+std::vector<Case> continuation_cases()
+{
+    const auto caster = [](float x, float y, float z, float r) { return device::CasterRecord{{x, y, z, r}}; };
+    const std::vector<device::CasterRecord> one{caster(0.4f, 0.3f, 2.0f, 0.8f)};
+    const std::vector<device::CasterRecord> horizon{caster(2.0f, -0.5f, 0.3f, 0.9f)};
+    const std::vector<device::CasterRecord> overlapping{caster(0.4f, 0.3f, 2.0f, 0.8f), caster(0.9f, 0.2f, 2.5f, 1.0f),
+                                                        caster(-1.5f, 1.0f, 0.5f, 0.4f)};
+    const std::vector<device::CasterRecord> around{caster(0.0f, 0.0f, 0.5f, 1.0f), caster(-0.5f, 0.8f, 1.5f, 0.5f)};
+    std::vector<Case> cases;
+    const device::MaterialRecord diffuse = material_record(MaterialKind::Diffuse, {0.5f, 0.6f, 0.7f});
+    cases.push_back({"diffuse_one_caster", diffuse, 0.7, true, one});
+    cases.push_back({"diffuse_caster_at_the_horizon", diffuse, 0.7, true, horizon});
+    cases.push_back({"diffuse_overlapping_casters", diffuse, 0.4, true, overlapping});
+    cases.push_back({"diffuse_inside_a_caster", diffuse, 0.7, true, around});
+    cases.push_back({"metal_r30_overlapping_casters", pbr({0.9f, 0.6f, 0.3f}, 0.3f, 1), 0.8, true, overlapping});
+    cases.push_back({"smooth_half_metal_one_caster", pbr({0.7f, 0.7f, 0.7f}, 0, 0.5f), 0.6, true, one});
+    cases.push_back({"glass_inside_r60_overlapping_casters", glass(0.6f), 0.9, false, overlapping});
+    return cases;
+}
+
+class ContinuationSampling : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ContinuationSampling, MatchesTheMixturesPdfAndWeighsByEvalOverPdf)
+{
+    expect_sampling_matches_pdf(GetParam(), static_cast<int>(continuation_cases().size()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Casters, ContinuationSampling, ::testing::ValuesIn(continuation_cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 INSTANTIATE_TEST_SUITE_P(Bsdfs, BsdfSampling, ::testing::ValuesIn(chi2_cases()),
                          [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
