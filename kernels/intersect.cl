@@ -105,37 +105,6 @@ inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int
     best->id = select(best->id, id, valid);
 }
 
-// Two consecutive packets in one step of eight lanes: a ray's tests of the
-// spheres outside the tree are a chain of dependent steps (a square root
-// each), and AVX's eight lanes take both packets' at once. The same result
-// as two test_packet calls in order: per lane the second packet's sphere
-// wins only when strictly nearer, and then only when strictly nearer than
-// the best so far.
-inline void test_packet_pair(BestHit* best, SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d,
-                             int self)
-{
-    const float8 ocx = (float8)(o.x) - (float8)(packet[0].centre_x, packet[1].centre_x);
-    const float8 ocy = (float8)(o.y) - (float8)(packet[0].centre_y, packet[1].centre_y);
-    const float8 ocz = (float8)(o.z) - (float8)(packet[0].centre_z, packet[1].centre_z);
-    const float8 b = ocx * d.x + ocy * d.y + ocz * d.z;
-    const float8 fx = ocx - b * d.x;
-    const float8 fy = ocy - b * d.y;
-    const float8 fz = ocz - b * d.z;
-    const float8 disc = (float8)(packet[0].radius2, packet[1].radius2) - (fx * fx + fy * fy + fz * fz);
-    const float8 s = sqrt(ORB_MAX(disc, (float8)(0.0f)));
-    const float8 t_near = -b - s;
-    const int8 id = (int8)(0, 1, 2, 3, 4, 5, 6, 7) + (int8)(first_id);
-    const int8 is_self = id == (int8)(self);
-    const float8 t = select(t_near, -b + s, is_self | (t_near <= (float8)(0.0f)));
-    const int8 hits = (disc >= (float8)(0.0f)) & (t > (float8)(0.0f)) & ~(is_self & (b >= (float8)(0.0f)));
-    const int4 take_second = hits.hi & (~hits.lo | (t.hi < t.lo));
-    const float4 t_pair = select(t.lo, t.hi, take_second);
-    const int4 id_pair = select(id.lo, id.hi, take_second);
-    const int4 valid = (hits.lo | hits.hi) & (t_pair < best->t);
-    best->t = select(best->t, t_pair, valid);
-    best->id = select(best->id, id_pair, valid);
-}
-
 // Whether a sphere of the packet other than `light` is hit before t_max.
 inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self, int light,
                           float t_max)
@@ -385,11 +354,7 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 {
     BestHit best;
     best_init(&best);
-    int p = 0;
-#ifndef ORB_INTERSECT_SCALAR
-    for (; p + 1 < scene->outside_packet_count; p += 2) test_packet_pair(&best, &scene->packets[p], 4 * p, o, d, self);
-#endif
-    for (; p < scene->outside_packet_count; ++p) test_packet(&best, &scene->packets[p], 4 * p, o, d, self);
+    for (int p = 0; p < scene->outside_packet_count; ++p) test_packet(&best, &scene->packets[p], 4 * p, o, d, self);
 #if ORB_BVH
     // A ray with a NaN or infinite component hits no sphere (every distance
     // is NaN, so no test passes), but every box test passes: skip the tree
