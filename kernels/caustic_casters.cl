@@ -59,6 +59,9 @@ inline BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, flo
 {
     const int count = scene->caster_count;
     if (ORB_CASTER_SHARE <= 0.0f || count == 0) return bsdf_sample(b, wo, n, outside, u, v, choice);
+    BsdfSample s;
+    float3 f_cos;     // f |cos| of the direction, whichever strategy drew it
+    float bsdf_pdf;   // the BSDF's own density of it
     if (choose_lobe(ORB_CASTER_SHARE, choice)) {
         const float scaled = *choice * (float)count;
         const int k = min((int)scaled, count - 1);
@@ -71,28 +74,27 @@ inline BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, flo
         // lost sample, which the mixture's density accounts for (that
         // caster's cone density is 0 here).
         if (distance2 <= radius * radius) return bsdf_no_sample();
-        BsdfSample s;
         s.wi = sample_uniform_cone(pc * rsqrt(distance2), cone_one_minus_cos(distance2, radius), u, v);
-        float bsdf_pdf;
-        const float3 f_cos = bsdf_eval(b, wo, s.wi, n, outside, &bsdf_pdf);
-        s.pdf = continuation_pdf(scene, p, bsdf_pdf, s.wi);
-        if (!(s.pdf > 0.0f)) return bsdf_no_sample();
-        s.weight = f_cos * (1.0f / s.pdf);
+        f_cos = bsdf_eval(b, wo, s.wi, n, outside, &bsdf_pdf);
         s.delta = false;
         // eta2 only steers the roulette's survival chance, which any value
         // keeps unbiased; the BSDF's refraction factor is not known here.
         s.eta2 = 1.0f;
-        return s;
+    } else {
+        s = bsdf_sample(b, wo, n, outside, u, v, choice);
+        if (s.delta) {
+            // A delta lobe (a smooth coat) is reached only through the
+            // BSDF's share: its probability is scaled by it.
+            s.weight *= 1.0f / (1.0f - ORB_CASTER_SHARE);
+            return s;
+        }
+        bsdf_pdf = s.pdf;
+        f_cos = s.weight * s.pdf;
     }
-    BsdfSample s = bsdf_sample(b, wo, n, outside, u, v, choice);
-    if (s.delta) {
-        // A delta lobe (a smooth coat) is reached only through the BSDF's
-        // share: its probability is scaled by it.
-        s.weight *= 1.0f / (1.0f - ORB_CASTER_SHARE);
-        return s;
-    }
-    const float mixed = continuation_pdf(scene, p, s.pdf, s.wi);
-    s.weight *= s.pdf / mixed;
-    s.pdf = mixed;
+    // One density for both strategies, after the branch: on a GPU the two
+    // sides of a warp then share this code instead of running it twice.
+    s.pdf = continuation_pdf(scene, p, bsdf_pdf, s.wi);
+    if (!(s.pdf > 0.0f)) return bsdf_no_sample();
+    s.weight = f_cos * (1.0f / s.pdf);
     return s;
 }
