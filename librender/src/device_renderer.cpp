@@ -8,15 +8,20 @@ namespace orb::render {
 namespace {
 
 // NVIDIA's compiler gives render_pass more registers than let an SM keep
-// enough warps in flight. Capped at 80, tree-less scenes measured best (the
-// Cornell box: 64 is 2% slower); with a tree the traversal's memory waits
-// want more warps still, and 64 measured 8-9% faster at 100 k and 1 M
-// spheres (docs/performance.md, H200, 2026-11-23).
-std::string nvidia_register_cap(const cl::Device& device, bool has_tree)
+// enough warps in flight, or, capped too low, spills. Measured on an H100
+// (docs/performance.md, "Register caps, 2026-11-23 night"): with a tree the
+// traversal's memory waits want warps, and 56-64 beat 72-80 by 3-8% at
+// 100 k and 1 M spheres; without one, the Cornell boxes (nine spheres,
+// three packets, long paths) ran best at 72 (+3% over 80, 96 lost 3%) and
+// the small open scenes (three to five spheres in one or two packets, short
+// paths) at 96 (+4% to +13% over 80). Why the two kinds differ was not
+// profiled (Nsight Compute does not see OpenCL kernels).
+std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
 {
     const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
     if (extensions.find("cl_nv_compiler_options") == std::string::npos) return "";
-    return has_tree ? " -cl-nv-maxrregcount=64" : " -cl-nv-maxrregcount=80";
+    if (scene.counts.bvh_node_count > 0) return " -cl-nv-maxrregcount=64";
+    return scene.counts.packet_count <= 2 ? " -cl-nv-maxrregcount=96" : " -cl-nv-maxrregcount=72";
 }
 
 // Pass lengths aimed at: short on GPUs so no display watchdog fires and
@@ -96,7 +101,7 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           " -DORB_ROUGH_DIELECTRIC=" + (scene.rough_dielectric ? "1" : "0") +
                           (config_.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
                           " -DORB_FILM_CHANNELS_BUILT=" + std::to_string(config_.film_channels) + "u" +
-                          nvidia_register_cap(device, scene.counts.bvh_node_count > 0);
+                          nvidia_register_cap(device, scene);
     if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
     return options;
 }
