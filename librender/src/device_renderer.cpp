@@ -96,8 +96,12 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           // half the Sobol renders of scenes with a tree without it,
                           // never in 34 with it; the cause is not known.
                           " -DORB_MATERIAL_KINDS=" + std::to_string(scene.material_kinds) +
-                          // No casters: no aiming code (4% of an H100's samples/s on simple.scn).
-                          (scene.counts.caster_count > 0 ? "" : " -DORB_CASTER_SHARE=0.0f") +
+                          // No aiming code without casters (4% of an H100's samples/s on
+                          // simple.scn), nor in direct mode, which counts no light that
+                          // passed a caster after the first diffuse vertex.
+                          (scene.counts.caster_count > 0 && config_.mode == IntegratorMode::Global
+                               ? ""
+                               : " -DORB_CASTER_SHARE=0.0f") +
                           " -DORB_ROUGH_DIELECTRIC=" + (scene.rough_dielectric ? "1" : "0") +
                           (config_.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
                           " -DORB_FILM_CHANNELS_BUILT=" + std::to_string(config_.film_channels) + "u" +

@@ -158,4 +158,27 @@ TEST(CausticCasters, AimingAtAGlassBallKeepsTheImageAndLowersTheCausticsNoise)
         << mean_variance_of_mean(aimed, floor_pixels) / mean_variance_of_mean(unaimed, floor_pixels);
 }
 
+// Direct mode counts no light that passed a caster after the first diffuse
+// vertex, so its program carries no aiming: the same image, exactly, as the
+// program built without it.
+TEST(CausticCasters, DirectModeDoesNotAim)
+{
+    Scene scene;
+    add_sphere(scene, {0, -1000, 0}, 1000, add_material(scene, MaterialType::Diffuse, {0.75, 0.75, 0.75}));
+    add_sphere(scene, {0, 30, 0}, 15, add_material(scene, MaterialType::Dielectric, {0.9, 0.9, 0.9}));
+    add_sphere(scene, {0, 100, 0}, 15, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {15, 15, 15}));
+    scene.camera.position = {20, 80, 160};
+    scene.camera.target = {0, 20, 0};
+    scene.camera.vfov_deg = 30.0;
+    ASSERT_EQ(layout_scene(scene).counts.caster_count, 1);
+    const RenderConfig direct = small_config(32, 24, 5, 6, IntegratorMode::Direct);
+    const Film built = render_with_options(scene, direct, {16}, nullptr);
+    const Film unaimed = render_with_options(scene, direct, {16}, kNoAiming);
+    EXPECT_EQ(built.radiance, unaimed.radiance);
+    // In global mode the same scene's image does change.
+    const RenderConfig global = small_config(32, 24, 5, 6, IntegratorMode::Global);
+    EXPECT_NE(render_with_options(scene, global, {16}, nullptr).radiance,
+              render_with_options(scene, global, {16}, kNoAiming).radiance);
+}
+
 }  // namespace orb::render::test
