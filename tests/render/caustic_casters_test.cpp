@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <string>
 
 #include "render_test_support.h"
@@ -19,20 +18,6 @@ namespace {
 constexpr double kSigmas = 5.0;
 
 double rounding(double value, std::uint64_t samples) { return value * static_cast<double>(samples) * 0x1p-24; }
-
-Film render_with_options(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
-                         const char* options)
-{
-    if (options) ::setenv("ORB_CL_OPTIONS", options, 1);
-    try {
-        Film film = render(scene, config, passes);
-        ::unsetenv("ORB_CL_OPTIONS");
-        return film;
-    } catch (...) {
-        ::unsetenv("ORB_CL_OPTIONS");
-        throw;
-    }
-}
 
 constexpr const char* kNoAiming = "-DORB_CASTER_SHARE=0.0f";
 
@@ -141,8 +126,8 @@ TEST(CausticCasters, AimingAtAGlassBallKeepsTheImageAndLowersTheCausticsNoise)
     scene.camera.vfov_deg = 30.0;
 
     const RenderConfig config = small_config(64, 48, 17, 6);
-    const Film aimed = render_with_options(scene, config, {128, 128}, nullptr);
-    const Film unaimed = render_with_options(scene, config, {128, 128}, kNoAiming);
+    const Film aimed = render_with_cl_options(scene, config, {128, 128}, nullptr);
+    const Film unaimed = render_with_cl_options(scene, config, {128, 128}, kNoAiming);
     for (int id : {floor, glass}) {
         const std::vector<std::size_t> pixels = interior_pixels_of(aimed, id);
         ASSERT_GT(pixels.size(), 50u) << "sphere " << id;
@@ -172,13 +157,13 @@ TEST(CausticCasters, DirectModeDoesNotAim)
     scene.camera.vfov_deg = 30.0;
     ASSERT_EQ(layout_scene(scene).counts.caster_count, 1);
     const RenderConfig direct = small_config(32, 24, 5, 6, IntegratorMode::Direct);
-    const Film built = render_with_options(scene, direct, {16}, nullptr);
-    const Film unaimed = render_with_options(scene, direct, {16}, kNoAiming);
+    const Film built = render_with_cl_options(scene, direct, {16}, nullptr);
+    const Film unaimed = render_with_cl_options(scene, direct, {16}, kNoAiming);
     EXPECT_EQ(built.radiance, unaimed.radiance);
     // In global mode the same scene's image does change.
     const RenderConfig global = small_config(32, 24, 5, 6, IntegratorMode::Global);
-    EXPECT_NE(render_with_options(scene, global, {16}, nullptr).radiance,
-              render_with_options(scene, global, {16}, kNoAiming).radiance);
+    EXPECT_NE(render_with_cl_options(scene, global, {16}, nullptr).radiance,
+              render_with_cl_options(scene, global, {16}, kNoAiming).radiance);
 }
 
 }  // namespace orb::render::test

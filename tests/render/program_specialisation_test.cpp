@@ -4,7 +4,6 @@
 // the image the program with every kind renders.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <string>
 
 #include "render_test_support.h"
@@ -43,15 +42,7 @@ Scene room_with(std::initializer_list<MaterialType> kinds, double glass_roughnes
 }
 
 Film render_with_options(const Scene& scene, const char* options) {
-    if (options) ::setenv("ORB_CL_OPTIONS", options, 1);
-    try {
-        Film film = test::render(scene, small_config(40, 30, 3), {4});
-        ::unsetenv("ORB_CL_OPTIONS");
-        return film;
-    } catch (...) {
-        ::unsetenv("ORB_CL_OPTIONS");
-        throw;
-    }
+    return render_with_cl_options(scene, small_config(40, 30, 3), {4}, options);
 }
 
 // Every kind, rough glass and the environment built in (the later -D wins).

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -51,6 +52,20 @@ Film render(const Scene& scene, const RenderConfig& config, const std::vector<in
     Renderer renderer(scene, config);
     for (int samples : passes) renderer.render_pass(samples);
     return renderer.read_film();
+}
+
+Film render_with_cl_options(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
+                            const char* cl_options)
+{
+    if (cl_options) ::setenv("ORB_CL_OPTIONS", cl_options, 1);
+    try {
+        Film film = render(scene, config, passes);
+        ::unsetenv("ORB_CL_OPTIONS");
+        return film;
+    } catch (...) {
+        ::unsetenv("ORB_CL_OPTIONS");
+        throw;
+    }
 }
 
 Scene load_scene_file(const std::string& path)

@@ -21,6 +21,12 @@ RenderConfig small_config(int width, int height, std::uint64_t seed = 7, int max
 // Renders `passes` (samples per pass, in order) with a fresh renderer.
 Film render(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes);
 
+// The same with `cl_options` appended to the kernels' build options (the
+// development knob ORB_CL_OPTIONS, set for this render only; nullptr: none),
+// to compare a program with a variant of it.
+Film render_with_cl_options(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
+                            const char* cl_options);
+
 Scene load_scene_file(const std::string& path);  // .scn
 
 // Mean over the chosen pixels of each pixel's mean radiance in channel c,
