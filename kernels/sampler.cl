@@ -74,8 +74,10 @@ inline uint lk_permutation(uint x, uint seed)
 // digit): each digit is flipped by a random function of the digits before
 // it. Applied to a point it keeps every stratification the point set has;
 // applied to a sample index it shuffles the order of the samples within
-// every aligned power-of-two block.
-inline uint owen_scramble(uint x, uint seed) { return reverse_bits32(lk_permutation(reverse_bits32(x), seed)); }
+// every aligned power-of-two block. With the permutation above it is
+// owen_scramble(x) = reverse_bits32(lk_permutation(reverse_bits32(x), seed)),
+// which sobol_pair, sobol_single and shuffled_index below compute with the
+// reversals merged where they cancel.
 
 // A 32-bit mixing function (Wellons's "lowbias32"), to derive independent
 // seeds from one hash.

@@ -129,15 +129,15 @@ void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraPar
     params_.camera = camera;
     params_.scene = scene.counts;
     params_.environment = scene.environment;
-    if (&program == program_ && !kernel_prepared_) prepare_kernel();
+    if (!kernel_prepared_) prepare_kernel();
 }
 
 // One launch of a single work-group that renders no sample (each of its
 // pixels adds exact zeros, no centre ray), so that the driver's work done at
 // a kernel's first launch (PoCL generates and loads the work-group code
-// there, per work-group size) happens while the renderer is set up, not in
-// the first pass: on a 320x240 image on two cores it cost that pass about
-// as much as rendering it.
+// there, per work-group size: seconds for a program not yet in its cache)
+// happens while the renderer is set up, not in the first pass, whose time
+// the pass tuner and the render's seconds would otherwise count.
 void DeviceRenderer::prepare_kernel()
 {
     device::RenderPassParams idle = params_;

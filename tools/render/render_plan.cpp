@@ -74,6 +74,13 @@ void require_same(const std::optional<T>& given, const T& in_file, const std::st
     }
 }
 
+// The layers the output will hold, and with them the film channels the
+// kernels compute (the others would never be written).
+void set_passes(RenderPlan& plan, std::vector<exr::Pass> passes) {
+    plan.passes = std::move(passes);
+    plan.config.film_channels = film::channels_for(plan.passes);
+}
+
 void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& plan) {
     const std::string& path = o.resume;
     exr::ExrFilm file = exr::read_film_exr(path);
@@ -113,8 +120,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     if (plan.target_spp < file.film.samples_per_pixel)
         throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
                          " samples per pixel, more than the " + std::to_string(plan.target_spp) + " asked for");
-    plan.passes = o.passes ? exr::parse_passes(*o.passes) : file.passes;
-    plan.config.film_channels = film::channels_for(plan.passes);
+    set_passes(plan, o.passes ? exr::parse_passes(*o.passes) : file.passes);
     exr::require_resumable(file, plan.passes, path);
     plan.resumed = std::move(file);
 }
@@ -148,8 +154,7 @@ RenderPlan make_render_plan(const RenderOptions& o) {
         plan.first_sample = slice.first;
         plan.target_spp = slice.count;
     }
-    plan.passes = o.passes ? exr::parse_passes(*o.passes) : exr::all_passes();
-    plan.config.film_channels = film::channels_for(plan.passes);
+    set_passes(plan, o.passes ? exr::parse_passes(*o.passes) : exr::all_passes());
     if (renders_frames(o)) {
         plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
         plan.fps = o.fps.value_or(kDefaultFps);
