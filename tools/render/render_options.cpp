@@ -113,7 +113,7 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
         ->check(CLI::Range(1, 65536));
     app.add_flag("--half", o.half, "Store colour layers as HALF (Z and id stay FLOAT)");
     app.add_option("--passes", o.passes,
-                   "Layers to write: beauty,direct,indirect,emission,albedo,normal,depth,variance,id or all");
+                   "Layers to write (only these are computed; with --benchmark, the layers to time): beauty,direct,indirect,emission,albedo,normal,depth,variance,id or all");
     app.add_option("--stats-json", o.stats_json, "Write the run's figures as JSON to FILE (- for stdout)");
     app.add_flag("--benchmark", o.benchmark, "Time warm-up and timed passes, write no image, print samples_per_second=");
     app.add_option("--benchmark-seconds", o.benchmark_seconds, "Timed part of --benchmark (default 5)")
