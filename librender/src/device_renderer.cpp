@@ -24,6 +24,27 @@ std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& sce
     return scene.counts.packet_count <= 2 ? " -cl-nv-maxrregcount=96" : " -cl-nv-maxrregcount=72";
 }
 
+// The lanes of render_pass_simd (kernels/integrator_simd.cl) for this scene
+// on this device, or 0 for render_pass. CPUs only: a GPU already runs
+// work-items in its lanes. The device's native float vector width (16 with
+// AVX-512, 8 with AVX2), and only for the scenes that kernel covers:
+// diffuse, mirror and smooth glass spheres lit by spheres, no tree, no
+// environment, global mode.
+int simd_lanes(const DeviceInfo& info, const cl::Device& device, const SceneLayout& scene, IntegratorMode mode)
+{
+    if (info.is_gpu) return 0;
+    int lanes = static_cast<int>(device.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
+    if (const char* knob = std::getenv("ORB_SIMD_LANES")) lanes = std::atoi(knob);  // development knob: 0 is off
+    lanes = lanes >= 16 ? 16 : lanes >= 8 ? 8 : lanes >= 4 ? 4 : 0;
+    const auto bit = [](device::MaterialKind kind) { return 1u << static_cast<int>(kind); };
+    const std::uint32_t covered =
+        bit(device::MaterialKind::Diffuse) | bit(device::MaterialKind::Mirror) | bit(device::MaterialKind::Dielectric);
+    const bool covered_scene = (scene.material_kinds & ~covered) == 0 && !scene.rough_dielectric &&
+                               scene.counts.bvh_node_count == 0 && scene.environment.width == 0 &&
+                               mode == IntegratorMode::Global;
+    return covered_scene ? lanes : 0;
+}
+
 // Pass lengths aimed at: short on GPUs so no display watchdog fires and
 // progress stays smooth; longer on CPUs, where per-pass overhead matters more.
 constexpr double kGpuPassSeconds = 0.05;
@@ -105,17 +126,21 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           " -DORB_ROUGH_DIELECTRIC=" + (scene.rough_dielectric ? "1" : "0") +
                           (config_.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
                           " -DORB_FILM_CHANNELS_BUILT=" + std::to_string(config_.film_channels) + "u" +
-                          nvidia_register_cap(device, scene);
+                          nvidia_register_cap(device, scene) +
+                          (simd_lanes_ > 0
+                               ? " -DORB_SIMD_KERNEL=1 -DORB_SIMD_WIDTH=" + std::to_string(simd_lanes_)
+                               : std::string());
     if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
     return options;
 }
 
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)
 {
+    simd_lanes_ = simd_lanes(session_->info(), session_->device(), scene, config_.mode);
     const cl::Program& program = session_->program(build_options(scene));
     try {
         if (&program != program_) {
-            kernel_ = cl::Kernel(program, "render_pass");
+            kernel_ = cl::Kernel(program, simd_lanes_ > 0 ? "render_pass_simd" : "render_pass");
             program_ = &program;
             kernel_prepared_ = false;
             choose_work_sizes();
@@ -166,8 +191,10 @@ void DeviceRenderer::choose_work_sizes()
     // One work-item per pixel. GPUs: 16x8 tiles keep a warp on neighbouring
     // pixels, whose paths stay coherent. CPUs (PoCL runs a work-group as a
     // loop on one core): short rows give the scheduler many groups to share.
+    // render_pass_simd: one work-item per simd_lanes_ pixels of a row.
     const bool gpu = device().is_gpu;
     size_t lx = gpu ? 16 : 8, ly = gpu ? 8 : 1;
+    if (simd_lanes_ > 0) lx = 1, ly = 1;
     if (const char* env = std::getenv("ORB_LOCAL_SIZE")) {  // development knob for tuning, "XxY"
         unsigned ex = 0, ey = 0;
         if (std::sscanf(env, "%ux%u", &ex, &ey) == 2 && ex > 0 && ey > 0) lx = ex, ly = ey;
@@ -177,7 +204,9 @@ void DeviceRenderer::choose_work_sizes()
     while (lx * ly > max_group && lx > 1) lx /= 2;
     local_size_ = cl::NDRange(lx, ly);
     const auto round_up = [](size_t n, size_t m) { return (n + m - 1) / m * m; };
-    global_size_ = cl::NDRange(round_up(static_cast<size_t>(config_.width), lx),
+    const size_t columns = simd_lanes_ > 0 ? (static_cast<size_t>(config_.width) + simd_lanes_ - 1) / simd_lanes_
+                                           : static_cast<size_t>(config_.width);
+    global_size_ = cl::NDRange(round_up(columns, lx),
                                round_up(static_cast<size_t>(config_.height), ly));
 }
 

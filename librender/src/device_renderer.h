@@ -65,6 +65,7 @@ private:
     const cl::Program* program_ = nullptr;
     bool kernel_prepared_ = false;  // prepare_kernel() has run for program_
     cl::Kernel kernel_;
+    int simd_lanes_ = 0;  // > 0: kernel_ is render_pass_simd with this many lanes
     SceneBuffers scene_buffers_;
     std::uint64_t scene_bytes_ = 0;
     device::RenderPassParams params_{};

@@ -129,6 +129,7 @@ struct PlaneCase {
     double radius;
     double height;
     IntegratorMode mode;
+    const char* simd_lanes;  // the CPU kernel (render_with_simd_lanes); nullptr: the default
 };
 
 class PlaneUnderSphereLight : public ::testing::TestWithParam<PlaneCase> {};
@@ -167,7 +168,7 @@ TEST_P(PlaneUnderSphereLight, MatchesClosedForm)
     scene.camera = looking_at({0, 1, 3}, {0, 0, 0}, 2.0);  // a small patch around the point below the light
 
     const int size = 16;
-    const Film film = render(scene, small_config(size, size, 21, 6, c.mode), {256, 256});
+    const Film film = render_with_simd_lanes(scene, small_config(size, size, 21, 6, c.mode), {256, 256}, c.simd_lanes);
     const std::vector<std::size_t> pixels = interior_pixels_of(film, plane);
     ASSERT_EQ(pixels.size(), 14u * 14u);
     // Over one pixel the closed form is close to linear, so the pixel mean is
@@ -188,10 +189,16 @@ TEST_P(PlaneUnderSphereLight, MatchesClosedForm)
 }
 
 INSTANTIATE_TEST_SUITE_P(Lights, PlaneUnderSphereLight,
-                         ::testing::Values(PlaneCase{1.0, 4.0, IntegratorMode::Global},
-                                           PlaneCase{0.1, 5.0, IntegratorMode::Global},
-                                           PlaneCase{2.0, 2.5, IntegratorMode::Global},
-                                           PlaneCase{1.0, 4.0, IntegratorMode::Direct}));
+                         ::testing::Values(PlaneCase{1.0, 4.0, IntegratorMode::Global, nullptr},
+                                           PlaneCase{0.1, 5.0, IntegratorMode::Global, nullptr},
+                                           PlaneCase{2.0, 2.5, IntegratorMode::Global, nullptr},
+                                           PlaneCase{1.0, 4.0, IntegratorMode::Direct, nullptr},
+                                           // The CPU's kernels one by one (the default above is
+                                           // render_pass_simd with the device's width on PoCL).
+                                           PlaneCase{0.1, 5.0, IntegratorMode::Global, "0"},
+                                           PlaneCase{0.1, 5.0, IntegratorMode::Global, "4"},
+                                           PlaneCase{0.1, 5.0, IntegratorMode::Global, "8"},
+                                           PlaneCase{0.1, 5.0, IntegratorMode::Global, "16"}));
 
 // Many lights of different power, picked per vertex by power (the alias
 // table): the plane's radiance is the sum of every light's closed form. 25

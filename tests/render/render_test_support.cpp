@@ -54,18 +54,30 @@ Film render(const Scene& scene, const RenderConfig& config, const std::vector<in
     return renderer.read_film();
 }
 
+Film render_with_env(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes, const char* name,
+                     const char* value)
+{
+    if (value) ::setenv(name, value, 1);
+    try {
+        Film film = render(scene, config, passes);
+        ::unsetenv(name);
+        return film;
+    } catch (...) {
+        ::unsetenv(name);
+        throw;
+    }
+}
+
 Film render_with_cl_options(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
                             const char* cl_options)
 {
-    if (cl_options) ::setenv("ORB_CL_OPTIONS", cl_options, 1);
-    try {
-        Film film = render(scene, config, passes);
-        ::unsetenv("ORB_CL_OPTIONS");
-        return film;
-    } catch (...) {
-        ::unsetenv("ORB_CL_OPTIONS");
-        throw;
-    }
+    return render_with_env(scene, config, passes, "ORB_CL_OPTIONS", cl_options);
+}
+
+Film render_with_simd_lanes(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
+                            const char* lanes)
+{
+    return render_with_env(scene, config, passes, "ORB_SIMD_LANES", lanes);
 }
 
 Scene load_scene_file(const std::string& path)

@@ -27,6 +27,18 @@ Film render(const Scene& scene, const RenderConfig& config, const std::vector<in
 Film render_with_cl_options(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
                             const char* cl_options);
 
+// The same with the environment variable `name` set to `value` for this
+// render only (nullptr: left as it is).
+Film render_with_env(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes, const char* name,
+                     const char* value);
+
+// The same with the CPU kernel's lanes chosen (the development knob
+// ORB_SIMD_LANES): "0" renders with render_pass, "4", "8" or "16" with
+// render_pass_simd of that width where the scene is one it covers; nullptr:
+// the device's default.
+Film render_with_simd_lanes(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
+                            const char* lanes);
+
 Scene load_scene_file(const std::string& path);  // .scn
 
 // Mean over the chosen pixels of each pixel's mean radiance in channel c,
