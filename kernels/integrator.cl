@@ -333,7 +333,7 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     }
     ORB_FILM_ADD_SUMS
 
-    if (params.pass.write_centre_ray && (ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id))) {
+    if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
         const FilmCentre centre = film_centre_ray(&scene, &cam, x, y, width, height);
         ORB_FILM_SET_CENTRE
     }

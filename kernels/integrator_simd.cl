@@ -310,9 +310,9 @@ SIMD_FN vint v_choose_lobe(vfloat p, vfloat* u)
 
 // ---- The scene over lanes ----
 
-// The closest sphere along each lane's ray (intersect.cl's packet test, one
-// sphere at a time for all lanes): *id -1 where nothing is hit.
-SIMD_FN void v_intersect(const SceneView* scene, v3 o, v3 d, vint self, vfloat* t_out, vint* id_out)
+// The closest sphere along each lane's ray in `lanes` (intersect.cl's packet
+// test, one sphere at a time for all lanes): *id -1 where nothing is hit.
+SIMD_FN void v_intersect(const SceneView* scene, v3 o, v3 d, vint self, vint lanes, vfloat* t_out, vint* id_out)
 {
     vfloat best = (vfloat)(ORB_NO_HIT);
     vint id = (vint)(-1);
@@ -337,8 +337,71 @@ SIMD_FN void v_intersect(const SceneView* scene, v3 o, v3 d, vint self, vfloat* 
             id = select(id, (vint)(sphere), hit);
         }
     }
+#if ORB_BVH
+    // The tree, lane by lane with render_pass's traversal: lanes' rays go
+    // through different nodes, and a node's four boxes are one vector test
+    // already. Each lane starts from its closest hit outside the tree, as
+    // intersect_scene does, so the traversal prunes by it.
+    if (scene->bvh_node_count > 0 && any(lanes)) {
+        float ox[ORB_SIMD_WIDTH], oy[ORB_SIMD_WIDTH], oz[ORB_SIMD_WIDTH];
+        float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH], t_lane[ORB_SIMD_WIDTH];
+        int self_lane[ORB_SIMD_WIDTH], id_lane[ORB_SIMD_WIDTH], traced[ORB_SIMD_WIDTH];
+        vstore_lanes(o.x, 0, ox), vstore_lanes(o.y, 0, oy), vstore_lanes(o.z, 0, oz);
+        vstore_lanes(d.x, 0, dx), vstore_lanes(d.y, 0, dy), vstore_lanes(d.z, 0, dz);
+        vstore_lanes(best, 0, t_lane), vstore_lanes(id, 0, id_lane), vstore_lanes(self, 0, self_lane);
+        vstore_lanes(lanes, 0, traced);
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+            const float3 lane_o = (float3)(ox[l], oy[l], oz[l]), lane_d = (float3)(dx[l], dy[l], dz[l]);
+            if (!traced[l] || !(all(isfinite(lane_o)) && all(isfinite(lane_d)))) continue;
+            BestHit lane_best;
+            best_init(&lane_best);
+#ifdef ORB_INTERSECT_SCALAR
+            lane_best.t = t_lane[l];
+            lane_best.id = id_lane[l];
+#else
+            lane_best.t.x = t_lane[l];
+            lane_best.id.x = id_lane[l];
+#endif
+            traverse_bvh(&lane_best, scene, lane_o, lane_d, self_lane[l]);
+            const Hit hit = best_hit(&lane_best);
+            t_lane[l] = hit.t;
+            id_lane[l] = hit.id;
+        }
+        best = vload_lanes(0, t_lane);
+        id = vload_lanes(0, id_lane);
+    }
+#endif
     *t_out = best;
     *id_out = id;
+}
+
+// Shadow rays: whether sphere `light` is the first thing along each lane's
+// ray (light_visible). Without a tree the closest hit over the few spheres
+// is as quick; with one, each lane's any-hit traversal stops at the first
+// blocker.
+SIMD_FN vint v_light_visible(const SceneView* scene, v3 o, v3 d, vint self, vint light, vint lanes)
+{
+#if ORB_BVH
+    if (scene->bvh_node_count > 0) {
+        float ox[ORB_SIMD_WIDTH], oy[ORB_SIMD_WIDTH], oz[ORB_SIMD_WIDTH];
+        float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH];
+        int self_lane[ORB_SIMD_WIDTH], light_lane[ORB_SIMD_WIDTH], visible[ORB_SIMD_WIDTH];
+        vstore_lanes(o.x, 0, ox), vstore_lanes(o.y, 0, oy), vstore_lanes(o.z, 0, oz);
+        vstore_lanes(d.x, 0, dx), vstore_lanes(d.y, 0, dy), vstore_lanes(d.z, 0, dz);
+        vstore_lanes(self, 0, self_lane), vstore_lanes(light, 0, light_lane), vstore_lanes(lanes, 0, visible);
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l)
+            if (visible[l])
+                visible[l] = light_visible(scene, (float3)(ox[l], oy[l], oz[l]), (float3)(dx[l], dy[l], dz[l]),
+                                           self_lane[l], light_lane[l])
+                                 ? -1
+                                 : 0;
+        return vload_lanes(0, visible);
+    }
+#endif
+    vfloat t;
+    vint first;
+    v_intersect(scene, o, d, self, lanes, &t, &first);
+    return lanes & (first == light);
 }
 
 // A sphere's geometry and material for each lane (load_sphere), gathered by
@@ -353,8 +416,37 @@ typedef struct {
     vfloat light_probability;
 } VSphere;
 
+// Above this many sphere slots a select per sphere costs more than
+// gathering each lane's record on its own.
+#define ORB_SIMD_SELECT_GATHER_MAX 64
+
 SIMD_FN VSphere v_load_spheres(const SceneView* scene, vint id)
 {
+    if (scene->sphere_count > ORB_SIMD_SELECT_GATHER_MAX) {
+        int ids[ORB_SIMD_WIDTH], kind[ORB_SIMD_WIDTH];
+        float f[12][ORB_SIMD_WIDTH];
+        vstore_lanes(id, 0, ids);
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+            SCENE_MEM const SphereRecord* r = &scene->spheres[max(ids[l], 0)];
+            SCENE_MEM const MaterialRecord* material = &scene->materials[r->material];
+            const float4 cr = r->centre_radius;
+            f[0][l] = cr.x, f[1][l] = cr.y, f[2][l] = cr.z, f[3][l] = cr.w;
+            f[4][l] = material->color.x, f[5][l] = material->color.y, f[6][l] = material->color.z;
+            f[7][l] = material->emission.x, f[8][l] = material->emission.y, f[9][l] = material->emission.z;
+            f[10][l] = material->ior;
+            f[11][l] = r->light_probability;
+            kind[l] = material->kind;
+        }
+        VSphere s;
+        s.centre = v3_make(vload_lanes(0, f[0]), vload_lanes(0, f[1]), vload_lanes(0, f[2]));
+        s.radius = vload_lanes(0, f[3]);
+        s.color = v3_make(vload_lanes(0, f[4]), vload_lanes(0, f[5]), vload_lanes(0, f[6]));
+        s.emission = v3_make(vload_lanes(0, f[7]), vload_lanes(0, f[8]), vload_lanes(0, f[9]));
+        s.ior = vload_lanes(0, f[10]);
+        s.light_probability = vload_lanes(0, f[11]);
+        s.kind = vload_lanes(0, kind);
+        return s;
+    }
     VSphere s;
     s.centre = v3_zero();
     s.radius = (vfloat)(1.0f);
@@ -496,27 +588,59 @@ SIMD_FN v3 v_sample_lights(const SceneView* scene, v3 p, vint self, v3 color, v3
 #if ORB_UNIFORM_LIGHTS
     u = fmin(rest, 0x1.fffffep-1f);
     pick_pdf = (vfloat)(1.0f / (float)light_count);
-    light_sphere = (vint)(scene->lights[0].sphere);
-    for (int k = 1; k < light_count; ++k) light_sphere = select(light_sphere, (vint)(scene->lights[k].sphere), slot == k);
-#else
-    vfloat threshold = (vfloat)(scene->lights[0].alias_threshold);
-    vint alias = (vint)(scene->lights[0].alias);
-    for (int k = 1; k < light_count; ++k) {
-        const vint m = slot == k;
-        threshold = select(threshold, (vfloat)(scene->lights[k].alias_threshold), m);
-        alias = select(alias, (vint)(scene->lights[k].alias), m);
-    }
-    const vint own = rest < threshold;
-    const vint pick = select(alias, slot, own);
-    u = fmin(select((rest - threshold) / (1.0f - threshold), rest / threshold, own), 0x1.fffffep-1f);
-    pick_pdf = (vfloat)(scene->lights[0].probability);
-    light_sphere = (vint)(scene->lights[0].sphere);
-    for (int k = 1; k < light_count; ++k) {
-        const vint m = pick == k;
-        pick_pdf = select(pick_pdf, (vfloat)(scene->lights[k].probability), m);
-        light_sphere = select(light_sphere, (vint)(scene->lights[k].sphere), m);
-    }
 #endif
+    if (light_count > ORB_SIMD_SELECT_GATHER_MAX) {
+        // Many lights: each lane reads its alias-table slot on its own.
+        int slot_lane[ORB_SIMD_WIDTH], sphere_lane[ORB_SIMD_WIDTH];
+        float rest_lane[ORB_SIMD_WIDTH], pdf_lane[ORB_SIMD_WIDTH], u_lane[ORB_SIMD_WIDTH];
+        vstore_lanes(slot, 0, slot_lane);
+        vstore_lanes(rest, 0, rest_lane);
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+            SCENE_MEM const LightRecord* entry = &scene->lights[slot_lane[l]];
+#if ORB_UNIFORM_LIGHTS
+            sphere_lane[l] = entry->sphere;
+            pdf_lane[l] = 0.0f;
+            u_lane[l] = 0.0f;
+#else
+            const bool own = rest_lane[l] < entry->alias_threshold;
+            SCENE_MEM const LightRecord* light = &scene->lights[own ? slot_lane[l] : entry->alias];
+            sphere_lane[l] = light->sphere;
+            pdf_lane[l] = light->probability;
+            u_lane[l] = fmin(own ? rest_lane[l] / entry->alias_threshold
+                                 : (rest_lane[l] - entry->alias_threshold) / (1.0f - entry->alias_threshold),
+                             0x1.fffffep-1f);
+#endif
+        }
+        light_sphere = vload_lanes(0, sphere_lane);
+#if !ORB_UNIFORM_LIGHTS
+        pick_pdf = vload_lanes(0, pdf_lane);
+        u = vload_lanes(0, u_lane);
+#endif
+    } else {
+#if ORB_UNIFORM_LIGHTS
+        light_sphere = (vint)(scene->lights[0].sphere);
+        for (int k = 1; k < light_count; ++k)
+            light_sphere = select(light_sphere, (vint)(scene->lights[k].sphere), slot == k);
+#else
+        vfloat threshold = (vfloat)(scene->lights[0].alias_threshold);
+        vint alias = (vint)(scene->lights[0].alias);
+        for (int k = 1; k < light_count; ++k) {
+            const vint m = slot == k;
+            threshold = select(threshold, (vfloat)(scene->lights[k].alias_threshold), m);
+            alias = select(alias, (vint)(scene->lights[k].alias), m);
+        }
+        const vint own = rest < threshold;
+        const vint pick = select(alias, slot, own);
+        u = fmin(select((rest - threshold) / (1.0f - threshold), rest / threshold, own), 0x1.fffffep-1f);
+        pick_pdf = (vfloat)(scene->lights[0].probability);
+        light_sphere = (vint)(scene->lights[0].sphere);
+        for (int k = 1; k < light_count; ++k) {
+            const vint m = pick == k;
+            pick_pdf = select(pick_pdf, (vfloat)(scene->lights[k].probability), m);
+            light_sphere = select(light_sphere, (vint)(scene->lights[k].sphere), m);
+        }
+#endif
+    }
     const VSphere light = v_load_spheres(scene, light_sphere);
     // sample_light_direction
     const v3 pc = v3_sub(light.centre, p);
@@ -532,10 +656,7 @@ SIMD_FN v3 v_sample_lights(const SceneView* scene, v3 p, vint self, v3 color, v3
     const v3 f_cos = v3_scale(color, bsdf_pdf);
     vint carries = lanes & (v3_sum(f_cos) > 0.0f);
     if (!any(carries)) return v3_zero();
-    vfloat t;
-    vint first;
-    v_intersect(scene, p, wi, self, &t, &first);
-    carries &= first == light_sphere;
+    carries = v_light_visible(scene, p, wi, self, light_sphere, carries);
     if (!any(carries)) return v3_zero();
     const vfloat light_pdf = pick_pdf * direction_pdf;
     const vfloat weight = v_power_heuristic(light_pdf, v_continuation_pdf(scene, p, bsdf_pdf, wi));
@@ -591,7 +712,7 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
 {
     vfloat t;
     vint id;
-    v_intersect(scene, path->o, path->d, path->self, &t, &id);
+    v_intersect(scene, path->o, path->d, path->self, active, &t, &id);
     // A ray that escapes carries nothing: these scenes have no environment.
     const vint hit = active & (id >= 0);
     if (!any(hit)) return hit;
@@ -841,7 +962,7 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
         FilmSums sums;
         ORB_FILM_CHANNELS(ORB_SIMD_PICK)
         ORB_FILM_ADD_SUMS
-        if (params.pass.write_centre_ray && (ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id))) {
+        if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
             const FilmCentre centre = film_centre_ray(&scene, &cam, x0 + lane, y, width, height);
             ORB_FILM_SET_CENTRE
         }
