@@ -1,6 +1,7 @@
 #include "orb/render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -8,6 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "animation_tree.h"
 #include "device_renderer.h"
 #include "device_session.h"
 #include "sample_split.h"
@@ -34,6 +36,8 @@ struct Renderer::Impl {
     SampleRanges ranges;                      // their union: what the film holds
     std::uint64_t cursor = 0;                 // where render_pass() continues
     bool film_clear = true;                   // every device film is at its clear values (new frames skip a clear)
+    AnimationTree tree;                       // the BVH, refitted from frame to frame while that pays
+    double frame_render_seconds = 0;          // spent in render_samples since the scene was set
 
     std::vector<int> split(int count) const;
     void wait_all(const std::vector<std::size_t>& busy);
@@ -80,7 +84,7 @@ Renderer::Renderer(const Scene& scene, const RenderConfig& config) : impl_(std::
     check_config(config);
     r.config = config;
     // The scene is checked before any device is touched, so bad input fails fast.
-    const SceneLayout layout = layout_scene(scene, config.use_bvh);
+    const SceneLayout layout = layout_scene(scene, r.tree.tree_for(scene, config.use_bvh, 0.0));
     const device::CameraParams camera = layout_camera(scene.camera, config.width, config.height);
     r.infos = choose_devices(config.device);
     const SessionOptions options{config.kernel_dir, config.use_binary_cache};
@@ -100,11 +104,14 @@ const RenderConfig& Renderer::config() const { return impl_->config; }
 void Renderer::set_scene(const Scene& scene)
 {
     Impl& r = *impl_;
-    const SceneLayout layout = layout_scene(scene, r.config.use_bvh);
+    const SceneLayout layout = layout_scene(scene, r.tree.tree_for(scene, r.config.use_bvh, r.frame_render_seconds));
+    r.frame_render_seconds = 0;
     const device::CameraParams camera = layout_camera(scene.camera, r.config.width, r.config.height);
     for (auto& device : r.devices) device->set_scene(layout, camera);
     clear();
 }
+
+bool Renderer::last_tree_refitted() const { return impl_->tree.last_refitted(); }
 
 void Renderer::set_seed(std::uint64_t seed)
 {
@@ -154,6 +161,7 @@ void Renderer::render_samples(std::uint64_t first_sample, int count)
                                     ":" + std::to_string(count) + " (it holds " + r.ranges.format() + ")");
 
     r.film_clear = false;
+    const auto start = std::chrono::steady_clock::now();
     // Each device takes the next contiguous slice of the range.
     const std::vector<int> shares = r.split(count);
     std::vector<std::size_t> busy;
@@ -166,6 +174,7 @@ void Renderer::render_samples(std::uint64_t first_sample, int count)
         busy.push_back(d);
     }
     r.wait_all(busy);
+    r.frame_render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.ranges.add(range);
     r.cursor = range.end();
 }

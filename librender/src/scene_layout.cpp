@@ -91,16 +91,22 @@ device::BvhNodeRecord empty_node_record() {
 
 }  // namespace
 
-SceneLayout layout_scene(const Scene& scene, bool use_bvh)
+SphereBvh scene_bvh(const Scene& scene, bool use_bvh)
+{
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) check_sphere(scene, i);
+    BvhSettings settings;
+    if (!use_bvh) settings.min_spheres_for_tree = std::numeric_limits<std::size_t>::max();
+    return build_sphere_bvh(scene.spheres, settings);
+}
+
+SceneLayout layout_scene(const Scene& scene, bool use_bvh) { return layout_scene(scene, scene_bvh(scene, use_bvh)); }
+
+SceneLayout layout_scene(const Scene& scene, const SphereBvh& bvh)
 {
     SceneLayout layout;
     SceneTables& tables = layout.tables;
     const std::size_t sphere_count = scene.spheres.size();
     for (std::size_t i = 0; i < sphere_count; ++i) check_sphere(scene, i);
-
-    BvhSettings settings;
-    if (!use_bvh) settings.min_spheres_for_tree = std::numeric_limits<std::size_t>::max();
-    const SphereBvh bvh = build_sphere_bvh(scene.spheres, settings);
 
     // Slots: the outside spheres packed four to a packet, then one packet per leaf.
     const std::size_t outside_packets = (bvh.outside.size() + 3) / 4;

@@ -6,6 +6,7 @@
 
 #include "orb/kernels/device_types.h"
 #include "orb/scene/scene.h"
+#include "sphere_bvh.h"
 
 namespace orb::render {
 
@@ -47,6 +48,13 @@ struct SceneLayout {
 // render (a material index out of range, a non-positive or non-finite radius),
 // std::invalid_argument for an environment map whose texels are not loaded.
 SceneLayout layout_scene(const Scene& scene, bool use_bvh = true);
+
+// The same in two steps: the tree layout_scene builds for the scene (empty
+// when it is too small for one, or use_bvh is false; the same checks and
+// errors), and the layout with a given tree over the scene's spheres -- one
+// scene_bvh built, or a tree refitted to them (refit_sphere_bvh).
+SphereBvh scene_bvh(const Scene& scene, bool use_bvh = true);
+SceneLayout layout_scene(const Scene& scene, const SphereBvh& bvh);
 
 // The environment's share of the light picks when spheres emit too. Its
 // power relative to the spheres' would need a scene radius, which the

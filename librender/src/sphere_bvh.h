@@ -116,4 +116,22 @@ int bvh_stack_bound(const SphereBvh& bvh);
 // Levels of the 4-wide tree (a tree of only a root node has 1).
 int bvh_depth(const SphereBvh& bvh);
 
+// The box a sphere has in the tree: its bounds, padded for the device's
+// float copy of the sphere and rounded outward to float (sphere_bvh_build.cpp).
+void sphere_float_box(const Sphere& sphere, float lo[3], float hi[3]);
+
+// Refitting (sphere_bvh_refit.cpp): the same tree over spheres that moved,
+// for the frames of an animation. The topology, each leaf's spheres and the
+// outside list stay; every box is recomputed from `spheres` (as many as the
+// tree was built over), bottom up. The result is a correct tree for any
+// motion, but a worse one the farther spheres move from where it was built.
+void refit_sphere_bvh(SphereBvh& bvh, std::span<const Sphere> spheres);
+
+// The tree's surface area heuristic cost relative to its root box: the
+// expected boxes and spheres a random ray through the root tests, sum over
+// nodes of area / root area times (4 box tests + the leaf spheres). A
+// refitted tree's cost over its cost when built says how much it has
+// degraded; 0 for an empty tree.
+double bvh_sah_cost(const SphereBvh& bvh);
+
 }  // namespace orb::render

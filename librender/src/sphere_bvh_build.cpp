@@ -314,6 +314,15 @@ std::vector<std::uint32_t> choose_outside(std::span<const Sphere> spheres, const
 
 }  // namespace
 
+void sphere_float_box(const Sphere& sphere, float lo[3], float hi[3])
+{
+    const Box box = sphere_box(sphere);
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = round_down(box.lo[a]);
+        hi[a] = round_up(box.hi[a]);
+    }
+}
+
 BinaryBvh build_binary_bvh(std::span<const Sphere> spheres, const BvhSettings& settings) {
     BinaryBvh bvh;
     bvh.outside = choose_outside(spheres, settings);
@@ -324,12 +333,8 @@ BinaryBvh build_binary_bvh(std::span<const Sphere> spheres, const BvhSettings& s
     prims.reserve(spheres.size() - bvh.outside.size());
     for (std::uint32_t i = 0; i < spheres.size(); ++i) {
         if (is_outside[i]) continue;
-        const Box box = sphere_box(spheres[i]);
         Prim p{};
-        for (int a = 0; a < 3; ++a) {
-            p.lo[a] = round_down(box.lo[a]);
-            p.hi[a] = round_up(box.hi[a]);
-        }
+        sphere_float_box(spheres[i], p.lo.data(), p.hi.data());
         p.index = i;
         prims.push_back(p);
     }

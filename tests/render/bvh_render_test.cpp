@@ -142,3 +142,32 @@ TEST(BvhRender, TheIdPassNamesSceneSpheresInBvhOrder) {
     }
     EXPECT_GT(inside_cloud, film.object_id.size() / 20);  // the cloud is in view
 }
+
+// Frames: Renderer::set_scene refits the last frame's tree to spheres that
+// moved a little, and that tree finds the same spheres as a new build, so
+// the frame's image is the one a new renderer makes. Spheres thrown
+// elsewhere make the refitted tree too costly, and it is built anew.
+TEST(BvhRender, AFrameWithARefittedTreeIsTheImageOfANewBuild) {
+    Scene scene = cloud_scene(300, 5);
+    const RenderConfig config = small_config(48, 36, 11, 6);
+    Renderer animated(scene, config);
+    EXPECT_FALSE(animated.last_tree_refitted());
+    std::mt19937 rng(6);
+    std::normal_distribution<double> step(0.0, 0.02);
+    for (std::size_t i = 1; i < scene.spheres.size(); ++i)  // the floor (sphere 0) stays
+        for (double& c : scene.spheres[i].center) c += step(rng);
+    animated.set_scene(scene);
+    EXPECT_TRUE(animated.last_tree_refitted());
+    animated.render_pass(4);
+    const Film refitted = animated.read_film();
+    const Film rebuilt = test::render(scene, config, {4});
+    expect_identical(refitted.radiance, rebuilt.radiance, "radiance");
+    expect_identical(refitted.indirect, rebuilt.indirect, "indirect");
+    expect_identical(refitted.depth, rebuilt.depth, "depth");
+    expect_identical(refitted.object_id, rebuilt.object_id, "object id");
+
+    std::uniform_real_distribution<double> anywhere(-5.0, 5.0);
+    for (std::size_t i = 1; i < scene.spheres.size(); ++i) scene.spheres[i].center = {anywhere(rng), 2.0, anywhere(rng)};
+    animated.set_scene(scene);
+    EXPECT_FALSE(animated.last_tree_refitted());
+}

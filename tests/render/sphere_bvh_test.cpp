@@ -399,3 +399,60 @@ TEST(SphereBvh, OneThreadAndTwoThreadsBuildTheSameTree) {
     EXPECT_EQ(a.order, b.order);
     EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)), 0);
 }
+
+// Refitting (sphere_bvh_refit.cpp). Unmoved spheres give back the boxes the
+// build made, bit for bit; moved ones a tree whose boxes nest and hold every
+// sphere, which traversal reads as it reads a new build; and the SAH cost
+// grows with the motion.
+TEST(SphereBvhRefit, UnmovedSpheresGiveTheBuiltBoxes) {
+    const auto spheres = random_spheres(5000, 21);
+    const SphereBvh built = build_sphere_bvh(spheres);
+    SphereBvh refitted = built;
+    refit_sphere_bvh(refitted, spheres);
+    ASSERT_EQ(refitted.nodes.size(), built.nodes.size());
+    for (std::size_t i = 0; i < built.nodes.size(); ++i)
+        for (std::uint32_t k = 0; k < built.nodes[i].child_count; ++k)
+            for (int a = 0; a < 3; ++a) {
+                ASSERT_EQ(refitted.nodes[i].children[k].lo[a], built.nodes[i].children[k].lo[a]) << i << " " << k;
+                ASSERT_EQ(refitted.nodes[i].children[k].hi[a], built.nodes[i].children[k].hi[a]) << i << " " << k;
+            }
+    EXPECT_EQ(bvh_sah_cost(refitted), bvh_sah_cost(built));
+}
+
+TEST(SphereBvhRefit, MovedSpheresKeepAValidTreeThatTraversalReadsRight) {
+    auto spheres = random_spheres(3000, 22, 5.0, 0.05, 0.5);
+    SphereBvh bvh = build_sphere_bvh(spheres);
+    const double built_cost = bvh_sah_cost(bvh);
+    std::mt19937 rng(23);
+    std::normal_distribution<double> step(0.0, 0.3);
+    double previous_cost = built_cost;
+    for (int frame = 0; frame < 3; ++frame) {
+        for (Sphere& s : spheres)
+            for (double& c : s.center) c += step(rng);
+        refit_sphere_bvh(bvh, spheres);
+        expect_valid(bvh, spheres);
+        expect_traversal_matches_brute_force(spheres, bvh, 6.0);
+        const double cost = bvh_sah_cost(bvh);
+        EXPECT_GT(cost, previous_cost) << "frame " << frame << ": spheres drifting apart in a tree built for where they were";
+        previous_cost = cost;
+    }
+    EXPECT_GT(previous_cost, 1.2 * built_cost);
+}
+
+// The SAH cost of a tree against the count it weighs: a ray through the root
+// meets the root's four boxes and, in a tree of one leaf, its spheres.
+TEST(SphereBvhRefit, TheCostOfATreeOfOneLeafIsItsBoxesAndSpheres) {
+    const auto spheres = random_spheres(20, 24);
+    BvhSettings settings;
+    settings.min_spheres_for_tree = 1;
+    const SphereBvh bvh = build_sphere_bvh(spheres, settings);
+    ASSERT_FALSE(bvh.nodes.empty());
+    // Every child box lies in the root box, so the cost lies between the root's
+    // four box tests and that plus every child entered for sure.
+    double at_most = kBvhWidth;
+    for (const BvhNode& node : bvh.nodes)
+        for (std::uint32_t k = 0; k < node.child_count; ++k)
+            at_most += node.children[k].leaf() ? node.children[k].count : kBvhWidth;
+    EXPECT_GT(bvh_sah_cost(bvh), static_cast<double>(kBvhWidth));
+    EXPECT_LE(bvh_sah_cost(bvh), at_most);
+}

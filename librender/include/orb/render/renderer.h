@@ -64,8 +64,14 @@ public:
     // A new scene of the same size and settings (the next frame): its
     // tables and camera are uploaded, the programs already built on each
     // device are reused when the scene needs the same build options (it
-    // rebuilds only if, say, a BVH appears). The film is emptied.
+    // rebuilds only if, say, a BVH appears). The film is emptied. A scene
+    // with as many spheres as the last keeps the last one's BVH, refitted to
+    // the moved spheres, while the time that saves over a new build exceeds
+    // what the refitted tree is expected to add to a frame like the last
+    // (animation_tree.h); else a new one is built.
     void set_scene(const Scene& scene);
+    // Whether the current scene's BVH is the previous scene's refitted.
+    bool last_tree_refitted() const;
     // Another seed; the film is emptied.
     void set_seed(std::uint64_t seed);
     // Empties the film; render_pass() continues from sample `first_sample`.
