@@ -11,7 +11,7 @@ namespace {
 // enough warps in flight, or, capped too low, spills. Measured on an H100
 // (docs/performance.md, "Register caps, 2026-11-23 night"): with a tree the
 // traversal's memory waits want warps, and 56-64 beat 72-80 by 3-8% at
-// 100 k and 1 M spheres; without one, the Cornell boxes (nine spheres,
+// 100 k and 1 M spheres, but those programs fault now (below); without one, the Cornell boxes (nine spheres,
 // three packets, long paths) ran best at 72 (+3% over 80, 96 lost 3%) and
 // the small open scenes (three to five spheres in one or two packets, short
 // paths) at 96 (+4% to +13% over 80). Why the two kinds differ was not
@@ -20,7 +20,11 @@ std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& sce
 {
     const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
     if (extensions.find("cl_nv_compiler_options") == std::string::npos) return "";
-    if (scene.counts.bvh_node_count > 0) return " -cl-nv-maxrregcount=64";
+    // With a tree, 96: every other cap tried (64, 72, 80, 112, 128) made
+    // NVIDIA's driver 580 fault (OpenCL error -36) in every Sobol benchmark
+    // of the orb-gen clouds on an H100, 96 in none of 15
+    // (docs/performance.md, "The fault comes back").
+    if (scene.counts.bvh_node_count > 0) return " -cl-nv-maxrregcount=96";
     return scene.counts.packet_count <= 2 ? " -cl-nv-maxrregcount=96" : " -cl-nv-maxrregcount=72";
 }
 
