@@ -13,13 +13,15 @@
 // mixture aimed at casters (caustic_casters.cl), Russian roulette with the
 // refraction factor divided out, the same split of light into the emission,
 // direct and indirect channels. It covers the scenes whose spheres are
-// diffuse, mirrors or smooth glass, lit by sphere lights, without a tree or
-// an environment, in global mode; the host builds it only for those
+// diffuse, mirrors or smooth glass, lit by sphere lights and the
+// environment, in global mode; the host builds it only for those
 // (librender/src/device_renderer.cpp) and renders everything else with
 // render_pass. The BSDF formulas are the ones of bsdf_diffuse.cl,
 // bsdf_mirror.cl and bsdf_dielectric.cl (smooth case), written over lanes;
+// what is per lane by nature -- tree traversal, the environment's map
+// lookups and searches -- calls render_pass's functions lane by lane.
 // tests/render/simd_kernel_test.cpp renders scenes with both kernels and
-// requires the same image within the noise.
+// requires the same paths.
 
 #ifndef ORB_SIMD_KERNEL
 #define ORB_SIMD_KERNEL 0
@@ -641,6 +643,67 @@ SIMD_FN v3 v_sample_lights(const SceneView* scene, v3 p, vint self, v3 color, v3
         }
 #endif
     }
+    // Lanes that picked the environment (light -1): estimate_environment_light
+    // lane by lane (its map lookups and searches are per lane anyway).
+    v3 environment = v3_zero();
+    const vint environment_lanes = lanes & (light_sphere < 0);
+    if (ORB_ENVIRONMENT && any(environment_lanes) && scene->environment.width == 1 && scene->environment.height == 1) {
+        // A uniform environment (one texel): sample_environment's steps for
+        // a map of one row and one column, over lanes.
+        const float4 texel = scene->environment_texels[0].radiance_pdf;
+        SCENE_MEM const EnvironmentCdf* cdf = scene->environment_cdf;
+        const vfloat in_row = fmin(u / cdf[0].upper, 0x1.fffffep-1f);
+        const vfloat in_column = fmin(u_v / cdf[1].upper, 0x1.fffffep-1f);
+        const float cos_top = unit_circle(0.0f).x, cos_bottom = unit_circle(0.5f).x;
+        const vfloat cos_theta = cos_top + in_row * (cos_bottom - cos_top);
+        const vfloat sin_theta = sqrt(fmax((vfloat)(0.0f), 1.0f - cos_theta * cos_theta));
+        vfloat cs, sn;
+        v_unit_circle(in_column, &cs, &sn);
+        const vfloat mx = -sin_theta * cs, mz = -sin_theta * sn;
+        const float c = scene->environment.rotation.x, r = scene->environment.rotation.y;
+        const v3 wi = v3_make(c * mx + r * mz, cos_theta, -r * mx + c * mz);
+        const vfloat cos_n = v3_dot(n, wi);
+        const vfloat bsdf_pdf = select((vfloat)(0.0f), cos_n * ORB_INV_PI, cos_n > 0.0f);
+        const v3 f_cos = v3_scale(color, bsdf_pdf);
+        vint carries = environment_lanes & (v3_sum(f_cos) > 0.0f) & (vint)(texel.w > 0.0f ? -1 : 0);
+        if (any(carries)) carries = v_light_visible(scene, p, wi, self, (vint)(-1), carries);
+        if (any(carries)) {
+            const vfloat light_pdf = pick_pdf * texel.w;
+            const vfloat weight = v_power_heuristic(light_pdf, v_continuation_pdf(scene, p, bsdf_pdf, wi));
+            environment = v3_select(environment, v3_scale(v3_mul(v3_splat(texel.xyz), f_cos), weight / light_pdf), carries);
+        }
+        lanes &= ~environment_lanes;
+        if (!any(lanes)) return environment;
+    } else if (ORB_ENVIRONMENT && any(environment_lanes)) {
+        float px[ORB_SIMD_WIDTH], py[ORB_SIMD_WIDTH], pz[ORB_SIMD_WIDTH], nx[ORB_SIMD_WIDTH], ny[ORB_SIMD_WIDTH],
+            nz[ORB_SIMD_WIDTH], cr[ORB_SIMD_WIDTH], cg[ORB_SIMD_WIDTH], cb[ORB_SIMD_WIDTH], pick_lane[ORB_SIMD_WIDTH],
+            u_lane[ORB_SIMD_WIDTH], v_lane[ORB_SIMD_WIDTH];
+        int self_lane[ORB_SIMD_WIDTH], sampled[ORB_SIMD_WIDTH];
+        vstore_lanes(p.x, 0, px), vstore_lanes(p.y, 0, py), vstore_lanes(p.z, 0, pz);
+        vstore_lanes(n.x, 0, nx), vstore_lanes(n.y, 0, ny), vstore_lanes(n.z, 0, nz);
+        vstore_lanes(color.x, 0, cr), vstore_lanes(color.y, 0, cg), vstore_lanes(color.z, 0, cb);
+        vstore_lanes(pick_pdf, 0, pick_lane), vstore_lanes(u, 0, u_lane), vstore_lanes(u_v, 0, v_lane);
+        vstore_lanes(self, 0, self_lane), vstore_lanes(environment_lanes, 0, sampled);
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+            float3 radiance = (float3)(0.0f);
+            if (sampled[l]) {
+                Bsdf bsdf;
+                bsdf.color = (float3)(cr[l], cg[l], cb[l]);
+                bsdf.kind = MaterialKind_Diffuse;
+                bsdf.ior = 1.0f;
+                bsdf.roughness = 0.0f;
+                bsdf.metallic = 0.0f;
+                const float3 lane_n = (float3)(nx[l], ny[l], nz[l]);
+                // A diffuse BSDF reads neither wo nor the side.
+                radiance = estimate_environment_light(scene, pick_lane[l], (float3)(px[l], py[l], pz[l]), self_lane[l],
+                                                      &bsdf, lane_n, lane_n, true, u_lane[l], v_lane[l]);
+            }
+            cr[l] = radiance.x, cg[l] = radiance.y, cb[l] = radiance.z;
+        }
+        environment = v3_make(vload_lanes(0, cr), vload_lanes(0, cg), vload_lanes(0, cb));
+        lanes &= ~environment_lanes;
+        if (!any(lanes)) return environment;
+    }
     const VSphere light = v_load_spheres(scene, light_sphere);
     // sample_light_direction
     const v3 pc = v3_sub(light.centre, p);
@@ -655,13 +718,13 @@ SIMD_FN v3 v_sample_lights(const SceneView* scene, v3 p, vint self, v3 color, v3
     const vfloat bsdf_pdf = select((vfloat)(0.0f), cos_theta * ORB_INV_PI, cos_theta > 0.0f);
     const v3 f_cos = v3_scale(color, bsdf_pdf);
     vint carries = lanes & (v3_sum(f_cos) > 0.0f);
-    if (!any(carries)) return v3_zero();
+    if (!any(carries)) return environment;
     carries = v_light_visible(scene, p, wi, self, light_sphere, carries);
-    if (!any(carries)) return v3_zero();
+    if (!any(carries)) return environment;
     const vfloat light_pdf = pick_pdf * direction_pdf;
     const vfloat weight = v_power_heuristic(light_pdf, v_continuation_pdf(scene, p, bsdf_pdf, wi));
     const v3 radiance = v3_scale(v3_mul(light.emission, f_cos), weight / light_pdf);
-    return v3_select(v3_zero(), radiance, carries);
+    return v3_add(environment, v3_select(v3_zero(), radiance, carries));
 }
 
 // The continuation at diffuse lanes (sample_continuation with diffuse_sample):
@@ -713,7 +776,35 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
     vfloat t;
     vint id;
     v_intersect(scene, path->o, path->d, path->self, active, &t, &id);
-    // A ray that escapes carries nothing: these scenes have no environment.
+    // A ray that escapes brings the environment's radiance (escaped_radiance,
+    // lane by lane: a map lookup per lane), weighted by MIS after a lobe
+    // with a density.
+    const vint escaped = active & (id < 0);
+    if (ORB_ENVIRONMENT && scene->environment.width == 1 && scene->environment.height == 1 && any(escaped)) {
+        // A uniform environment: the same radiance and density everywhere.
+        const float4 texel = scene->environment_texels[0].radiance_pdf;
+        const vfloat weight = select((vfloat)(1.0f),
+                                     v_power_heuristic(path->from_pdf,
+                                                       (vfloat)(scene->environment.light_probability * texel.w)),
+                                     path->from_density);
+        v_add_by_vertex_count(out, path->nondelta_vertices, v3_scale(v3_mul(path->beta, v3_splat(texel.xyz)), weight),
+                              escaped);
+    } else if (ORB_ENVIRONMENT && scene->environment.width > 0 && any(escaped)) {
+        float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH], pdf_lane[ORB_SIMD_WIDTH];
+        float er[ORB_SIMD_WIDTH], eg[ORB_SIMD_WIDTH], eb[ORB_SIMD_WIDTH];
+        int density_lane[ORB_SIMD_WIDTH], escaped_lane[ORB_SIMD_WIDTH];
+        vstore_lanes(path->d.x, 0, dx), vstore_lanes(path->d.y, 0, dy), vstore_lanes(path->d.z, 0, dz);
+        vstore_lanes(path->from_pdf, 0, pdf_lane), vstore_lanes(path->from_density, 0, density_lane);
+        vstore_lanes(escaped, 0, escaped_lane);
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+            const float3 e = escaped_lane[l] ? escaped_radiance(scene, (float3)(dx[l], dy[l], dz[l]), density_lane[l] != 0,
+                                                                pdf_lane[l], scene->environment.light_probability)
+                                             : (float3)(0.0f);
+            er[l] = e.x, eg[l] = e.y, eb[l] = e.z;
+        }
+        const v3 radiance = v3_make(vload_lanes(0, er), vload_lanes(0, eg), vload_lanes(0, eb));
+        v_add_by_vertex_count(out, path->nondelta_vertices, v3_mul(path->beta, radiance), escaped);
+    }
     const vint hit = active & (id >= 0);
     if (!any(hit)) return hit;
     const VSphere m = v_load_spheres(scene, id);

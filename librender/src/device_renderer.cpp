@@ -32,8 +32,7 @@ std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& sce
 // on this device, or 0 for render_pass. CPUs only: a GPU already runs
 // work-items in its lanes. The device's native float vector width (16 with
 // AVX-512, 8 with AVX2), and only for the scenes that kernel covers:
-// diffuse, mirror and smooth glass spheres lit by spheres, no environment,
-// global mode.
+// diffuse, mirror and smooth glass spheres, global mode.
 int simd_lanes(const DeviceInfo& info, const cl::Device& device, const SceneLayout& scene, IntegratorMode mode)
 {
     if (info.is_gpu) return 0;
@@ -43,8 +42,8 @@ int simd_lanes(const DeviceInfo& info, const cl::Device& device, const SceneLayo
     const auto bit = [](device::MaterialKind kind) { return 1u << static_cast<int>(kind); };
     const std::uint32_t covered =
         bit(device::MaterialKind::Diffuse) | bit(device::MaterialKind::Mirror) | bit(device::MaterialKind::Dielectric);
-    const bool covered_scene = (scene.material_kinds & ~covered) == 0 && !scene.rough_dielectric &&
-                               scene.environment.width == 0 && mode == IntegratorMode::Global;
+    const bool covered_scene =
+        (scene.material_kinds & ~covered) == 0 && !scene.rough_dielectric && mode == IntegratorMode::Global;
     return covered_scene ? lanes : 0;
 }
 

@@ -102,6 +102,17 @@ INSTANTIATE_TEST_SUITE_P(
                       ExactCase{"smooth_plastic_direct", {MaterialType::Pbr, 0.0, 0.0}, IntegratorMode::Direct}),
     [](const ::testing::TestParamInfo<ExactCase>& info) { return info.param.name; });
 
+// The same lossless balls lit by a uniform environment instead of the
+// enclosure (the environment's next-event estimates, its MIS at escaped
+// rays): on PoCL these render with render_pass_simd, the enclosure's too.
+TEST(LosslessBallUnderTheEnvironment, LooksExactlyLikeTheEnvironment)
+{
+    for (const ExactCase& c : {ExactCase{"diffuse", {MaterialType::Diffuse}, IntegratorMode::Global},
+                               ExactCase{"mirror", {MaterialType::Mirror}, IntegratorMode::Global},
+                               ExactCase{"smooth_glass", {MaterialType::Dielectric}, IntegratorMode::Global}})
+        expect_ratio_within(furnace(c.material, c.mode, 256, 9, FurnaceLight::Environment), 1.0, 1.0, c.name);
+}
+
 // Roughnesses of the rough furnaces: a narrow lobe and a wide one.
 class RoughBall : public ::testing::TestWithParam<double> {};
 
