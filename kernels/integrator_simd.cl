@@ -14,7 +14,7 @@
 // refraction factor divided out, the same split of light into the emission,
 // direct and indirect channels. It covers the scenes whose spheres are
 // diffuse, mirrors or smooth glass, lit by sphere lights and the
-// environment, in global mode; the host builds it only for those
+// environment, in both modes; the host builds it only for those
 // (librender/src/device_renderer.cpp) and renders everything else with
 // render_pass. The BSDF formulas are the ones of bsdf_diffuse.cl,
 // bsdf_mirror.cl and bsdf_dielectric.cl (smooth case), written over lanes;
@@ -574,75 +574,12 @@ SIMD_FN void v_begin_camera_paths(const CameraParams* cam, vint x, int y, int wi
     out->alpha = select(out->alpha, (vfloat)(0.0f), lanes);
 }
 
-// sample_lights over lanes (global mode): one light per lane, picked by
-// power through the alias table (or uniformly), then estimate_direct_light
-// for a diffuse BSDF of reflectance `color`. Returns the radiance towards wo.
-SIMD_FN v3 v_sample_lights(const SceneView* scene, v3 p, vint self, v3 color, v3 n, vfloat u_pick, vfloat u_v,
-                           vint lanes)
+// estimate_light over lanes: the next-event estimate from each lane's light
+// `light_sphere` (-1: the environment), picked with probability pick_pdf,
+// for a diffuse BSDF of reflectance `color`; u, u_v sample the light.
+SIMD_FN v3 v_estimate_light(const SceneView* scene, v3 p, vint self, v3 color, v3 n, vint light_sphere,
+                            vfloat pick_pdf, vfloat u, vfloat u_v, vint lanes)
 {
-    const int light_count = scene->light_count;
-    if (light_count == 0) return v3_zero();
-    const vfloat scaled = u_pick * (float)light_count;
-    const vint slot = min(vint_from_float(scaled), (vint)(light_count - 1));
-    const vfloat rest = scaled - to_vfloat(slot);
-    vint light_sphere;
-    vfloat pick_pdf, u;
-#if ORB_UNIFORM_LIGHTS
-    u = fmin(rest, 0x1.fffffep-1f);
-    pick_pdf = (vfloat)(1.0f / (float)light_count);
-#endif
-    if (light_count > ORB_SIMD_SELECT_GATHER_MAX) {
-        // Many lights: each lane reads its alias-table slot on its own.
-        int slot_lane[ORB_SIMD_WIDTH], sphere_lane[ORB_SIMD_WIDTH];
-        float rest_lane[ORB_SIMD_WIDTH], pdf_lane[ORB_SIMD_WIDTH], u_lane[ORB_SIMD_WIDTH];
-        vstore_lanes(slot, 0, slot_lane);
-        vstore_lanes(rest, 0, rest_lane);
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
-            SCENE_MEM const LightRecord* entry = &scene->lights[slot_lane[l]];
-#if ORB_UNIFORM_LIGHTS
-            sphere_lane[l] = entry->sphere;
-            pdf_lane[l] = 0.0f;
-            u_lane[l] = 0.0f;
-#else
-            const bool own = rest_lane[l] < entry->alias_threshold;
-            SCENE_MEM const LightRecord* light = &scene->lights[own ? slot_lane[l] : entry->alias];
-            sphere_lane[l] = light->sphere;
-            pdf_lane[l] = light->probability;
-            u_lane[l] = fmin(own ? rest_lane[l] / entry->alias_threshold
-                                 : (rest_lane[l] - entry->alias_threshold) / (1.0f - entry->alias_threshold),
-                             0x1.fffffep-1f);
-#endif
-        }
-        light_sphere = vload_lanes(0, sphere_lane);
-#if !ORB_UNIFORM_LIGHTS
-        pick_pdf = vload_lanes(0, pdf_lane);
-        u = vload_lanes(0, u_lane);
-#endif
-    } else {
-#if ORB_UNIFORM_LIGHTS
-        light_sphere = (vint)(scene->lights[0].sphere);
-        for (int k = 1; k < light_count; ++k)
-            light_sphere = select(light_sphere, (vint)(scene->lights[k].sphere), slot == k);
-#else
-        vfloat threshold = (vfloat)(scene->lights[0].alias_threshold);
-        vint alias = (vint)(scene->lights[0].alias);
-        for (int k = 1; k < light_count; ++k) {
-            const vint m = slot == k;
-            threshold = select(threshold, (vfloat)(scene->lights[k].alias_threshold), m);
-            alias = select(alias, (vint)(scene->lights[k].alias), m);
-        }
-        const vint own = rest < threshold;
-        const vint pick = select(alias, slot, own);
-        u = fmin(select((rest - threshold) / (1.0f - threshold), rest / threshold, own), 0x1.fffffep-1f);
-        pick_pdf = (vfloat)(scene->lights[0].probability);
-        light_sphere = (vint)(scene->lights[0].sphere);
-        for (int k = 1; k < light_count; ++k) {
-            const vint m = pick == k;
-            pick_pdf = select(pick_pdf, (vfloat)(scene->lights[k].probability), m);
-            light_sphere = select(light_sphere, (vint)(scene->lights[k].sphere), m);
-        }
-#endif
-    }
     // Lanes that picked the environment (light -1): estimate_environment_light
     // lane by lane (its map lookups and searches are per lane anyway).
     v3 environment = v3_zero();
@@ -727,6 +664,89 @@ SIMD_FN v3 v_sample_lights(const SceneView* scene, v3 p, vint self, v3 color, v3
     return v3_add(environment, v3_select(v3_zero(), radiance, carries));
 }
 
+// sample_lights over lanes (global mode): one light per lane, picked by
+// power through the alias table (or uniformly), then estimate_direct_light
+// for a diffuse BSDF of reflectance `color`. Returns the radiance towards wo.
+SIMD_FN v3 v_sample_lights(const SceneView* scene, v3 p, vint self, v3 color, v3 n, vfloat u_pick, vfloat u_v,
+                           vint lanes)
+{
+    const int light_count = scene->light_count;
+    if (light_count == 0) return v3_zero();
+    const vfloat scaled = u_pick * (float)light_count;
+    const vint slot = min(vint_from_float(scaled), (vint)(light_count - 1));
+    const vfloat rest = scaled - to_vfloat(slot);
+    vint light_sphere;
+    vfloat pick_pdf, u;
+#if ORB_UNIFORM_LIGHTS
+    u = fmin(rest, 0x1.fffffep-1f);
+    pick_pdf = (vfloat)(1.0f / (float)light_count);
+#endif
+    if (light_count > ORB_SIMD_SELECT_GATHER_MAX) {
+        // Many lights: each lane reads its alias-table slot on its own.
+        int slot_lane[ORB_SIMD_WIDTH], sphere_lane[ORB_SIMD_WIDTH];
+        float rest_lane[ORB_SIMD_WIDTH], pdf_lane[ORB_SIMD_WIDTH], u_lane[ORB_SIMD_WIDTH];
+        vstore_lanes(slot, 0, slot_lane);
+        vstore_lanes(rest, 0, rest_lane);
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+            SCENE_MEM const LightRecord* entry = &scene->lights[slot_lane[l]];
+#if ORB_UNIFORM_LIGHTS
+            sphere_lane[l] = entry->sphere;
+            pdf_lane[l] = 0.0f;
+            u_lane[l] = 0.0f;
+#else
+            const bool own = rest_lane[l] < entry->alias_threshold;
+            SCENE_MEM const LightRecord* light = &scene->lights[own ? slot_lane[l] : entry->alias];
+            sphere_lane[l] = light->sphere;
+            pdf_lane[l] = light->probability;
+            u_lane[l] = fmin(own ? rest_lane[l] / entry->alias_threshold
+                                 : (rest_lane[l] - entry->alias_threshold) / (1.0f - entry->alias_threshold),
+                             0x1.fffffep-1f);
+#endif
+        }
+        light_sphere = vload_lanes(0, sphere_lane);
+#if !ORB_UNIFORM_LIGHTS
+        pick_pdf = vload_lanes(0, pdf_lane);
+        u = vload_lanes(0, u_lane);
+#endif
+    } else {
+#if ORB_UNIFORM_LIGHTS
+        light_sphere = (vint)(scene->lights[0].sphere);
+        for (int k = 1; k < light_count; ++k)
+            light_sphere = select(light_sphere, (vint)(scene->lights[k].sphere), slot == k);
+#else
+        vfloat threshold = (vfloat)(scene->lights[0].alias_threshold);
+        vint alias = (vint)(scene->lights[0].alias);
+        for (int k = 1; k < light_count; ++k) {
+            const vint m = slot == k;
+            threshold = select(threshold, (vfloat)(scene->lights[k].alias_threshold), m);
+            alias = select(alias, (vint)(scene->lights[k].alias), m);
+        }
+        const vint own = rest < threshold;
+        const vint pick = select(alias, slot, own);
+        u = fmin(select((rest - threshold) / (1.0f - threshold), rest / threshold, own), 0x1.fffffep-1f);
+        pick_pdf = (vfloat)(scene->lights[0].probability);
+        light_sphere = (vint)(scene->lights[0].sphere);
+        for (int k = 1; k < light_count; ++k) {
+            const vint m = pick == k;
+            pick_pdf = select(pick_pdf, (vfloat)(scene->lights[k].probability), m);
+            light_sphere = select(light_sphere, (vint)(scene->lights[k].sphere), m);
+        }
+#endif
+    }
+    return v_estimate_light(scene, p, self, color, n, light_sphere, pick_pdf, u, u_v, lanes);
+}
+
+// sample_lights in direct mode: every light, each with the same numbers.
+SIMD_FN v3 v_sample_every_light(const SceneView* scene, v3 p, vint self, v3 color, v3 n, vfloat u, vfloat u_v,
+                                vint lanes)
+{
+    v3 sum = v3_zero();
+    for (int k = 0; k < scene->light_count; ++k)
+        sum = v3_add(sum, v_estimate_light(scene, p, self, color, n, (vint)(scene->lights[k].sphere), (vfloat)(1.0f),
+                                           u, u_v, lanes));
+    return sum;
+}
+
 // The continuation at diffuse lanes (sample_continuation with diffuse_sample):
 // the mixture of cosine sampling and cones aimed at the casters.
 SIMD_FN void v_diffuse_continuation(const SceneView* scene, v3 p, v3 n, v3 color, vfloat u, vfloat v, vfloat* choice,
@@ -771,7 +791,7 @@ SIMD_FN void v_diffuse_continuation(const SceneView* scene, v3 p, v3 n, v3 color
 // extend_path over lanes: casts every active lane's ray and handles what it
 // hits. Returns the lanes whose paths go on.
 SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* out, const VCoords* coords, uint2 seed,
-                            int max_depth, vint active)
+                            int max_depth, int mode, vint active)
 {
     vfloat t;
     vint id;
@@ -780,12 +800,13 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
     // lane by lane: a map lookup per lane), weighted by MIS after a lobe
     // with a density.
     const vint escaped = active & (id < 0);
+    // Direct mode samples every light, so the environment's pick is certain.
+    const float environment_pick = mode == IntegratorMode_Direct ? 1.0f : scene->environment.light_probability;
     if (ORB_ENVIRONMENT && scene->environment.width == 1 && scene->environment.height == 1 && any(escaped)) {
         // A uniform environment: the same radiance and density everywhere.
         const float4 texel = scene->environment_texels[0].radiance_pdf;
         const vfloat weight = select((vfloat)(1.0f),
-                                     v_power_heuristic(path->from_pdf,
-                                                       (vfloat)(scene->environment.light_probability * texel.w)),
+                                     v_power_heuristic(path->from_pdf, (vfloat)(environment_pick * texel.w)),
                                      path->from_density);
         v_add_by_vertex_count(out, path->nondelta_vertices, v3_scale(v3_mul(path->beta, v3_splat(texel.xyz)), weight),
                               escaped);
@@ -798,7 +819,7 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         vstore_lanes(escaped, 0, escaped_lane);
         for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
             const float3 e = escaped_lane[l] ? escaped_radiance(scene, (float3)(dx[l], dy[l], dz[l]), density_lane[l] != 0,
-                                                                pdf_lane[l], scene->environment.light_probability)
+                                                                pdf_lane[l], environment_pick)
                                              : (float3)(0.0f);
             er[l] = e.x, eg[l] = e.y, eb[l] = e.z;
         }
@@ -823,10 +844,11 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         const vint weighed = emissive & path->from_density;
         if (any(weighed)) {
 #if ORB_UNIFORM_LIGHTS
-            const vfloat pick_pdf = (vfloat)(1.0f / (float)scene->light_count);
+            vfloat pick_pdf = (vfloat)(1.0f / (float)scene->light_count);
 #else
-            const vfloat pick_pdf = m.light_probability;
+            vfloat pick_pdf = m.light_probability;
 #endif
+            if (mode == IntegratorMode_Direct) pick_pdf = (vfloat)(1.0f);
             const vfloat light_pdf =
                 pick_pdf * v_light_direction_pdf(path->from_point, path->self, id, m.centre, m.radius);
             weight = select(weight, v_power_heuristic(path->from_pdf, light_pdf), weighed);
@@ -834,7 +856,9 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         v_add_by_vertex_count(out, path->nondelta_vertices, v3_scale(v3_mul(path->beta, m.emission), weight), emissive);
     }
 
-    const vint go = hit & (path->depth < max_depth);
+    vint go = hit & (path->depth < max_depth);
+    // Direct mode: the ray after the first non-delta vertex was traced only for its emission.
+    if (mode == IntegratorMode_Direct) go &= path->nondelta_vertices != 1;
     if (!any(go)) return go;
 
     const vuint block = vuint_from_int(path->depth + 1);
@@ -853,7 +877,9 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         }
         vfloat u_pick, v_light;
         v_rand_pair(&r, coords, 0u, diffuse, &u_pick, &v_light);
-        const v3 direct = v_sample_lights(scene, p, id, m.color, n, u_pick, v_light, diffuse);
+        const v3 direct = mode == IntegratorMode_Direct
+                              ? v_sample_every_light(scene, p, id, m.color, n, u_pick, v_light, diffuse)
+                              : v_sample_lights(scene, p, id, m.color, n, u_pick, v_light, diffuse);
         v_add_by_vertex_count(out, path->nondelta_vertices + 1, v3_mul(path->beta, direct), diffuse);
         v_rand_pair(&r, coords, 1u, diffuse, &u_dir, &v_dir);
     }
@@ -999,6 +1025,7 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
     const CameraParams cam = params.camera;
     const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);
     const int max_depth = params.settings.max_depth;
+    const int mode = params.settings.mode;
     const int sample_count = params.pass.sample_count;
 
     const vint x = (vint)(x0) + ORB_LANE_INDEX;
@@ -1026,7 +1053,7 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
     VCoords coords = v_sample_coords(pixel, pixel_key, params.pass.first_sample_lo, params.pass.first_sample_hi, index);
     if (any(active)) v_begin_camera_paths(&cam, x, y, width, height, &coords, seed, active, &path, &s);
     while (any(active)) {
-        const vint alive = v_extend_paths(&scene, &path, &s, &coords, seed, max_depth, active);
+        const vint alive = v_extend_paths(&scene, &path, &s, &coords, seed, max_depth, mode, active);
         const vint done = active & ~alive;
         active = alive;
         if (any(done)) {

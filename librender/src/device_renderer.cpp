@@ -32,8 +32,8 @@ std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& sce
 // on this device, or 0 for render_pass. CPUs only: a GPU already runs
 // work-items in its lanes. The device's native float vector width (16 with
 // AVX-512, 8 with AVX2), and only for the scenes that kernel covers:
-// diffuse, mirror and smooth glass spheres, global mode.
-int simd_lanes(const DeviceInfo& info, const cl::Device& device, const SceneLayout& scene, IntegratorMode mode)
+// diffuse, mirror and smooth glass spheres.
+int simd_lanes(const DeviceInfo& info, const cl::Device& device, const SceneLayout& scene)
 {
     if (info.is_gpu) return 0;
     int lanes = static_cast<int>(device.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
@@ -42,8 +42,7 @@ int simd_lanes(const DeviceInfo& info, const cl::Device& device, const SceneLayo
     const auto bit = [](device::MaterialKind kind) { return 1u << static_cast<int>(kind); };
     const std::uint32_t covered =
         bit(device::MaterialKind::Diffuse) | bit(device::MaterialKind::Mirror) | bit(device::MaterialKind::Dielectric);
-    const bool covered_scene =
-        (scene.material_kinds & ~covered) == 0 && !scene.rough_dielectric && mode == IntegratorMode::Global;
+    const bool covered_scene = (scene.material_kinds & ~covered) == 0 && !scene.rough_dielectric;
     return covered_scene ? lanes : 0;
 }
 
@@ -138,7 +137,7 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
 
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)
 {
-    simd_lanes_ = simd_lanes(session_->info(), session_->device(), scene, config_.mode);
+    simd_lanes_ = simd_lanes(session_->info(), session_->device(), scene);
     const cl::Program& program = session_->program(build_options(scene));
     try {
         if (&program != program_) {

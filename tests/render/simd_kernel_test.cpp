@@ -235,13 +235,28 @@ TEST(SimdKernel, PassSplitsDoNotChangeTheImage)
                                      render_with_simd_lanes(scene, config, {1, 7, 8}, "16"));
 }
 
-// The scenes the kernel does not cover go to render_pass whatever the knob
-// says: direct mode here, which render_pass_simd does not implement, renders
-// exactly what render_pass does.
-TEST(SimdKernel, DirectModeStaysWithRenderPass)
+// Direct mode (the paper's local illumination): every light at the first
+// diffuse vertex, and the path ends after the ray that leaves it.
+TEST(SimdKernel, SamePathsAsRenderPassInDirectMode)
 {
     const Scene scene = every_branch_scene();
     const RenderConfig config = small_config(37, 23, 5, 6, IntegratorMode::Direct);
+    const Film simd = render_with_simd_lanes(scene, config, {4, 12}, "16");
+    const Film scalar = render_with_simd_lanes(scene, config, {4, 12}, "0");
+    ASSERT_GT(total_radiance(simd), 0.0);
+    // No path reaches a second diffuse vertex, so nothing is indirect.
+    for (float v : simd.indirect) ASSERT_EQ(v, 0.0f);
+    expect_same_paths(simd, scalar, "direct mode");
+}
+
+// The scenes the kernel does not cover go to render_pass whatever the knob
+// says: a pbr material here, which render_pass_simd does not implement,
+// renders exactly what render_pass does.
+TEST(SimdKernel, APbrSceneStaysWithRenderPass)
+{
+    Scene scene = every_branch_scene();
+    scene.materials[scene.spheres[1].material].type = MaterialType::Pbr;
+    const RenderConfig config = small_config(37, 23, 5);
     const Film forced = render_with_simd_lanes(scene, config, {4}, "16");
     const Film scalar = render_with_simd_lanes(scene, config, {4}, "0");
     EXPECT_EQ(forced.radiance, scalar.radiance);
