@@ -12,14 +12,12 @@
 // block), next-event estimation with the power heuristic, the continuation's
 // mixture aimed at casters (caustic_casters.cl), Russian roulette with the
 // refraction factor divided out, the same split of light into the emission,
-// direct and indirect channels. It covers the scenes whose spheres are
-// diffuse, mirrors or smooth glass, lit by sphere lights and the
-// environment, in both modes; the host builds it only for those
-// (librender/src/device_renderer.cpp) and renders everything else with
-// render_pass. The BSDF formulas are the ones of bsdf_diffuse.cl,
-// bsdf_mirror.cl and bsdf_dielectric.cl (smooth case), written over lanes;
-// what is per lane by nature -- tree traversal, the environment's map
-// lookups and searches -- calls render_pass's functions lane by lane.
+// direct and indirect channels, in both modes. The BSDF formulas of
+// bsdf_diffuse.cl, bsdf_mirror.cl and bsdf_dielectric.cl (smooth case) are
+// written over lanes; what is per lane by nature -- tree traversal, the
+// environment's map lookups and searches, and the shading of pbr and rough
+// glass vertices -- calls render_pass's functions lane by lane. The host
+// uses it for every scene on CPUs (librender/src/device_renderer.cpp).
 // tests/render/simd_kernel_test.cpp renders scenes with both kernels and
 // requires the same paths.
 
@@ -863,11 +861,29 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
 
     const vuint block = vuint_from_int(path->depth + 1);
     const VRandBlock r = v_rand_block(coords, block, go, seed);
+    // Lanes whose BSDF the vector code does not have (pbr, rough glass) go
+    // through render_pass's BSDF interface, lane by lane (below).
+    vint general = (vint)(0);
+    if (ORB_KIND_BUILT(MaterialKind_Pbr) || ORB_ROUGH_DIELECTRIC) {
+        int id_lane[ORB_SIMD_WIDTH], general_lane[ORB_SIMD_WIDTH];
+        vstore_lanes(id, 0, id_lane);
+        vstore_lanes(go, 0, general_lane);
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+            if (!general_lane[l]) continue;
+            const Bsdf b = load_bsdf(&scene->materials[scene->spheres[id_lane[l]].material]);
+            const bool pbr = b.kind == MaterialKind_Pbr && ORB_KIND_BUILT(MaterialKind_Pbr);
+            const bool rough_glass = b.kind == MaterialKind_Dielectric && ORB_KIND_BUILT(MaterialKind_Dielectric) &&
+                                     dielectric_has_density(&b);
+            general_lane[l] = pbr || rough_glass ? -1 : 0;
+        }
+        general = vload_lanes(0, general_lane);
+    }
     // A kind the program leaves out (ORB_MATERIAL_KINDS) is diffuse, as in bsdf.cl.
-    const vint mirror = go & (m.kind == MaterialKind_Mirror) & (vint)(ORB_KIND_BUILT(MaterialKind_Mirror) ? -1 : 0);
-    const vint glass =
-        go & (m.kind == MaterialKind_Dielectric) & (vint)(ORB_KIND_BUILT(MaterialKind_Dielectric) ? -1 : 0);
-    const vint diffuse = go & ~mirror & ~glass;
+    const vint mirror = go & ~general & (m.kind == MaterialKind_Mirror) &
+                        (vint)(ORB_KIND_BUILT(MaterialKind_Mirror) ? -1 : 0);
+    const vint glass = go & ~general & (m.kind == MaterialKind_Dielectric) &
+                       (vint)(ORB_KIND_BUILT(MaterialKind_Dielectric) ? -1 : 0);
+    const vint diffuse = go & ~general & ~mirror & ~glass;
     vfloat u_dir = (vfloat)(0.5f), v_dir = (vfloat)(0.5f);
     if (any(diffuse)) {
         if (ORB_FILM_BUILT(albedo)) {
@@ -884,6 +900,7 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         v_rand_pair(&r, coords, 1u, diffuse, &u_dir, &v_dir);
     }
     vfloat choice = v_rand_single(&r, coords, go);
+    vint nondelta_step = diffuse;  // lanes whose continuation has a density
 
     // The continuation, per material kind; lanes of other kinds discard it.
     v3 wi = wo, weight = v3_zero();
@@ -921,6 +938,70 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         eta2 = select(eta2, glass_eta2, glass);
         choice = select(choice, c, glass);
     }
+    if (any(general)) {
+        // extend_path's shading, lane by lane: next-event estimation and the
+        // continuation through the BSDF interface (bsdf.cl, caustic_casters.cl).
+        vfloat u_light, v_light, u_d, v_d;
+        v_rand_pair(&r, coords, 0u, general, &u_light, &v_light);
+        v_rand_pair(&r, coords, 1u, general, &u_d, &v_d);
+        float f[25][ORB_SIMD_WIDTH];
+        int id_lane[ORB_SIMD_WIDTH], lane_on[ORB_SIMD_WIDTH], outside_lane[ORB_SIMD_WIDTH],
+            albedo_set_lane[ORB_SIMD_WIDTH], delta_lane[ORB_SIMD_WIDTH];
+        vstore_lanes(p.x, 0, f[0]), vstore_lanes(p.y, 0, f[1]), vstore_lanes(p.z, 0, f[2]);
+        vstore_lanes(n.x, 0, f[3]), vstore_lanes(n.y, 0, f[4]), vstore_lanes(n.z, 0, f[5]);
+        vstore_lanes(wo.x, 0, f[6]), vstore_lanes(wo.y, 0, f[7]), vstore_lanes(wo.z, 0, f[8]);
+        vstore_lanes(path->beta.x, 0, f[9]), vstore_lanes(path->beta.y, 0, f[10]), vstore_lanes(path->beta.z, 0, f[11]);
+        vstore_lanes(u_light, 0, f[12]), vstore_lanes(v_light, 0, f[13]), vstore_lanes(u_d, 0, f[14]);
+        vstore_lanes(v_d, 0, f[15]), vstore_lanes(choice, 0, f[16]);
+        vstore_lanes(id, 0, id_lane), vstore_lanes(general, 0, lane_on), vstore_lanes(outside, 0, outside_lane);
+        vstore_lanes(path->albedo_set, 0, albedo_set_lane);
+        float a[3][ORB_SIMD_WIDTH], direct[3][ORB_SIMD_WIDTH];
+        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+            a[0][l] = a[1][l] = a[2][l] = direct[0][l] = direct[1][l] = direct[2][l] = 0.0f;
+            delta_lane[l] = 0;
+            if (!lane_on[l]) continue;
+            const Bsdf b = load_bsdf(&scene->materials[scene->spheres[id_lane[l]].material]);
+            const float3 lp = (float3)(f[0][l], f[1][l], f[2][l]), ln = (float3)(f[3][l], f[4][l], f[5][l]),
+                         lwo = (float3)(f[6][l], f[7][l], f[8][l]), lbeta = (float3)(f[9][l], f[10][l], f[11][l]);
+            const bool lane_outside = outside_lane[l] != 0;
+            const bool has_density = bsdf_has_density(&b);
+            float lane_choice = f[16][l];
+            BsdfSample bs;
+            if (has_density) {
+                if (ORB_FILM_BUILT(albedo) && !albedo_set_lane[l]) {
+                    const float3 albedo = lbeta * bsdf_albedo(&b, lwo, ln);
+                    a[0][l] = albedo.x, a[1][l] = albedo.y, a[2][l] = albedo.z;
+                    albedo_set_lane[l] = -2;  // set here (told apart from -1, set before)
+                }
+                const float3 d = lbeta * sample_lights(scene, lp, id_lane[l], &b, lwo, ln, lane_outside,
+                                                       (float2)(f[12][l], f[13][l]), mode);
+                direct[0][l] = d.x, direct[1][l] = d.y, direct[2][l] = d.z;
+                bs = sample_continuation(scene, &b, lp, lwo, ln, lane_outside, f[14][l], f[15][l], &lane_choice);
+            } else {
+                bs = bsdf_sample(&b, lwo, ln, lane_outside, 0.5f, 0.5f, &lane_choice);
+            }
+            f[17][l] = bs.wi.x, f[18][l] = bs.wi.y, f[19][l] = bs.wi.z;
+            f[20][l] = bs.weight.x, f[21][l] = bs.weight.y, f[22][l] = bs.weight.z;
+            f[23][l] = bs.pdf, f[24][l] = bs.eta2;
+            f[16][l] = lane_choice;
+            delta_lane[l] = bs.delta ? -1 : 0;
+        }
+        const vint albedo_now = vload_lanes(0, albedo_set_lane) == -2;
+        if (ORB_FILM_BUILT(albedo)) {
+            out->albedo = v3_select(out->albedo, v3_make(vload_lanes(0, a[0]), vload_lanes(0, a[1]), vload_lanes(0, a[2])),
+                                    albedo_now);
+            path->albedo_set |= albedo_now;
+        }
+        v_add_by_vertex_count(out, path->nondelta_vertices + 1,
+                              v3_make(vload_lanes(0, direct[0]), vload_lanes(0, direct[1]), vload_lanes(0, direct[2])),
+                              general);
+        wi = v3_select(wi, v3_make(vload_lanes(0, f[17]), vload_lanes(0, f[18]), vload_lanes(0, f[19])), general);
+        weight = v3_select(weight, v3_make(vload_lanes(0, f[20]), vload_lanes(0, f[21]), vload_lanes(0, f[22])), general);
+        pdf = select(pdf, vload_lanes(0, f[23]), general);
+        eta2 = select(eta2, vload_lanes(0, f[24]), general);
+        choice = select(choice, vload_lanes(0, f[16]), general);
+        nondelta_step |= general & ~vload_lanes(0, delta_lane);
+    }
 
     v3 beta = v3_mul(path->beta, weight);
     const vfloat beta_max = v3_max(beta);
@@ -934,8 +1015,8 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
 
     path->beta = v3_select(path->beta, beta, alive);
     path->eta2 = select(path->eta2, path_eta2, alive);
-    path->nondelta_vertices = select(path->nondelta_vertices, path->nondelta_vertices + 1, alive & diffuse);
-    path->from_density = select(path->from_density, diffuse, alive);
+    path->nondelta_vertices = select(path->nondelta_vertices, path->nondelta_vertices + 1, alive & nondelta_step);
+    path->from_density = select(path->from_density, nondelta_step, alive);
     path->from_pdf = select(path->from_pdf, pdf, alive);
     path->from_point = v3_select(path->from_point, p, alive);
     path->o = v3_select(path->o, p, alive);

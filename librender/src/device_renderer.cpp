@@ -28,22 +28,17 @@ std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& sce
     return scene.counts.packet_count <= 2 ? " -cl-nv-maxrregcount=96" : " -cl-nv-maxrregcount=72";
 }
 
-// The lanes of render_pass_simd (kernels/integrator_simd.cl) for this scene
-// on this device, or 0 for render_pass. CPUs only: a GPU already runs
-// work-items in its lanes. The device's native float vector width (16 with
-// AVX-512, 8 with AVX2), and only for the scenes that kernel covers:
-// diffuse, mirror and smooth glass spheres.
-int simd_lanes(const DeviceInfo& info, const cl::Device& device, const SceneLayout& scene)
+// The lanes of render_pass_simd (kernels/integrator_simd.cl) on this device,
+// or 0 for render_pass. CPUs only: a GPU already runs work-items in its
+// lanes. The device's native float vector width: 16 with AVX-512, 8 with
+// AVX2. Every scene: what the vector code lacks (pbr, rough glass, trees,
+// environment maps) runs lane by lane through render_pass's functions.
+int simd_lanes(const DeviceInfo& info, const cl::Device& device)
 {
     if (info.is_gpu) return 0;
     int lanes = static_cast<int>(device.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
     if (const char* knob = std::getenv("ORB_SIMD_LANES")) lanes = std::atoi(knob);  // development knob: 0 is off
-    lanes = lanes >= 16 ? 16 : lanes >= 8 ? 8 : lanes >= 4 ? 4 : 0;
-    const auto bit = [](device::MaterialKind kind) { return 1u << static_cast<int>(kind); };
-    const std::uint32_t covered =
-        bit(device::MaterialKind::Diffuse) | bit(device::MaterialKind::Mirror) | bit(device::MaterialKind::Dielectric);
-    const bool covered_scene = (scene.material_kinds & ~covered) == 0 && !scene.rough_dielectric;
-    return covered_scene ? lanes : 0;
+    return lanes >= 16 ? 16 : lanes >= 8 ? 8 : lanes >= 4 ? 4 : 0;
 }
 
 // Pass lengths aimed at: short on GPUs so no display watchdog fires and
@@ -137,7 +132,7 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
 
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)
 {
-    simd_lanes_ = simd_lanes(session_->info(), session_->device(), scene);
+    simd_lanes_ = simd_lanes(session_->info(), session_->device());
     const cl::Program& program = session_->program(build_options(scene));
     try {
         if (&program != program_) {

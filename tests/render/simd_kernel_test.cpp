@@ -249,18 +249,40 @@ TEST(SimdKernel, SamePathsAsRenderPassInDirectMode)
     expect_same_paths(simd, scalar, "direct mode");
 }
 
-// The scenes the kernel does not cover go to render_pass whatever the knob
-// says: a pbr material here, which render_pass_simd does not implement,
-// renders exactly what render_pass does.
-TEST(SimdKernel, APbrSceneStaysWithRenderPass)
+// pbr spheres (a rough metal, a rough plastic, a smooth metal) and a rough
+// glass ball: their lanes take render_pass's BSDF interface one by one,
+// beside the vector code's diffuse and mirror lanes.
+TEST(SimdKernel, SamePathsAsRenderPassWithPbrAndRoughGlass)
 {
     Scene scene = every_branch_scene();
-    scene.materials[scene.spheres[1].material].type = MaterialType::Pbr;
-    const RenderConfig config = small_config(37, 23, 5);
-    const Film forced = render_with_simd_lanes(scene, config, {4}, "16");
-    const Film scalar = render_with_simd_lanes(scene, config, {4}, "0");
-    EXPECT_EQ(forced.radiance, scalar.radiance);
-    EXPECT_EQ(forced.direct, scalar.direct);
+    Material metal;
+    metal.name = "rough metal";
+    metal.type = MaterialType::Pbr;
+    metal.color = {0.9, 0.7, 0.4};
+    metal.roughness = 0.4;
+    metal.metallic = 1.0;
+    Material plastic = metal;
+    plastic.name = "plastic";
+    plastic.color = {0.2, 0.5, 0.8};
+    plastic.metallic = 0.0;
+    Material chrome = metal;
+    chrome.name = "chrome";
+    chrome.roughness = 0.0;
+    scene.materials.push_back(metal);
+    scene.materials.push_back(plastic);
+    scene.materials.push_back(chrome);
+    const auto first_new = static_cast<std::uint32_t>(scene.materials.size() - 3);
+    scene.spheres[1].material = first_new;  // the red ball
+    add_sphere(scene, {-0.6, 0.35, 1.2}, 0.35, first_new + 1);
+    add_sphere(scene, {0.8, 0.3, 1.4}, 0.3, first_new + 2);
+    scene.materials[scene.spheres[3].material].roughness = 0.3;  // the glass ball
+    for (IntegratorMode mode : {IntegratorMode::Global, IntegratorMode::Direct}) {
+        const RenderConfig config = small_config(37, 23, 5, 6, mode);
+        const Film simd = render_with_simd_lanes(scene, config, {2, 14}, "16");
+        const Film scalar = render_with_simd_lanes(scene, config, {2, 14}, "0");
+        ASSERT_GT(total_radiance(simd), 0.0);
+        expect_same_paths(simd, scalar, mode == IntegratorMode::Global ? "pbr, global" : "pbr, direct");
+    }
 }
 
 }  // namespace
