@@ -283,6 +283,19 @@ inline FilmCentre film_centre_ray(const SceneView* scene, const CameraParams* ca
 #define ORB_KERNEL_FILM_ARG(name, components, clear, accumulate, merge, layer, stored_as, paired, names) __global float* film_##name,
 #define ORB_KERNEL_TABLE_ARG(type, name) SCENE_MEM const type* name,
 #define ORB_KERNEL_PARAMS_ARG(type, name) type name
+// Inside a kernel with those arguments (render_pass, render_pass_simd):
+// declares `scene`, the SceneView of its tables and counts.
+#define ORB_SCENE_VIEW_SET_TABLE(type, name) scene.name = name;
+#define ORB_SCENE_VIEW_OF_ARGUMENTS                                                                  \
+    SceneView scene;                                                                                 \
+    ORB_RENDER_PASS_ARGUMENTS(ORB_SCENE_VIEW_FILM, ORB_SCENE_VIEW_SET_TABLE, ORB_SCENE_VIEW_PARAMS) \
+    scene.packet_count = params.scene.packet_count;                                                  \
+    scene.sphere_count = params.scene.sphere_count;                                                  \
+    scene.light_count = params.scene.light_count;                                                    \
+    scene.outside_packet_count = params.scene.outside_packet_count;                                  \
+    scene.bvh_node_count = params.scene.bvh_node_count;                                              \
+    scene.caster_count = params.scene.caster_count;                                                  \
+    scene.environment = params.environment;
 __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG))
 {
     const int width = params.settings.width;
@@ -292,16 +305,7 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     if (x >= width || y >= height) return;
     const uint pixel = (uint)y * (uint)width + (uint)x;
 
-    SceneView scene;
-#define ORB_SCENE_VIEW_SET_TABLE(type, name) scene.name = name;
-    ORB_RENDER_PASS_ARGUMENTS(ORB_SCENE_VIEW_FILM, ORB_SCENE_VIEW_SET_TABLE, ORB_SCENE_VIEW_PARAMS)
-    scene.packet_count = params.scene.packet_count;
-    scene.sphere_count = params.scene.sphere_count;
-    scene.light_count = params.scene.light_count;
-    scene.outside_packet_count = params.scene.outside_packet_count;
-    scene.bvh_node_count = params.scene.bvh_node_count;
-    scene.caster_count = params.scene.caster_count;
-    scene.environment = params.environment;
+    ORB_SCENE_VIEW_OF_ARGUMENTS
 
     const CameraParams cam = params.camera;
     const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);

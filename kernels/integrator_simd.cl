@@ -83,46 +83,23 @@ SIMD_FN vfloat v3_max(v3 a) { return fmax(a.x, fmax(a.y, a.z)); }
 SIMD_FN v3 v3_select(v3 a, v3 b, vint m) { return v3_make(select(a.x, b.x, m), select(a.y, b.y, m), select(a.z, b.z, m)); }
 // a + b where m.
 SIMD_FN v3 v3_add_where(v3 a, v3 b, vint m) { return v3_select(a, v3_add(a, b), m); }
+// A v3's lanes to three arrays and back, for work done lane by lane.
+SIMD_FN void v3_store_lanes(v3 v, float* x, float* y, float* z)
+{
+    vstore_lanes(v.x, 0, x);
+    vstore_lanes(v.y, 0, y);
+    vstore_lanes(v.z, 0, z);
+}
+SIMD_FN v3 v3_load_lanes(const float* x, const float* y, const float* z)
+{
+    return v3_make(vload_lanes(0, x), vload_lanes(0, y), vload_lanes(0, z));
+}
 
 // ---- The sampler over lanes (sampler.cl's functions, the same numbers) ----
-SIMD_FN vuint v_reverse_bits(vuint x)
-{
-    x = (x << 16) | (x >> 16);
-    x = ((x & 0x00ff00ffu) << 8) | ((x >> 8) & 0x00ff00ffu);
-    x = ((x & 0x0f0f0f0fu) << 4) | ((x >> 4) & 0x0f0f0f0fu);
-    x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);
-    return ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
-}
-
-SIMD_FN vuint v_lk_permutation(vuint x, vuint seed)
-{
-    x ^= x * 0x3d20adeau;
-    x += seed;
-    x *= (seed >> 16) | 1u;
-    x ^= x * 0x05526c56u;
-    x ^= x * 0x53a22864u;
-    return x;
-}
-
-SIMD_FN vuint v_mix32(vuint x)
-{
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-SIMD_FN vuint v_sobol_dimension1_reversed(vuint i)
-{
-    i ^= (i >> 1) & 0x55555555u;
-    i ^= (i >> 2) & 0x33333333u;
-    i ^= (i >> 4) & 0x0f0f0f0fu;
-    i ^= (i >> 8) & 0x00ff00ffu;
-    i ^= (i >> 16) & 0x0000ffffu;
-    return i;
-}
+ORB_DEFINE_REVERSE_BITS_SHIFTS(SIMD_FN, vuint, v_reverse_bits)
+ORB_DEFINE_LK_PERMUTATION(SIMD_FN, vuint, v_lk_permutation)
+ORB_DEFINE_MIX32(SIMD_FN, vuint, v_mix32)
+ORB_DEFINE_SOBOL_DIMENSION1_REVERSED(SIMD_FN, vuint, v_sobol_dimension1_reversed)
 
 SIMD_FN vfloat v_unit_from_bits(vuint bits24) { return to_vfloat(bits24) * 0x1p-24f; }
 
@@ -234,12 +211,7 @@ SIMD_FN vfloat v_rand_single(const VRandBlock* r, const VCoords* c, vint lanes)
 // ---- Sampling (sampling.cl over lanes) ----
 SIMD_FN void v_unit_circle(vfloat v, vfloat* cos_out, vfloat* sin_out)
 {
-    const vfloat x = 4.0f * v + 0.5f;
-    const vfloat k = floor(x);
-    const vfloat theta = (x - k - 0.5f) * (0.5f * ORB_PI);
-    const vfloat t2 = theta * theta;
-    const vfloat s = theta * (1.0f + t2 * (-1.0f / 6.0f + t2 * (1.0f / 120.0f + t2 * (-1.0f / 5040.0f))));
-    const vfloat c = 1.0f + t2 * (-0.5f + t2 * (1.0f / 24.0f + t2 * (-1.0f / 720.0f + t2 * (1.0f / 40320.0f))));
+    ORB_UNIT_CIRCLE_TERMS(vfloat, v)
     const vint quarter = vint_from_float(k) & 3;
     const vint q0 = quarter == 0, q1 = quarter == 1, odd = (quarter & 1) != 0;
     const vfloat even_c = select(-c, c, q0), even_s = select(-s, s, q0);
@@ -346,8 +318,8 @@ SIMD_FN void v_intersect(const SceneView* scene, v3 o, v3 d, vint self, vint lan
         float ox[ORB_SIMD_WIDTH], oy[ORB_SIMD_WIDTH], oz[ORB_SIMD_WIDTH];
         float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH], t_lane[ORB_SIMD_WIDTH];
         int self_lane[ORB_SIMD_WIDTH], id_lane[ORB_SIMD_WIDTH], traced[ORB_SIMD_WIDTH];
-        vstore_lanes(o.x, 0, ox), vstore_lanes(o.y, 0, oy), vstore_lanes(o.z, 0, oz);
-        vstore_lanes(d.x, 0, dx), vstore_lanes(d.y, 0, dy), vstore_lanes(d.z, 0, dz);
+        v3_store_lanes(o, ox, oy, oz);
+        v3_store_lanes(d, dx, dy, dz);
         vstore_lanes(best, 0, t_lane), vstore_lanes(id, 0, id_lane), vstore_lanes(self, 0, self_lane);
         vstore_lanes(lanes, 0, traced);
         for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
@@ -386,8 +358,8 @@ SIMD_FN vint v_light_visible(const SceneView* scene, v3 o, v3 d, vint self, vint
         float ox[ORB_SIMD_WIDTH], oy[ORB_SIMD_WIDTH], oz[ORB_SIMD_WIDTH];
         float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH];
         int self_lane[ORB_SIMD_WIDTH], light_lane[ORB_SIMD_WIDTH], visible[ORB_SIMD_WIDTH];
-        vstore_lanes(o.x, 0, ox), vstore_lanes(o.y, 0, oy), vstore_lanes(o.z, 0, oz);
-        vstore_lanes(d.x, 0, dx), vstore_lanes(d.y, 0, dy), vstore_lanes(d.z, 0, dz);
+        v3_store_lanes(o, ox, oy, oz);
+        v3_store_lanes(d, dx, dy, dz);
         vstore_lanes(self, 0, self_lane), vstore_lanes(light, 0, light_lane), vstore_lanes(lanes, 0, visible);
         for (int l = 0; l < ORB_SIMD_WIDTH; ++l)
             if (visible[l])
@@ -438,10 +410,10 @@ SIMD_FN VSphere v_load_spheres(const SceneView* scene, vint id)
             kind[l] = material->kind;
         }
         VSphere s;
-        s.centre = v3_make(vload_lanes(0, f[0]), vload_lanes(0, f[1]), vload_lanes(0, f[2]));
+        s.centre = v3_load_lanes(f[0], f[1], f[2]);
         s.radius = vload_lanes(0, f[3]);
-        s.color = v3_make(vload_lanes(0, f[4]), vload_lanes(0, f[5]), vload_lanes(0, f[6]));
-        s.emission = v3_make(vload_lanes(0, f[7]), vload_lanes(0, f[8]), vload_lanes(0, f[9]));
+        s.color = v3_load_lanes(f[4], f[5], f[6]);
+        s.emission = v3_load_lanes(f[7], f[8], f[9]);
         s.ior = vload_lanes(0, f[10]);
         s.light_probability = vload_lanes(0, f[11]);
         s.kind = vload_lanes(0, kind);
@@ -614,9 +586,9 @@ SIMD_FN v3 v_estimate_light(const SceneView* scene, v3 p, vint self, v3 color, v
             nz[ORB_SIMD_WIDTH], cr[ORB_SIMD_WIDTH], cg[ORB_SIMD_WIDTH], cb[ORB_SIMD_WIDTH], pick_lane[ORB_SIMD_WIDTH],
             u_lane[ORB_SIMD_WIDTH], v_lane[ORB_SIMD_WIDTH];
         int self_lane[ORB_SIMD_WIDTH], sampled[ORB_SIMD_WIDTH];
-        vstore_lanes(p.x, 0, px), vstore_lanes(p.y, 0, py), vstore_lanes(p.z, 0, pz);
-        vstore_lanes(n.x, 0, nx), vstore_lanes(n.y, 0, ny), vstore_lanes(n.z, 0, nz);
-        vstore_lanes(color.x, 0, cr), vstore_lanes(color.y, 0, cg), vstore_lanes(color.z, 0, cb);
+        v3_store_lanes(p, px, py, pz);
+        v3_store_lanes(n, nx, ny, nz);
+        v3_store_lanes(color, cr, cg, cb);
         vstore_lanes(pick_pdf, 0, pick_lane), vstore_lanes(u, 0, u_lane), vstore_lanes(u_v, 0, v_lane);
         vstore_lanes(self, 0, self_lane), vstore_lanes(environment_lanes, 0, sampled);
         for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
@@ -635,7 +607,7 @@ SIMD_FN v3 v_estimate_light(const SceneView* scene, v3 p, vint self, v3 color, v
             }
             cr[l] = radiance.x, cg[l] = radiance.y, cb[l] = radiance.z;
         }
-        environment = v3_make(vload_lanes(0, cr), vload_lanes(0, cg), vload_lanes(0, cb));
+        environment = v3_load_lanes(cr, cg, cb);
         lanes &= ~environment_lanes;
         if (!any(lanes)) return environment;
     }
@@ -812,7 +784,7 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH], pdf_lane[ORB_SIMD_WIDTH];
         float er[ORB_SIMD_WIDTH], eg[ORB_SIMD_WIDTH], eb[ORB_SIMD_WIDTH];
         int density_lane[ORB_SIMD_WIDTH], escaped_lane[ORB_SIMD_WIDTH];
-        vstore_lanes(path->d.x, 0, dx), vstore_lanes(path->d.y, 0, dy), vstore_lanes(path->d.z, 0, dz);
+        v3_store_lanes(path->d, dx, dy, dz);
         vstore_lanes(path->from_pdf, 0, pdf_lane), vstore_lanes(path->from_density, 0, density_lane);
         vstore_lanes(escaped, 0, escaped_lane);
         for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
@@ -821,7 +793,7 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
                                              : (float3)(0.0f);
             er[l] = e.x, eg[l] = e.y, eb[l] = e.z;
         }
-        const v3 radiance = v3_make(vload_lanes(0, er), vload_lanes(0, eg), vload_lanes(0, eb));
+        const v3 radiance = v3_load_lanes(er, eg, eb);
         v_add_by_vertex_count(out, path->nondelta_vertices, v3_mul(path->beta, radiance), escaped);
     }
     const vint hit = active & (id >= 0);
@@ -947,10 +919,10 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         float f[25][ORB_SIMD_WIDTH];
         int id_lane[ORB_SIMD_WIDTH], lane_on[ORB_SIMD_WIDTH], outside_lane[ORB_SIMD_WIDTH],
             albedo_set_lane[ORB_SIMD_WIDTH], delta_lane[ORB_SIMD_WIDTH];
-        vstore_lanes(p.x, 0, f[0]), vstore_lanes(p.y, 0, f[1]), vstore_lanes(p.z, 0, f[2]);
-        vstore_lanes(n.x, 0, f[3]), vstore_lanes(n.y, 0, f[4]), vstore_lanes(n.z, 0, f[5]);
-        vstore_lanes(wo.x, 0, f[6]), vstore_lanes(wo.y, 0, f[7]), vstore_lanes(wo.z, 0, f[8]);
-        vstore_lanes(path->beta.x, 0, f[9]), vstore_lanes(path->beta.y, 0, f[10]), vstore_lanes(path->beta.z, 0, f[11]);
+        v3_store_lanes(p, f[0], f[1], f[2]);
+        v3_store_lanes(n, f[3], f[4], f[5]);
+        v3_store_lanes(wo, f[6], f[7], f[8]);
+        v3_store_lanes(path->beta, f[9], f[10], f[11]);
         vstore_lanes(u_light, 0, f[12]), vstore_lanes(v_light, 0, f[13]), vstore_lanes(u_d, 0, f[14]);
         vstore_lanes(v_d, 0, f[15]), vstore_lanes(choice, 0, f[16]);
         vstore_lanes(id, 0, id_lane), vstore_lanes(general, 0, lane_on), vstore_lanes(outside, 0, outside_lane);
@@ -988,15 +960,15 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         }
         const vint albedo_now = vload_lanes(0, albedo_set_lane) == -2;
         if (ORB_FILM_BUILT(albedo)) {
-            out->albedo = v3_select(out->albedo, v3_make(vload_lanes(0, a[0]), vload_lanes(0, a[1]), vload_lanes(0, a[2])),
+            out->albedo = v3_select(out->albedo, v3_load_lanes(a[0], a[1], a[2]),
                                     albedo_now);
             path->albedo_set |= albedo_now;
         }
         v_add_by_vertex_count(out, path->nondelta_vertices + 1,
-                              v3_make(vload_lanes(0, direct[0]), vload_lanes(0, direct[1]), vload_lanes(0, direct[2])),
+                              v3_load_lanes(direct[0], direct[1], direct[2]),
                               general);
-        wi = v3_select(wi, v3_make(vload_lanes(0, f[17]), vload_lanes(0, f[18]), vload_lanes(0, f[19])), general);
-        weight = v3_select(weight, v3_make(vload_lanes(0, f[20]), vload_lanes(0, f[21]), vload_lanes(0, f[22])), general);
+        wi = v3_select(wi, v3_load_lanes(f[17], f[18], f[19]), general);
+        weight = v3_select(weight, v3_load_lanes(f[20], f[21], f[22]), general);
         pdf = select(pdf, vload_lanes(0, f[23]), general);
         eta2 = select(eta2, vload_lanes(0, f[24]), general);
         choice = select(choice, vload_lanes(0, f[16]), general);
@@ -1093,15 +1065,7 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
     const int y = get_global_id(1);
     if (x0 >= width || y >= height) return;
 
-    SceneView scene;
-    ORB_RENDER_PASS_ARGUMENTS(ORB_SCENE_VIEW_FILM, ORB_SCENE_VIEW_SET_TABLE, ORB_SCENE_VIEW_PARAMS)
-    scene.packet_count = params.scene.packet_count;
-    scene.sphere_count = params.scene.sphere_count;
-    scene.light_count = params.scene.light_count;
-    scene.outside_packet_count = params.scene.outside_packet_count;
-    scene.bvh_node_count = params.scene.bvh_node_count;
-    scene.caster_count = params.scene.caster_count;
-    scene.environment = params.environment;
+    ORB_SCENE_VIEW_OF_ARGUMENTS
 
     const CameraParams cam = params.camera;
     const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);

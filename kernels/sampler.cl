@@ -43,32 +43,40 @@
 #define ORB_HAVE_BITREVERSE 1
 #endif
 #endif
+
+// The integer functions of this file are written once as definitions over
+// a type T (uint here; uint16 and the like in integrator_simd.cl, whose lanes
+// must draw exactly these numbers), with the function's qualifiers Q.
+#define ORB_DEFINE_REVERSE_BITS_SHIFTS(Q, T, name)                    \
+    Q T name(T x)                                                     \
+    {                                                                 \
+        x = (x << 16) | (x >> 16);                                    \
+        x = ((x & 0x00ff00ffu) << 8) | ((x >> 8) & 0x00ff00ffu);      \
+        x = ((x & 0x0f0f0f0fu) << 4) | ((x >> 4) & 0x0f0f0f0fu);      \
+        x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);      \
+        return ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);   \
+    }
 #ifdef ORB_HAVE_BITREVERSE
 inline uint reverse_bits32(uint x) { return __builtin_bitreverse32(x); }
 #else
-inline uint reverse_bits32(uint x)
-{
-    x = (x << 16) | (x >> 16);
-    x = ((x & 0x00ff00ffu) << 8) | ((x >> 8) & 0x00ff00ffu);
-    x = ((x & 0x0f0f0f0fu) << 4) | ((x >> 4) & 0x0f0f0f0fu);
-    x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);
-    return ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
-}
+ORB_DEFINE_REVERSE_BITS_SHIFTS(inline, uint, reverse_bits32)
 #endif
 
 // A seeded bijection of 32-bit integers in which bit k of the result depends
 // only on bits 0..k of x (every step carries information upward only:
 // additions, multiplications by odd numbers, and x ^= x * even). This is
 // Laine and Karras's hash-based scramble with Vegdahl's constants (2021).
-inline uint lk_permutation(uint x, uint seed)
-{
-    x ^= x * 0x3d20adeau;
-    x += seed;
-    x *= (seed >> 16) | 1u;
-    x ^= x * 0x05526c56u;
-    x ^= x * 0x53a22864u;
-    return x;
-}
+#define ORB_DEFINE_LK_PERMUTATION(Q, T, name) \
+    Q T name(T x, T seed)                     \
+    {                                         \
+        x ^= x * 0x3d20adeau;                 \
+        x += seed;                            \
+        x *= (seed >> 16) | 1u;               \
+        x ^= x * 0x05526c56u;                 \
+        x ^= x * 0x53a22864u;                 \
+        return x;                             \
+    }
+ORB_DEFINE_LK_PERMUTATION(inline, uint, lk_permutation)
 
 // Owen scrambling of x read as a binary fraction (bit 31 is the first
 // digit): each digit is flipped by a random function of the digits before
@@ -81,15 +89,17 @@ inline uint lk_permutation(uint x, uint seed)
 
 // A 32-bit mixing function (Wellons's "lowbias32"), to derive independent
 // seeds from one hash.
-inline uint mix32(uint x)
-{
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
+#define ORB_DEFINE_MIX32(Q, T, name) \
+    Q T name(T x)                    \
+    {                                \
+        x ^= x >> 16;                \
+        x *= 0x7feb352du;            \
+        x ^= x >> 15;                \
+        x *= 0x846ca68bu;            \
+        x ^= x >> 16;                \
+        return x;                    \
+    }
+ORB_DEFINE_MIX32(inline, uint, mix32)
 
 // The second Sobol dimension of index i, bit-reversed. Its direction
 // numbers v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1) hold, reversed, bit m
@@ -97,15 +107,17 @@ inline uint mix32(uint x)
 // subset of those of k. So reversed bit m of the point is the XOR of the
 // bits k of i over all supersets k of m: a superset transform, five
 // shift-and-mask steps instead of a loop over i's 32 bits.
-inline uint sobol_dimension1_reversed(uint i)
-{
-    i ^= (i >> 1) & 0x55555555u;
-    i ^= (i >> 2) & 0x33333333u;
-    i ^= (i >> 4) & 0x0f0f0f0fu;
-    i ^= (i >> 8) & 0x00ff00ffu;
-    i ^= (i >> 16) & 0x0000ffffu;
-    return i;
-}
+#define ORB_DEFINE_SOBOL_DIMENSION1_REVERSED(Q, T, name) \
+    Q T name(T i)                                        \
+    {                                                    \
+        i ^= (i >> 1) & 0x55555555u;                     \
+        i ^= (i >> 2) & 0x33333333u;                     \
+        i ^= (i >> 4) & 0x0f0f0f0fu;                     \
+        i ^= (i >> 8) & 0x00ff00ffu;                     \
+        i ^= (i >> 16) & 0x0000ffffu;                    \
+        return i;                                        \
+    }
+ORB_DEFINE_SOBOL_DIMENSION1_REVERSED(inline, uint, sobol_dimension1_reversed)
 
 inline float scrambled_unit(uint bits) { return (float)(bits >> 8) * 0x1p-24f; }
 

@@ -9,14 +9,19 @@
 // the whole path tracer, and every device gets the same values this way.
 // The angle is split into a quarter turn k and a remainder theta in
 // [-pi/4, pi/4), where the Taylor polynomials below are accurate to 3e-7.
+// The reduction and the polynomials, over a float type T (the lanes of
+// integrator_simd.cl use them too): declares k (the quarter turns, as T), s
+// and c of the remainder.
+#define ORB_UNIT_CIRCLE_TERMS(T, v)                                                                              \
+    const T x_ = 4.0f * (v) + 0.5f;                                                                             \
+    const T k = floor(x_);                                                                                      \
+    const T theta_ = (x_ - k - 0.5f) * (0.5f * ORB_PI);                                                         \
+    const T t2_ = theta_ * theta_;                                                                              \
+    const T s = theta_ * (1.0f + t2_ * (-1.0f / 6.0f + t2_ * (1.0f / 120.0f + t2_ * (-1.0f / 5040.0f))));       \
+    const T c = 1.0f + t2_ * (-0.5f + t2_ * (1.0f / 24.0f + t2_ * (-1.0f / 720.0f + t2_ * (1.0f / 40320.0f))));
 inline float2 unit_circle(float v)
 {
-    const float x = 4.0f * v + 0.5f;
-    const float k = floor(x);
-    const float theta = (x - k - 0.5f) * (0.5f * ORB_PI);
-    const float t2 = theta * theta;
-    const float s = theta * (1.0f + t2 * (-1.0f / 6.0f + t2 * (1.0f / 120.0f + t2 * (-1.0f / 5040.0f))));
-    const float c = 1.0f + t2 * (-0.5f + t2 * (1.0f / 24.0f + t2 * (-1.0f / 720.0f + t2 * (1.0f / 40320.0f))));
+    ORB_UNIT_CIRCLE_TERMS(float, v)
     // Rotate (c, s) by k quarter turns.
     const int quarter = ((int)k) & 3;
     const float2 even = quarter == 0 ? (float2)(c, s) : (float2)(-c, -s);
