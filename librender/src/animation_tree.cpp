@@ -24,18 +24,17 @@ const SphereBvh& AnimationTree::tree_for(const Scene& scene, bool use_bvh, doubl
         if (const char* knob = std::getenv("ORB_REFIT_COST_LIMIT"))  // development knob: this limit alone
             limit = std::atof(knob), weigh_time = false;
         const auto start = std::chrono::steady_clock::now();
-        // A sphere the layout will refuse (NaN, radius 0) makes the cost NaN
-        // or the boxes odd; either way a rebuild's checks report it.
-        SphereBvh refitted = tree_;
-        refit_sphere_bvh(refitted, scene.spheres);
+        // In place: a refit reads only the tree's topology, and a refit that
+        // is not kept is replaced by the rebuild below. A sphere the layout
+        // will refuse (NaN, radius 0) makes the cost NaN or the boxes odd;
+        // either way the rebuild's checks report it.
+        refit_sphere_bvh(tree_, scene.spheres);
         const double refit_seconds = seconds_since(start);
-        const double growth = bvh_sah_cost(refitted) / built_cost_;
+        const double growth = bvh_sah_cost(tree_) / built_cost_;
         const double slower_frame = (growth - 1.0) * last_frame_render_seconds;
         const double build_saved = build_seconds_ - refit_seconds;
         if (growth <= limit && (!weigh_time || slower_frame <= build_saved)) {
-            tree_ = std::move(refitted);
             last_refitted_ = true;
-            ++refits_;
             return tree_;
         }
     }
@@ -51,7 +50,6 @@ const SphereBvh& AnimationTree::rebuild(const Scene& scene, bool use_bvh)
     use_bvh_ = use_bvh;
     sphere_count_ = scene.spheres.size();
     built_cost_ = bvh_sah_cost(tree_);
-    ++builds_;
     return tree_;
 }
 

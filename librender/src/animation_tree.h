@@ -30,8 +30,6 @@ public:
     const SphereBvh& tree_for(const Scene& scene, bool use_bvh, double last_frame_render_seconds);
 
     bool last_refitted() const { return last_refitted_; }  // the last tree_for refitted
-    std::size_t builds() const { return builds_; }
-    std::size_t refits() const { return refits_; }
 
 private:
     const SphereBvh& rebuild(const Scene& scene, bool use_bvh);
@@ -43,7 +41,6 @@ private:
     double built_cost_ = 0;     // bvh_sah_cost of tree_ when it was built
     double build_seconds_ = 0;  // how long that build took
     bool last_refitted_ = false;
-    std::size_t builds_ = 0, refits_ = 0;
 };
 
 }  // namespace orb::render
