@@ -94,6 +94,19 @@ double total_radiance(const Film& film)
     return total;
 }
 
+// Renders `scene` with render_pass_simd (`lanes`; nullptr: the device's
+// default) and with render_pass, requires a lit image and the same paths,
+// and gives back the render_pass_simd film.
+Film render_both_expecting_same_paths(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
+                                      const char* lanes, const std::string& what)
+{
+    Film simd = render_with_simd_lanes(scene, config, passes, lanes);
+    const Film scalar = render_with_simd_lanes(scene, config, passes, "0");
+    EXPECT_GT(total_radiance(simd), 0.0) << what;
+    expect_same_paths(simd, scalar, what);
+    return simd;
+}
+
 // Diffuse, mirror and glass balls on a floor, three lights of unequal power
 // (the alias table picks them), seen through a thin lens: every branch of
 // render_pass_simd. 37 pixels per row leave the last work-item's lanes
@@ -124,10 +137,7 @@ TEST(SimdKernel, SamePathsAsRenderPassOnEveryBranch)
 {
     const Scene scene = every_branch_scene();
     const RenderConfig config = small_config(37, 23, 5);
-    const Film simd = render_with_simd_lanes(scene, config, {3, 13}, "16");
-    const Film scalar = render_with_simd_lanes(scene, config, {3, 13}, "0");
-    ASSERT_GT(total_radiance(simd), 0.0);
-    expect_same_paths(simd, scalar, "every branch");
+    render_both_expecting_same_paths(scene, config, {3, 13}, "16", "every branch");
 }
 
 TEST(SimdKernel, SamePathsAsRenderPassOnSmallptGpuScenes)
@@ -135,10 +145,7 @@ TEST(SimdKernel, SamePathsAsRenderPassOnSmallptGpuScenes)
     for (const char* name : {"cornell.scn", "caustic3.scn"}) {
         const Scene scene = load_scene_file(std::string(ORB_SCENES_DIR) + "/" + name);
         const RenderConfig config = small_config(45, 34, 3);
-        const Film simd = render_with_simd_lanes(scene, config, {1, 15}, nullptr);
-        const Film scalar = render_with_simd_lanes(scene, config, {1, 15}, "0");
-        ASSERT_GT(total_radiance(simd), 0.0) << name;
-        expect_same_paths(simd, scalar, name);
+        render_both_expecting_same_paths(scene, config, {1, 15}, nullptr, name);
     }
 }
 
@@ -169,10 +176,7 @@ TEST(SimdKernel, SamePathsAsRenderPassWithATreeAndManyLights)
     for (int i = 0; i < 320; ++i)
         add_sphere(scene, {x(rng), y(rng), x(rng)}, r(rng), i % 4 == 0 ? lamps[(i / 4) % 4] : kinds[i % 4]);
     const RenderConfig config = small_config(37, 23, 5);
-    const Film simd = render_with_simd_lanes(scene, config, {2, 14}, "16");
-    const Film scalar = render_with_simd_lanes(scene, config, {2, 14}, "0");
-    ASSERT_GT(total_radiance(simd), 0.0);
-    expect_same_paths(simd, scalar, "tree and many lights");
+    render_both_expecting_same_paths(scene, config, {2, 14}, "16", "tree and many lights");
 }
 
 // Under a uniform sky and no other light (the environment is the only
@@ -187,10 +191,7 @@ TEST(SimdKernel, SamePathsAsRenderPassUnderAnEnvironment)
     sky.environment.kind = EnvironmentKind::Color;
     sky.environment.color = {0.6, 0.7, 0.9};
     const RenderConfig config = small_config(37, 23, 5);
-    Film simd = render_with_simd_lanes(sky, config, {2, 14}, "16");
-    Film scalar = render_with_simd_lanes(sky, config, {2, 14}, "0");
-    ASSERT_GT(total_radiance(simd), 0.0);
-    expect_same_paths(simd, scalar, "uniform sky");
+    render_both_expecting_same_paths(sky, config, {2, 14}, "16", "uniform sky");
 
     Scene mapped = every_branch_scene();
     mapped.spheres.resize(6);  // two of the three lamps
@@ -205,10 +206,7 @@ TEST(SimdKernel, SamePathsAsRenderPassUnderAnEnvironment)
     mapped.environment.intensity = 1.5;
     mapped.environment.rotation_deg = 30.0;
     mapped.environment.image = image;
-    simd = render_with_simd_lanes(mapped, config, {2, 14}, "16");
-    scalar = render_with_simd_lanes(mapped, config, {2, 14}, "0");
-    ASSERT_GT(total_radiance(simd), 0.0);
-    expect_same_paths(simd, scalar, "map and lamps");
+    render_both_expecting_same_paths(mapped, config, {2, 14}, "16", "map and lamps");
 }
 
 // The lane widths differ only in how pixels are grouped into work-items:
@@ -241,12 +239,9 @@ TEST(SimdKernel, SamePathsAsRenderPassInDirectMode)
 {
     const Scene scene = every_branch_scene();
     const RenderConfig config = small_config(37, 23, 5, 6, IntegratorMode::Direct);
-    const Film simd = render_with_simd_lanes(scene, config, {4, 12}, "16");
-    const Film scalar = render_with_simd_lanes(scene, config, {4, 12}, "0");
-    ASSERT_GT(total_radiance(simd), 0.0);
+    const Film simd = render_both_expecting_same_paths(scene, config, {4, 12}, "16", "direct mode");
     // No path reaches a second diffuse vertex, so nothing is indirect.
     for (float v : simd.indirect) ASSERT_EQ(v, 0.0f);
-    expect_same_paths(simd, scalar, "direct mode");
 }
 
 // pbr spheres (a rough metal, a rough plastic, a smooth metal) and a rough
@@ -278,10 +273,8 @@ TEST(SimdKernel, SamePathsAsRenderPassWithPbrAndRoughGlass)
     scene.materials[scene.spheres[3].material].roughness = 0.3;  // the glass ball
     for (IntegratorMode mode : {IntegratorMode::Global, IntegratorMode::Direct}) {
         const RenderConfig config = small_config(37, 23, 5, 6, mode);
-        const Film simd = render_with_simd_lanes(scene, config, {2, 14}, "16");
-        const Film scalar = render_with_simd_lanes(scene, config, {2, 14}, "0");
-        ASSERT_GT(total_radiance(simd), 0.0);
-        expect_same_paths(simd, scalar, mode == IntegratorMode::Global ? "pbr, global" : "pbr, direct");
+        render_both_expecting_same_paths(scene, config, {2, 14}, "16",
+                                         mode == IntegratorMode::Global ? "pbr, global" : "pbr, direct");
     }
 }
 
