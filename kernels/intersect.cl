@@ -311,6 +311,23 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 #define ORB_BVH_EXPECT(ok, what, value, limit, give_up)
 #endif
 
+// Development knob: -DORB_BVH_COUNT=1 (through ORB_CL_OPTIONS) prints, for
+// every ray that enters the tree, how many nodes and leaves its traversal
+// visited: "orb BVH visits: closest N" or "orb BVH visits: shadow N".
+// scripts/bvh-visits.sh sums them per sample. Off by default: no cost.
+#ifndef ORB_BVH_COUNT
+#define ORB_BVH_COUNT 0
+#endif
+#if ORB_BVH_COUNT
+#define ORB_BVH_VISITS_BEGIN int bvh_visits = 0;
+#define ORB_BVH_VISIT ++bvh_visits;
+#define ORB_BVH_VISITS_END(kind) printf("orb BVH visits: " kind " %d\n", bvh_visits);
+#else
+#define ORB_BVH_VISITS_BEGIN
+#define ORB_BVH_VISIT
+#define ORB_BVH_VISITS_END(kind)
+#endif
+
 // Closest hit along the ray, ordered front to back: of a node's children
 // the ray hits, the nearest is visited next and the others are pushed with
 // their entry distances, nearest on top; a popped child whose entry lies
@@ -324,7 +341,9 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
     float stack_entry[ORB_BVH_STACK_SIZE + 2];
     int top = 0;
     int current = 0;
+    ORB_BVH_VISITS_BEGIN
     for (;;) {
+        ORB_BVH_VISIT
         if (current < 0) {
             const int packet = -1 - current;
             ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return)
@@ -348,6 +367,7 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
         if (top == 0) break;
         current = stack_child[--top];
     }
+    ORB_BVH_VISITS_END("closest")
 }
 
 inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
@@ -401,12 +421,17 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     int stack[ORB_BVH_STACK_SIZE + 2];  // two spare entries, as above
     int top = 0;
     int current = 0;
+    ORB_BVH_VISITS_BEGIN
     for (;;) {
+        ORB_BVH_VISIT
         if (current < 0) {
             const int packet = -1 - current;
             ORB_BVH_EXPECT(packet < scene->packet_count, "shadow leaf packet", packet, scene->packet_count,
                            return false)
-            if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) return false;
+            if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) {
+                ORB_BVH_VISITS_END("shadow")
+                return false;
+            }
         } else {
             ORB_BVH_EXPECT(current < scene->bvh_node_count, "shadow node", current, scene->bvh_node_count,
                            return false)
@@ -421,7 +446,10 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
                 continue;
             }
         }
-        if (top == 0) return true;
+        if (top == 0) {
+            ORB_BVH_VISITS_END("shadow")
+            return true;
+        }
         current = stack[--top];
     }
 #endif

@@ -8,7 +8,9 @@
 #include <cstdlib>
 #include <string>
 #include <limits>
+#include <map>
 #include <random>
+#include <sstream>
 
 #include "render_test_support.h"
 #include "scene_layout.h"
@@ -129,6 +131,36 @@ TEST(BvhRender, TraversalIndicesStayInBoundsInBothVariants) {
     EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_SCENE_SPACE=__global"), "");
     EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2").find("orb BVH check: stack top"),
               std::string::npos);
+}
+
+// The development counters (-DORB_BVH_COUNT=1, scripts/bvh-visits.sh)
+// print one line per ray that enters the tree, closest hits and shadow rays,
+// each with a visit count between one (the root) and every node and leaf
+// of the tree; in both variants.
+TEST(BvhRender, VisitCountersReportEveryTracedRay) {
+    const Scene scene = cloud_scene(300, 5);
+    const SceneLayout layout = layout_scene(scene);
+    std::size_t leaves = 0;
+    for (const device::BvhNodeRecord& node : layout.tables.bvh_nodes)
+        for (int child : {node.child.x, node.child.y, node.child.z, node.child.w}) leaves += child < 0;
+    const long most = static_cast<long>(layout.tables.bvh_nodes.size() + leaves);
+    for (const char* options : {"-DORB_BVH_COUNT=1", "-DORB_BVH_COUNT=1 -DORB_INTERSECT_SCALAR=1"}) {
+        std::istringstream lines(kernel_output(scene, options));
+        std::map<std::string, long> rays;
+        std::string line;
+        while (std::getline(lines, line)) {
+            char kind[16] = {};
+            long visits = 0;
+            ASSERT_EQ(std::sscanf(line.c_str(), "orb BVH visits: %15s %ld", kind, &visits), 2) << options << ": " << line;
+            EXPECT_GE(visits, 1) << line;
+            EXPECT_LE(visits, most) << line;
+            ++rays[kind];
+        }
+        EXPECT_EQ(rays.size(), 2u) << options;
+        // Every camera ray starts a traversal (48x36 pixels at 4 spp).
+        EXPECT_GE(rays["closest"], 48 * 36 * 4) << options;
+        EXPECT_GT(rays["shadow"], 0) << options;
+    }
 }
 
 TEST(BvhRender, TheIdPassNamesSceneSpheresInBvhOrder) {
