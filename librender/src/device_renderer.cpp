@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "program_build.h"
+
 namespace orb::render {
 namespace {
 
@@ -98,9 +100,7 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
     const cl_ulong constant_limit = device.getInfo<CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE>();
     const cl_uint constant_args = device.getInfo<CL_DEVICE_MAX_CONSTANT_ARGS>();
     const bool constant_scene = scene_table_bytes(scene.tables) <= constant_limit && kSceneTableCount <= constant_args;
-    // Unsafe math (reassociation, fast division) gave +8% on an H100 and
-    // nothing measurable on PoCL; the analytic tests pass with it.
-    std::string options = std::string("-cl-std=CL1.2 -cl-mad-enable -cl-unsafe-math-optimizations") +
+    std::string options = std::string(kKernelLanguageOptions) +
                           " -DORB_SCENE_SPACE=" + (constant_scene ? "__constant" : "__global") +
                           (session_->info().is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
                           // A scene without a tree gets a program without traversal code.

@@ -53,12 +53,12 @@ SceneBuffers upload_scene(const cl::Context& context, const SceneTables& tables)
     return buffers;
 }
 
-void bind_buffers(cl::Kernel& kernel, const DeviceFilm& film, const SceneBuffers& scene)
+void bind_buffers(cl::Kernel& kernel, const DeviceFilm& film, const SceneBuffers& scene, cl_uint trailing_args)
 {
     const cl_uint kernel_args = kernel.getInfo<CL_KERNEL_NUM_ARGS>();
-    if (kernel_args != index(PassArg::count))
+    if (kernel_args != index(PassArg::count) + trailing_args)
         throw std::runtime_error("render_pass takes " + std::to_string(kernel_args) + " arguments but this build of " +
-                                 "orb binds " + std::to_string(index(PassArg::count)) +
+                                 "orb binds " + std::to_string(index(PassArg::count) + trailing_args) +
                                  "; do the kernels (--kernel-dir) come from another version?");
     for (std::size_t i = 0; i < kFilmArgs.size(); ++i) kernel.setArg(index(kFilmArgs[i]), film.buffers()[i]);
 #define ORB_BIND_FILM(...)

@@ -67,8 +67,10 @@ SceneBuffers upload_scene(const cl::Context& context, const SceneTables& tables)
 
 // Binds the film and the scene tables, which stay for the whole render.
 // Throws std::runtime_error if the kernel's argument count is not the list's
-// (kernels from --kernel-dir out of step with this build).
-void bind_buffers(cl::Kernel& kernel, const DeviceFilm& film, const SceneBuffers& scene);
+// plus `trailing_args` (kernels from --kernel-dir out of step with this
+// build). A kernel with trailing arguments after the list's (trace_rays)
+// binds those itself, from static_cast<cl_uint>(PassArg::count) on.
+void bind_buffers(cl::Kernel& kernel, const DeviceFilm& film, const SceneBuffers& scene, cl_uint trailing_args = 0);
 
 // Sets the parameter struct; called before every pass.
 void bind_params(cl::Kernel& kernel, const device::RenderPassParams& params);

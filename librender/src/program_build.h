@@ -7,6 +7,12 @@
 
 namespace orb::render {
 
+// The language version and the math every program of the kernels is built
+// with. Unsafe math (reassociation, fast division) gave +8% on an H100 and
+// nothing measurable on PoCL; the analytic tests pass with it.
+inline constexpr const char* kKernelLanguageOptions =
+    "-cl-std=CL1.2 -cl-mad-enable -cl-unsafe-math-optimizations";
+
 // Directory of the binary cache: $XDG_CACHE_HOME/orb, else $HOME/.cache/orb;
 // empty if neither variable is set.
 std::string binary_cache_dir();

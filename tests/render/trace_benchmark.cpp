@@ -1,0 +1,158 @@
+// Not a test: rays per second of ray casting alone on a device, for deciding
+// whether a wavefront renderer would pay (docs/performance.md, "Would a
+// wavefront renderer pay?"). A wavefront design casts each bounce's rays in
+// a kernel of their own, which carries no path state and so needs few
+// registers; this measures that kernel's part, with the traversal
+// render_pass uses (trace_rays, librender/src/ray_caster.h).
+//
+//   build/bin/orb-trace-benchmark SCENE [--device SEL] [--width W] [--height H] [--seconds S]
+//
+// Three batches, each cast repeatedly for S seconds (default 2) after one
+// warm-up cast:
+//  - camera rays: one pinhole ray through each pixel centre (default 1920x1080);
+//  - bounce rays: from each camera ray's hit, a cosine-distributed direction
+//    about the normal (a diffuse bounce, leaving that sphere);
+//  - shadow rays: from each hit to a random point on a random light.
+// The bounce and shadow rays are the kind a path's later vertices cast; the
+// camera rays are the most coherent a renderer casts.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "orb/render/device.h"
+#include "orb/scene/import.h"
+#include "ray_caster.h"
+#include "scene_layout.h"
+
+using namespace orb;
+using namespace orb::render;
+
+namespace {
+
+struct V {
+    float x, y, z;
+};
+V operator+(V a, V b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+V operator-(V a, V b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+V operator*(float s, V a) { return {s * a.x, s * a.y, s * a.z}; }
+float dot(V a, V b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V unit(V a) { return (1.0f / std::sqrt(dot(a, a))) * a; }
+V cross(V a, V b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+V xyz(const device::float4& v) { return {v.x, v.y, v.z}; }
+
+CastRay make_ray(V o, V d, int self, int light = -1)
+{
+    CastRay ray;
+    ray.origin[0] = o.x, ray.origin[1] = o.y, ray.origin[2] = o.z;
+    ray.direction[0] = d.x, ray.direction[1] = d.y, ray.direction[2] = d.z;
+    ray.self = self;
+    ray.light = light;
+    return ray;
+}
+
+// Rays per second of `rays` cast for about `seconds`, after a warm-up cast.
+double rays_per_second(RayCaster& caster, const std::vector<CastRay>& rays, bool shadow, double seconds)
+{
+    caster.load(rays);
+    const double once = caster.cast_loaded(shadow, 1);
+    const int times = std::max(1, static_cast<int>(seconds / std::max(once, 1e-6)));
+    return static_cast<double>(rays.size()) * times / caster.cast_loaded(shadow, times);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2) {
+        std::cerr << "usage: orb-trace-benchmark SCENE [--device SEL] [--width W] [--height H] [--seconds S]\n";
+        return 2;
+    }
+    try {
+        std::string device_selector;
+        int width = 1920, height = 1080;
+        double seconds = 2.0;
+        for (int i = 2; i + 1 < argc; i += 2) {
+            const std::string flag = argv[i], value = argv[i + 1];
+            if (flag == "--device") device_selector = value;
+            else if (flag == "--width") width = std::stoi(value);
+            else if (flag == "--height") height = std::stoi(value);
+            else if (flag == "--seconds") seconds = std::stod(value);
+            else throw std::runtime_error("unknown option " + flag);
+        }
+        std::ifstream in(argv[1], std::ios::binary);
+        if (!in) throw std::runtime_error(std::string("cannot read ") + argv[1]);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        const Scene scene = import_scene(bytes.str(), argv[1], ".").scene;
+        const SceneLayout layout = layout_scene(scene);
+        const device::CameraParams camera = layout_camera(scene.camera, width, height);
+
+        const DeviceInfo device = choose_device(device_selector);
+        RayCaster caster(DeviceSession::open(device, {}), layout);
+        std::cout << "device=" << device.name << " (" << device.platform << ") spheres=" << scene.spheres.size()
+                  << " tree_nodes=" << layout.counts.bvh_node_count << "\n";
+
+        // Camera rays through the pixel centres (camera.cl's pinhole ray).
+        std::vector<CastRay> camera_rays;
+        camera_rays.reserve(static_cast<std::size_t>(width) * height);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const float ndc_x = 2.0f * (x + 0.5f) / width - 1.0f, ndc_y = 1.0f - 2.0f * (y + 0.5f) / height;
+                const V d = unit(xyz(camera.forward) + (ndc_x * camera.half_width) * xyz(camera.right) +
+                                 (ndc_y * camera.half_height) * xyz(camera.up));
+                camera_rays.push_back(make_ray(xyz(camera.origin), d, -1));
+            }
+        const std::vector<CastHit> hits = caster.closest(camera_rays);
+
+        // Bounce and shadow rays from the hits.
+        std::vector<int> lights;
+        for (const device::LightRecord& light : layout.tables.lights)
+            if (light.sphere >= 0 && light.probability > 0.0f) lights.push_back(light.sphere);
+        std::mt19937 rng(1);
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        std::vector<CastRay> bounce_rays, shadow_rays;
+        for (std::size_t i = 0; i < hits.size(); ++i) {
+            if (hits[i].sphere < 0) continue;
+            const CastRay& ray = camera_rays[i];
+            const V o{ray.origin[0], ray.origin[1], ray.origin[2]}, d{ray.direction[0], ray.direction[1], ray.direction[2]};
+            const V p = o + hits[i].t * d;
+            const device::float4 sphere = layout.tables.spheres[hits[i].sphere].centre_radius;
+            V n = unit(p - xyz(sphere));
+            if (dot(n, d) > 0.0f) n = -1.0f * n;
+            const V t = unit(cross(std::fabs(n.x) > 0.5f ? V{0, 1, 0} : V{1, 0, 0}, n)), b = cross(n, t);
+            const float r = std::sqrt(u(rng)), phi = 6.2831853f * u(rng);
+            const V w = (r * std::cos(phi)) * t + (r * std::sin(phi)) * b + std::sqrt(std::max(0.0f, 1.0f - r * r)) * n;
+            bounce_rays.push_back(make_ray(p, unit(w), hits[i].sphere));
+            if (lights.empty()) continue;
+            const int light = lights[std::min(lights.size() - 1, static_cast<std::size_t>(u(rng) * lights.size()))];
+            const device::float4 lamp = layout.tables.spheres[light].centre_radius;
+            const float z = 1.0f - 2.0f * u(rng), a = 6.2831853f * u(rng), s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+            const V target = xyz(lamp) + lamp.w * V{s * std::cos(a), s * std::sin(a), z};
+            shadow_rays.push_back(make_ray(p, unit(target - p), hits[i].sphere, light));
+        }
+
+        const auto report = [&](const char* name, const std::vector<CastRay>& rays, bool shadow) {
+            if (rays.empty()) {
+                std::cout << name << ": none\n";
+                return;
+            }
+            const double rate = rays_per_second(caster, rays, shadow, seconds);
+            std::printf("%s: %zu rays, %.4g rays/s\n", name, rays.size(), rate);
+        };
+        std::size_t hit_count = bounce_rays.size();
+        std::printf("camera rays hitting a sphere: %.3f\n", static_cast<double>(hit_count) / camera_rays.size());
+        report("camera rays", camera_rays, false);
+        report("bounce rays", bounce_rays, false);
+        report("shadow rays", shadow_rays, true);
+    } catch (const std::exception& error) {
+        std::cerr << "orb-trace-benchmark: error: " << error.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
