@@ -18,9 +18,8 @@
 // density, proportional to each texel's radiance times its solid angle and
 // uniform in solid angle inside it, follows the radiance exactly.
 
-// -DORB_ENVIRONMENT=0 leaves the environment's code out (built when absent).
-// The host does not: on NVIDIA's driver programs without it faulted now and
-// then with a tree and the Sobol sampler (docs/performance.md).
+// -DORB_ENVIRONMENT=0 leaves the environment's code out: the host builds
+// such a program for a scene without an environment.
 #ifndef ORB_ENVIRONMENT
 #define ORB_ENVIRONMENT 1
 #endif

@@ -314,6 +314,17 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     const ulong first_sample = ((ulong)params.pass.first_sample_hi << 32) | (ulong)params.pass.first_sample_lo;
     const int sample_count = params.pass.sample_count;
 
+    // The centre-ray channels first, on the pass that writes them. Cast after
+    // the sample loop, as it once was, NVIDIA's driver 580 faulted (OpenCL
+    // error -36) in most renders of a scene with a tree that built the depth
+    // or id channel and let paths reach a third scattering event, at every
+    // register cap but one; cast before the loop, never
+    // (docs/performance.md, "The -36 fault, found").
+    if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
+        const FilmCentre centre = film_centre_ray(&scene, &cam, x, y, width, height);
+        ORB_FILM_SET_CENTRE
+    }
+
     FilmSums sums;
     film_sums_clear(&sums);
 
@@ -336,9 +347,4 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
         }
     }
     ORB_FILM_ADD_SUMS
-
-    if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
-        const FilmCentre centre = film_centre_ray(&scene, &cam, x, y, width, height);
-        ORB_FILM_SET_CENTRE
-    }
 }

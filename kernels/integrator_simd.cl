@@ -1081,6 +1081,15 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
         keys[lane] = sampler_pixel_key((uint)(y * width + x0 + lane), seed);
     const vuint pixel_key = vload_lanes(0, keys);
 
+    // The centre-ray channels first, lane by lane, as render_pass does.
+    if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
+        for (int lane = 0; lane < min(ORB_SIMD_WIDTH, width - x0); ++lane) {
+            const uint pixel = (uint)y * (uint)width + (uint)(x0 + lane);
+            const FilmCentre centre = film_centre_ray(&scene, &cam, x0 + lane, y, width, height);
+            ORB_FILM_SET_CENTRE
+        }
+    }
+
     VFilmSums vsums;
     v_film_sums_clear(&vsums);
 
@@ -1125,10 +1134,6 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
         FilmSums sums;
         ORB_FILM_CHANNELS(ORB_SIMD_PICK)
         ORB_FILM_ADD_SUMS
-        if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
-            const FilmCentre centre = film_centre_ray(&scene, &cam, x0 + lane, y, width, height);
-            ORB_FILM_SET_CENTRE
-        }
     }
 }
 

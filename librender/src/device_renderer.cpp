@@ -11,22 +11,20 @@ namespace {
 
 // NVIDIA's compiler gives render_pass more registers than let an SM keep
 // enough warps in flight, or, capped too low, spills. Measured on an H100
-// (docs/performance.md, "Register caps, 2026-11-23 night"): with a tree the
-// traversal's memory waits want warps, and 56-64 beat 72-80 by 3-8% at
-// 100 k and 1 M spheres, but those programs fault now (below); without one, the Cornell boxes (nine spheres,
-// three packets, long paths) ran best at 72 (+3% over 80, 96 lost 3%) and
-// the small open scenes (three to five spheres in one or two packets, short
-// paths) at 96 (+4% to +13% over 80). Why the two kinds differ was not
-// profiled (Nsight Compute does not see OpenCL kernels).
+// (docs/performance.md, "Register caps, 2026-11-23 night" and "The -36
+// fault, found"): with a tree the traversal's memory waits want warps, and
+// 64 beats 80, 96 and 128 at 1 M spheres (0.752 G samples/s against 0.698,
+// 0.660 and 0.633 at 1920x1080; at 1 k spheres 64 to 96 are within 2%);
+// without one, the Cornell boxes (nine spheres, three packets, long paths)
+// ran best at 72 (+3% over 80, 96 lost 3%) and the small open scenes (three
+// to five spheres in one or two packets, short paths) at 96 (+4% to +13%
+// over 80). Why the two kinds differ was not profiled (Nsight Compute does
+// not see OpenCL kernels).
 std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
 {
     const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
     if (extensions.find("cl_nv_compiler_options") == std::string::npos) return "";
-    // With a tree, 96: every other cap tried (64, 72, 80, 112, 128) made
-    // NVIDIA's driver 580 fault (OpenCL error -36) in every Sobol benchmark
-    // of the orb-gen clouds on an H100, 96 in none of 15
-    // (docs/performance.md, "The fault comes back").
-    if (scene.counts.bvh_node_count > 0) return " -cl-nv-maxrregcount=96";
+    if (scene.counts.bvh_node_count > 0) return " -cl-nv-maxrregcount=64";
     return scene.counts.packet_count <= 2 ? " -cl-nv-maxrregcount=96" : " -cl-nv-maxrregcount=72";
 }
 
@@ -106,13 +104,13 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           // A scene without a tree gets a program without traversal code.
                           (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
                           (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
-                          // Only the code the scene uses: each material kind's and rough
-                          // glass's cost registers on GPUs whether a scene uses them or
-                          // not (docs/performance.md). The environment's code stays in
-                          // every program: NVIDIA's driver (580) faulted (-36) in about
-                          // half the Sobol renders of scenes with a tree without it,
-                          // never in 34 with it; the cause is not known.
+                          // Only the code the scene uses: each material kind's, rough
+                          // glass's and the environment's cost registers on GPUs whether
+                          // a scene uses them or not (docs/performance.md; without the
+                          // environment's code, 1 M spheres on an H100 render 3.5%
+                          // faster, 1 k spheres 7%).
                           " -DORB_MATERIAL_KINDS=" + std::to_string(scene.material_kinds) +
+                          (scene.environment.width > 0 ? "" : " -DORB_ENVIRONMENT=0") +
                           // No aiming code without casters (4% of an H100's samples/s on
                           // simple.scn), nor in direct mode, which counts no light that
                           // passed a caster after the first diffuse vertex.
