@@ -298,6 +298,20 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 #ifndef ORB_BVH_CHECK
 #define ORB_BVH_CHECK 0
 #endif
+// Leaf runs (CPUs): a node whose children are all leaves tests their
+// packets straight away (BvhNodeRecord::leaf_run), four spheres per vector
+// instruction, instead of testing the four boxes, ordering the hit ones and
+// visiting them one by one. A visit there is a chain of dependent steps and
+// branches; the spheres are a few branch-free vector tests, more arithmetic
+// than the boxes would have let through but less time (docs/performance.md,
+// "Leaf runs"). GPUs test one sphere at a time, so for them the boxes stay.
+#ifndef ORB_BVH_LEAF_RUNS
+#ifdef ORB_INTERSECT_SCALAR
+#define ORB_BVH_LEAF_RUNS 0
+#else
+#define ORB_BVH_LEAF_RUNS 1
+#endif
+#endif
 #ifndef ORB_BVH_CHECK_STACK
 #define ORB_BVH_CHECK_STACK ORB_BVH_STACK_SIZE
 #endif
@@ -350,6 +364,13 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
             test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
         } else {
             ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return)
+#if ORB_BVH_LEAF_RUNS
+            const int4 run = scene->bvh_nodes[current].leaf_run;
+            if (run.x >= 0) {
+                for (int k = 0; k < run.y; ++k) test_packet(best, &scene->packets[run.x + k], 4 * (run.x + k), o, d, self);
+                goto next_deferred;
+            }
+#endif
             int4 child;
             float4 entry;
             const int count = hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
@@ -361,6 +382,9 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
                 continue;
             }
         }
+#if ORB_BVH_LEAF_RUNS
+    next_deferred:;
+#endif
         // Next: the nearest deferred child that can still hold a closer hit.
         const float t_best = best_distance(best);
         while (top > 0 && stack_entry[top - 1] >= t_best) --top;
@@ -435,6 +459,17 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
         } else {
             ORB_BVH_EXPECT(current < scene->bvh_node_count, "shadow node", current, scene->bvh_node_count,
                            return false)
+#if ORB_BVH_LEAF_RUNS
+            const int4 run = scene->bvh_nodes[current].leaf_run;
+            if (run.x >= 0) {
+                for (int k = 0; k < run.y; ++k)
+                    if (packet_blocks(&scene->packets[run.x + k], 4 * (run.x + k), o, d, self, light, t_light)) {
+                        ORB_BVH_VISITS_END("shadow")
+                        return false;
+                    }
+                goto next_shadow;
+            }
+#endif
             int4 child;
             float4 entry;
             const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
@@ -446,6 +481,9 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
                 continue;
             }
         }
+#if ORB_BVH_LEAF_RUNS
+    next_shadow:
+#endif
         if (top == 0) {
             ORB_BVH_VISITS_END("shadow")
             return true;

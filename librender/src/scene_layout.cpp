@@ -86,6 +86,7 @@ device::BvhNodeRecord empty_node_record() {
         record.bounds[axis + 3] = {-big, -big, -big, -big};
     }
     record.child = {-1, -1, -1, -1};
+    record.leaf_run = {-1, 0, 0, 0};
     return record;
 }
 
@@ -156,6 +157,9 @@ SceneLayout layout_scene(const Scene& scene, const SphereBvh& bvh)
     std::size_t next_leaf_packet = outside_packets;
     for (const BvhNode& node : bvh.nodes) {
         device::BvhNodeRecord record = empty_node_record();
+        bool only_leaves = node.child_count > 0;
+        for (std::uint32_t k = 0; k < node.child_count; ++k) only_leaves = only_leaves && node.children[k].leaf();
+        if (only_leaves) record.leaf_run = {static_cast<int>(next_leaf_packet), static_cast<int>(node.child_count), 0, 0};
         for (std::uint32_t k = 0; k < node.child_count; ++k) {
             const BvhChild& child = node.children[k];
             for (int axis = 0; axis < 3; ++axis) {

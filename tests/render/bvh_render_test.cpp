@@ -88,6 +88,41 @@ TEST(BvhRender, SameImageWithAndWithoutTheTree) {
     expect_same_with_and_without_tree(scene);
 }
 
+// A node whose children are all leaves names their packets as one run
+// (BvhNodeRecord::leaf_run), which the CPU variant tests without the boxes:
+// the run is exactly the children's packets, consecutive; any other node
+// has none.
+TEST(BvhRender, LeafRunsNameExactlyTheLeavesOfAllLeafNodes) {
+    const SceneLayout layout = layout_scene(cloud_scene(2000, 3));
+    std::size_t runs = 0, others = 0;
+    for (const device::BvhNodeRecord& node : layout.tables.bvh_nodes) {
+        // Empty lanes hold child -1, which reads as packet 0: count the
+        // node's real children from its boxes (an empty lane's box is inverted).
+        std::vector<int> real_leaves;
+        bool only_leaves = true;
+        int real = 0;
+        const int child_of[4] = {node.child.x, node.child.y, node.child.z, node.child.w};
+        const float lo_x[4] = {node.bounds[0].x, node.bounds[0].y, node.bounds[0].z, node.bounds[0].w};
+        const float hi_x[4] = {node.bounds[3].x, node.bounds[3].y, node.bounds[3].z, node.bounds[3].w};
+        for (int k = 0; k < 4; ++k) {
+            if (lo_x[k] > hi_x[k]) continue;  // an empty lane
+            ++real;
+            if (child_of[k] < 0) real_leaves.push_back(-1 - child_of[k]);
+            else only_leaves = false;
+        }
+        if (only_leaves && real > 0) {
+            ++runs;
+            ASSERT_EQ(node.leaf_run.y, real);
+            for (int k = 0; k < real; ++k) EXPECT_EQ(real_leaves[k], node.leaf_run.x + k);
+        } else {
+            ++others;
+            EXPECT_EQ(node.leaf_run.x, -1);
+        }
+    }
+    EXPECT_GT(runs, 0u);
+    EXPECT_GT(others, 0u);
+}
+
 // GPUs build the kernels with one-sphere-at-a-time intersection
 // (ORB_INTERSECT_SCALAR); its traversal must find the same spheres too. Run
 // here on PoCL through the development knob ORB_CL_OPTIONS.

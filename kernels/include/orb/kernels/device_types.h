@@ -122,11 +122,14 @@ typedef struct SphereRecord {
  * a ray picks the plane it enters by per axis as bounds[axis] or
  * bounds[axis + 3] (intersect.cl). A lane without a child holds the inverted
  * box lo = FLT_MAX, hi = -FLT_MAX, which every ray leaves before it enters.
+ * leaf_run.x: when every child is a leaf, the first of their packets, which
+ * are consecutive (leaf_run.y of them); else -1. CPUs test those packets
+ * straight away instead of the boxes (kernels/intersect.cl).
  * 128 bytes: two 64-byte cache lines, eight 16-byte loads. */
 typedef struct BvhNodeRecord {
     float4 bounds[6];
     int4 child;
-    int4 pad0;
+    int4 leaf_run; /* x: first packet, y: packet count; x -1 unless every child is a leaf; z, w: 0 */
 } BvhNodeRecord;
 
 /* The traversal stack's entries (kernels/intersect.cl). The build keeps
@@ -282,7 +285,7 @@ typedef struct RenderPassParams {
     FIELD(SphereRecord, centre_radius, 0) FIELD(SphereRecord, material, 16)                                \
     FIELD(SphereRecord, scene_index, 20) FIELD(SphereRecord, light_probability, 24)                        \
     SIZE(BvhNodeRecord, 128)                                                                               \
-    FIELD(BvhNodeRecord, bounds, 0) FIELD(BvhNodeRecord, child, 96)                                        \
+    FIELD(BvhNodeRecord, bounds, 0) FIELD(BvhNodeRecord, child, 96) FIELD(BvhNodeRecord, leaf_run, 112)    \
     SIZE(MaterialRecord, 48)                                                                               \
     FIELD(MaterialRecord, color, 0) FIELD(MaterialRecord, emission, 16) FIELD(MaterialRecord, ior, 32)     \
     FIELD(MaterialRecord, kind, 36) FIELD(MaterialRecord, roughness, 40) FIELD(MaterialRecord, metallic, 44) \
