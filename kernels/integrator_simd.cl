@@ -1081,9 +1081,12 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
         keys[lane] = sampler_pixel_key((uint)(y * width + x0 + lane), seed);
     const vuint pixel_key = vload_lanes(0, keys);
 
+    // This work-item's pixels: lanes past the image's right edge have none.
+    const int lanes_in_image = min(ORB_SIMD_WIDTH, width - x0);
+
     // The centre-ray channels first, lane by lane, as render_pass does.
     if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
-        for (int lane = 0; lane < min(ORB_SIMD_WIDTH, width - x0); ++lane) {
+        for (int lane = 0; lane < lanes_in_image; ++lane) {
             const uint pixel = (uint)y * (uint)width + (uint)(x0 + lane);
             const FilmCentre centre = film_centre_ray(&scene, &cam, x0 + lane, y, width, height);
             ORB_FILM_SET_CENTRE
@@ -1128,8 +1131,7 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
     }
 
     ORB_FILM_CHANNELS(ORB_SIMD_SPILL)
-    const int lanes = min(ORB_SIMD_WIDTH, width - x0);
-    for (int lane = 0; lane < lanes; ++lane) {
+    for (int lane = 0; lane < lanes_in_image; ++lane) {
         const uint pixel = (uint)y * (uint)width + (uint)(x0 + lane);
         FilmSums sums;
         ORB_FILM_CHANNELS(ORB_SIMD_PICK)

@@ -304,7 +304,8 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 // visiting them one by one. A visit there is a chain of dependent steps and
 // branches; the spheres are a few branch-free vector tests, more arithmetic
 // than the boxes would have let through but less time (docs/performance.md,
-// "Leaf runs"). GPUs test one sphere at a time, so for them the boxes stay.
+// "Why the 3× ratios stay out of reach"). GPUs test one sphere at a time,
+// so for them the boxes stay.
 #ifndef ORB_BVH_LEAF_RUNS
 #ifdef ORB_INTERSECT_SCALAR
 #define ORB_BVH_LEAF_RUNS 0
@@ -364,27 +365,25 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
             test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
         } else {
             ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return)
-#if ORB_BVH_LEAF_RUNS
-            const int4 run = scene->bvh_nodes[current].leaf_run;
+            const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);
             if (run.x >= 0) {
-                for (int k = 0; k < run.y; ++k) test_packet(best, &scene->packets[run.x + k], 4 * (run.x + k), o, d, self);
-                goto next_deferred;
-            }
-#endif
-            int4 child;
-            float4 entry;
-            const int count = hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
-            if (count > 0) {
-                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
-                               ORB_BVH_CHECK_STACK, return)
-                top = push_deferred(stack_child, stack_entry, top, child, entry, count);
-                current = child.x;
-                continue;
+                ORB_BVH_EXPECT(run.x + run.y <= scene->packet_count, "leaf run", run.x + run.y - 1,
+                               scene->packet_count, return)
+                for (int k = run.x; k < run.x + run.y; ++k) test_packet(best, &scene->packets[k], 4 * k, o, d, self);
+            } else {
+                int4 child;
+                float4 entry;
+                const int count =
+                    hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
+                if (count > 0) {
+                    ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
+                                   ORB_BVH_CHECK_STACK, return)
+                    top = push_deferred(stack_child, stack_entry, top, child, entry, count);
+                    current = child.x;
+                    continue;
+                }
             }
         }
-#if ORB_BVH_LEAF_RUNS
-    next_deferred:;
-#endif
         // Next: the nearest deferred child that can still hold a closer hit.
         const float t_best = best_distance(best);
         while (top > 0 && stack_entry[top - 1] >= t_best) --top;
@@ -459,31 +458,28 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
         } else {
             ORB_BVH_EXPECT(current < scene->bvh_node_count, "shadow node", current, scene->bvh_node_count,
                            return false)
-#if ORB_BVH_LEAF_RUNS
-            const int4 run = scene->bvh_nodes[current].leaf_run;
+            const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);
             if (run.x >= 0) {
-                for (int k = 0; k < run.y; ++k)
-                    if (packet_blocks(&scene->packets[run.x + k], 4 * (run.x + k), o, d, self, light, t_light)) {
+                ORB_BVH_EXPECT(run.x + run.y <= scene->packet_count, "shadow leaf run", run.x + run.y - 1,
+                               scene->packet_count, return false)
+                for (int k = run.x; k < run.x + run.y; ++k)
+                    if (packet_blocks(&scene->packets[k], 4 * k, o, d, self, light, t_light)) {
                         ORB_BVH_VISITS_END("shadow")
                         return false;
                     }
-                goto next_shadow;
-            }
-#endif
-            int4 child;
-            float4 entry;
-            const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
-            if (count > 0) {
-                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "shadow stack top", top + count - 1,
-                               ORB_BVH_CHECK_STACK, return false)
-                top = push_deferred(stack, 0, top, child, entry, count);
-                current = child.x;
-                continue;
+            } else {
+                int4 child;
+                float4 entry;
+                const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
+                if (count > 0) {
+                    ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "shadow stack top", top + count - 1,
+                                   ORB_BVH_CHECK_STACK, return false)
+                    top = push_deferred(stack, 0, top, child, entry, count);
+                    current = child.x;
+                    continue;
+                }
             }
         }
-#if ORB_BVH_LEAF_RUNS
-    next_shadow:
-#endif
         if (top == 0) {
             ORB_BVH_VISITS_END("shadow")
             return true;

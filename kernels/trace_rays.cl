@@ -1,7 +1,7 @@
 // Ray casting alone: each work-item casts one ray of a batch through the
 // scene's tables with intersect.cl's traversal, and nothing else. Not used
 // for rendering; built only with -DORB_TRACE_KERNEL=1, by orb-trace-benchmark
-// (docs/performance.md, "Would a wavefront renderer pay?"), which measures
+// (docs/performance.md, "Why the 3× ratios stay out of reach"), which measures
 // what a wavefront design's ray-casting kernel would achieve on its own, and
 // by tests/render/trace_kernel_test.cpp, which checks the device's traversal
 // against brute force.

@@ -8,7 +8,7 @@ build=${ORB_BUILD_DIR:-$root/build}
 out=${1:-$root/.gpu}
 mkdir -p "$out"
 cp "$build/bin/orb-render" "$out/"
-# The ray-casting benchmark too, when built (docs/performance.md, "Would a wavefront renderer pay?").
+# The ray-casting benchmark too, when built (docs/performance.md, "Why the 3× ratios stay out of reach").
 if [[ -x "$build/bin/orb-trace-benchmark" ]]; then cp "$build/bin/orb-trace-benchmark" "$out/"; fi
 cp -L /usr/lib/x86_64-linux-gnu/libOpenCL.so.1 "$out/"
 # Everything orb-render links that is not part of a base system.

@@ -67,6 +67,19 @@ DeviceFilm make_film(DeviceSession& session, const RenderConfig& config)
 
 }  // namespace
 
+std::string traversal_options(const DeviceInfo& device, const SceneLayout& scene)
+{
+    // A scene without a tree gets a program without traversal code.
+    return std::string(device.is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
+           (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0");
+}
+
+std::string with_development_options(std::string options)
+{
+    if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
+    return options;
+}
+
 DeviceRenderer::DeviceRenderer(std::shared_ptr<DeviceSession> session, const RenderConfig& config)
     : session_(std::move(session)),
       config_(config),
@@ -100,9 +113,7 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
     const bool constant_scene = scene_table_bytes(scene.tables) <= constant_limit && kSceneTableCount <= constant_args;
     std::string options = std::string(kKernelLanguageOptions) +
                           " -DORB_SCENE_SPACE=" + (constant_scene ? "__constant" : "__global") +
-                          (session_->info().is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
-                          // A scene without a tree gets a program without traversal code.
-                          (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
+                          traversal_options(session_->info(), scene) +
                           (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
                           // Only the code the scene uses: each material kind's, rough
                           // glass's and the environment's cost registers on GPUs whether
@@ -124,8 +135,7 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           (simd_lanes_ > 0
                                ? " -DORB_SIMD_KERNEL=1 -DORB_SIMD_WIDTH=" + std::to_string(simd_lanes_)
                                : std::string());
-    if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
-    return options;
+    return with_development_options(options);
 }
 
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "device_film.h"
 #include "device_session.h"
@@ -19,6 +20,17 @@
 #include "scene_layout.h"
 
 namespace orb::render {
+
+// The build options that choose the traversal a device's programs use, for
+// `scene`: one sphere at a time on GPUs (-DORB_INTERSECT_SCALAR=1), packets
+// of four on CPUs; no traversal code for a scene without a tree. Every
+// program that traces rays through a scene takes them (render_pass,
+// trace_rays).
+std::string traversal_options(const DeviceInfo& device, const SceneLayout& scene);
+
+// `options` with the development knob ORB_CL_OPTIONS appended, last, so
+// that its -D definitions win.
+std::string with_development_options(std::string options);
 
 class DeviceRenderer {
 public:

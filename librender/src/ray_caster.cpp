@@ -1,10 +1,10 @@
 #include "ray_caster.h"
 
 #include <chrono>
-#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
+#include "device_renderer.h"
 #include "program_build.h"
 
 namespace orb::render {
@@ -19,11 +19,9 @@ constexpr cl_uint kTrailingArgs = 4;
 std::string trace_options(const DeviceInfo& info, const SceneLayout& scene, const std::string& extra)
 {
     std::string options = std::string(kKernelLanguageOptions) + " -DORB_SCENE_SPACE=__global -DORB_TRACE_KERNEL=1" +
-                          (info.is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
-                          (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0");
+                          traversal_options(info, scene);
     if (!extra.empty()) options += " " + extra;
-    if (const char* knob = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + knob;  // development knob
-    return options;
+    return with_development_options(options);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Not a test: rays per second of ray casting alone on a device, for deciding
-// whether a wavefront renderer would pay (docs/performance.md, "Would a
-// wavefront renderer pay?"). A wavefront design casts each bounce's rays in
+// whether a wavefront renderer would pay (docs/performance.md, "Why the 3×
+// ratios stay out of reach"). A wavefront design casts each bounce's rays in
 // a kernel of their own, which carries no path state and so needs few
 // registers; this measures that kernel's part, with the traversal
 // render_pass uses (trace_rays, librender/src/ray_caster.h).
@@ -145,8 +145,8 @@ int main(int argc, char** argv)
             const double rate = rays_per_second(caster, rays, shadow, seconds);
             std::printf("%s: %zu rays, %.4g rays/s\n", name, rays.size(), rate);
         };
-        std::size_t hit_count = bounce_rays.size();
-        std::printf("camera rays hitting a sphere: %.3f\n", static_cast<double>(hit_count) / camera_rays.size());
+        // One bounce ray per camera ray that hit a sphere.
+        std::printf("camera rays hitting a sphere: %.3f\n", static_cast<double>(bounce_rays.size()) / camera_rays.size());
         report("camera rays", camera_rays, false);
         report("bounce rays", bounce_rays, false);
         report("shadow rays", shadow_rays, true);
