@@ -6,7 +6,7 @@
 #
 #   scripts/bench-scene-load.sh                 1k, 100k and 1M spheres
 #   ORB_BENCH_PRESETS="1m 10m" scripts/bench-scene-load.sh
-#   ORB_BENCH_RENDER=1 scripts/bench-scene-load.sh   also time orb-render --spp 1 at 320x240 (slow: no BVH yet)
+#   ORB_BENCH_RENDER=1 scripts/bench-scene-load.sh   also time orb-render --spp 1 at 320x240 (with the BVH: seconds, not minutes)
 #
 # A measurement, not a test: timings on a shared machine are no pass/fail criterion.
 # Environment: ORB_BUILD_DIR (default build/), ORB_BENCH_DIR (default a temporary folder, removed).

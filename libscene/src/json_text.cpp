@@ -68,15 +68,24 @@ void format(const ordered_json& value, int depth, std::string& out) {
 
 }  // namespace
 
-std::string format_number(double value) {
+void append_number(std::string& out, double value) {
     // "-0" would read back as the integer 0; keep the sign of a negative zero.
-    if (value == 0.0 && std::signbit(value)) return "-0.0";
+    if (value == 0.0 && std::signbit(value)) {
+        out += "-0.0";
+        return;
+    }
     char buffer[400];
     const double magnitude = std::fabs(value);
     const bool plain = magnitude == 0.0 || (magnitude >= 1e-5 && magnitude < 1e16);
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, value,
                                       plain ? std::chars_format::fixed : std::chars_format::scientific);
-    return std::string(buffer, result.ptr);
+    out.append(buffer, result.ptr);
+}
+
+std::string format_number(double value) {
+    std::string out;
+    append_number(out, value);
+    return out;
 }
 
 std::string format_json(const ordered_json& value) {

@@ -15,5 +15,8 @@ std::string format_json(const nlohmann::ordered_json& value);
 // "100000", "5e-324"): plain notation for ordinary magnitudes, exponent
 // notation for very large or small ones.
 std::string format_number(double value);
+// The same text, appended to `out` (no string per number: the writers of a
+// million spheres call it four times per sphere).
+void append_number(std::string& out, double value);
 
 }  // namespace orb::detail

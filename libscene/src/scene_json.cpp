@@ -337,7 +337,12 @@ Scene load_scene_json(std::string_view text, const std::string& source) {
     return scene;
 }
 
-std::string write_scene_json(const Scene& scene) {
+namespace {
+
+// The canonical JSON text of `scene`, handed to `sink` in order: what
+// write_scene_json returns and scene_content_hash hashes, without the whole
+// text in memory for the hash.
+void write_scene_json_to(const Scene& scene, const detail::JsonSink& sink) {
     ordered_json document;
     document["format"] = "orb-scene";
     document["version"] = kSceneFormatVersion;
@@ -380,19 +385,28 @@ std::string write_scene_json(const Scene& scene) {
     // The spheres are written directly (scene_json_spheres.h) in place of the
     // empty array that format_json puts last: "  \"spheres\": []\n}".
     document["spheres"] = ordered_json::array();
-    std::string text = detail::format_json(document);
-    text.resize(text.size() - 4);
-    text += detail::format_spheres_json(scene.spheres);
+    const std::string head = detail::format_json(document);
+    sink(std::string_view(head).substr(0, head.size() - 4));
+    detail::write_spheres_json(scene.spheres, sink);
 
     ordered_json animation = detail::animation_to_json(scene.animation);
     if (!animation.is_null()) {
         ordered_json wrapper;  // formats as "{\n  \"animation\": ...\n}"
         wrapper["animation"] = std::move(animation);
         const std::string part = detail::format_json(wrapper);
-        text += ",\n";
-        text.append(part, 2, part.size() - 4);
+        sink(",\n");
+        sink(std::string_view(part).substr(2, part.size() - 4));
     }
-    return text + "\n}\n";
+    sink("\n}\n");
+}
+
+}  // namespace
+
+std::string write_scene_json(const Scene& scene) {
+    std::string text;
+    text.reserve(4096 + scene.spheres.size() * 140);  // a sphere's line is 90-140 bytes
+    write_scene_json_to(scene, [&text](std::string_view piece) { text += piece; });
+    return text;
 }
 
 namespace {
@@ -412,7 +426,9 @@ struct Fnv1a {
 
 std::string scene_content_hash(const Scene& scene) {
     Fnv1a fnv;
-    for (unsigned char byte : write_scene_json(scene)) fnv.add(byte);
+    write_scene_json_to(scene, [&fnv](std::string_view piece) {
+        for (unsigned char byte : piece) fnv.add(byte);
+    });
     if (const auto& image = scene.environment.image) {
         fnv.add_uint32(static_cast<std::uint32_t>(image->width));
         fnv.add_uint32(static_cast<std::uint32_t>(image->height));

@@ -23,28 +23,38 @@ void append_name(std::string& out, const std::string& name) {
 
 }  // namespace
 
-std::string format_spheres_json(const std::vector<Sphere>& spheres) {
-    if (spheres.empty()) return "[]";
+void write_spheres_json(const std::vector<Sphere>& spheres, const JsonSink& sink) {
+    if (spheres.empty()) {
+        sink("[]");
+        return;
+    }
+    // About 1.5 MB of text per piece: large enough that the sink's calls cost
+    // nothing, small enough to stay in the cache while it reads them.
+    constexpr std::size_t kSpheresPerPiece = 16384;
     std::string out = "[\n";
-    out.reserve(spheres.size() * 110);
+    out.reserve(kSpheresPerPiece * 120);
     for (std::size_t i = 0; i < spheres.size(); ++i) {
         const Sphere& s = spheres[i];
         out += "    { \"name\": ";
         append_name(out, s.name);
         out += ", \"center\": [";
-        out += format_number(s.center[0]);
+        append_number(out, s.center[0]);
         out += ", ";
-        out += format_number(s.center[1]);
+        append_number(out, s.center[1]);
         out += ", ";
-        out += format_number(s.center[2]);
+        append_number(out, s.center[2]);
         out += "], \"radius\": ";
-        out += format_number(s.radius);
+        append_number(out, s.radius);
         out += ", \"material\": ";
         out += std::to_string(s.material);
         out += i + 1 < spheres.size() ? " },\n" : " }\n";
+        if ((i + 1) % kSpheresPerPiece == 0) {
+            sink(out);
+            out.clear();
+        }
     }
     out += "  ]";
-    return out;
+    sink(out);
 }
 
 }  // namespace orb::detail

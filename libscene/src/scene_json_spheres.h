@@ -4,14 +4,21 @@
 // orb-render hashes the JSON of every scene it renders.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "orb/scene/scene.h"
 
 namespace orb::detail {
 
-// "[]", or "[\n    { ... },\n    { ... }\n  ]" at the top level's depth.
-std::string format_spheres_json(const std::vector<Sphere>& spheres);
+// Receives the JSON text in order, piece by piece.
+using JsonSink = std::function<void(std::string_view)>;
+
+// "[]", or "[\n    { ... },\n    { ... }\n  ]" at the top level's depth,
+// handed to `sink` a few thousand spheres at a time, so that ten million
+// spheres are hashed without 1.4 GB of text in memory at once.
+void write_spheres_json(const std::vector<Sphere>& spheres, const JsonSink& sink);
 
 }  // namespace orb::detail

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -82,6 +84,32 @@ TEST(SceneJson, ContentHashFollowsContent) {
     EXPECT_EQ(orb::scene_content_hash(a).size(), 16u);
     b.spheres[1].radius = std::nextafter(b.spheres[1].radius, 100.0);
     EXPECT_NE(orb::scene_content_hash(a), orb::scene_content_hash(b));
+}
+
+// The writer hands the spheres over in pieces of a few thousand, and the
+// hash reads those pieces instead of the whole text (ten million spheres
+// are 1.4 GB of it): across piece boundaries, the text must read back to
+// the scene and the hash must be FNV-1a of exactly that text. 16384 spheres
+// end a piece on the last sphere; 40000 end mid-piece.
+TEST(SceneJson, ManySpheresWriteAndHashAcrossPieces) {
+    for (const std::size_t count : {std::size_t{16384}, std::size_t{40000}}) {
+        orb::Scene s = sample_scene();
+        for (std::size_t i = s.spheres.size(); i < count; ++i)
+            s.spheres.push_back({i % 7 ? "" : "grain " + std::to_string(i),
+                                 {0.1 * static_cast<double>(i), 1.0 / static_cast<double>(i + 3), -2.5},
+                                 0.01 + 1e-9 * static_cast<double>(i),
+                                 static_cast<std::uint32_t>(i % 3)});
+        const std::string text = orb::write_scene_json(s);
+        EXPECT_EQ(orb::load_scene_json(text, "mem"), s) << count;
+        std::uint64_t h = 1469598103934665603ull;
+        for (unsigned char b : text) {
+            h ^= b;
+            h *= 1099511628211ull;
+        }
+        char hex[17];
+        std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+        EXPECT_EQ(orb::scene_content_hash(s), hex) << count;
+    }
 }
 
 // pbr and rough glass round-trip exactly; the writer adds "roughness" and
