@@ -17,6 +17,14 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 
 const SphereBvh& AnimationTree::tree_for(const Scene& scene, bool use_bvh, double last_frame_render_seconds)
 {
+    const auto began = std::chrono::steady_clock::now();
+    const SphereBvh& tree = choose(scene, use_bvh, last_frame_render_seconds);
+    last_seconds_ = seconds_since(began);
+    return tree;
+}
+
+const SphereBvh& AnimationTree::choose(const Scene& scene, bool use_bvh, double last_frame_render_seconds)
+{
     last_refitted_ = false;
     if (has_tree_ && use_bvh == use_bvh_ && scene.spheres.size() == sphere_count_ && !tree_.nodes.empty()) {
         double limit = kRefitCostLimit;

@@ -30,8 +30,11 @@ public:
     const SphereBvh& tree_for(const Scene& scene, bool use_bvh, double last_frame_render_seconds);
 
     bool last_refitted() const { return last_refitted_; }  // the last tree_for refitted
+    double last_seconds() const { return last_seconds_; }   // what the last tree_for took (refit, build or both)
+    std::size_t node_count() const { return tree_.nodes.size(); }  // of the last tree (0: none)
 
 private:
+    const SphereBvh& choose(const Scene& scene, bool use_bvh, double last_frame_render_seconds);
     const SphereBvh& rebuild(const Scene& scene, bool use_bvh);
 
     SphereBvh tree_;
@@ -41,6 +44,7 @@ private:
     double built_cost_ = 0;     // bvh_sah_cost of tree_ when it was built
     double build_seconds_ = 0;  // how long that build took
     bool last_refitted_ = false;
+    double last_seconds_ = 0;
 };
 
 }  // namespace orb::render

@@ -113,6 +113,8 @@ void Renderer::set_scene(const Scene& scene)
 
 bool Renderer::last_tree_refitted() const { return impl_->tree.last_refitted(); }
 
+Renderer::TreeReport Renderer::tree_report() const { return {impl_->tree.node_count(), impl_->tree.last_seconds()}; }
+
 void Renderer::set_seed(std::uint64_t seed)
 {
     impl_->config.seed = seed;

@@ -193,6 +193,28 @@ TEST_F(RenderCli, StatsJsonHasTheRunsFigures) {
     EXPECT_GT(stats.at("samples_per_second").get<double>(), 0.0);
     EXPECT_GT(stats.at("device_memory_bytes").get<std::uint64_t>(), 0u);
     EXPECT_EQ(stats.at("stop_reason").get<std::string>(), "spp");
+    // Four spheres: no tree. Getting ready (reading, kernels, upload) is not
+    // part of the rendering seconds.
+    EXPECT_EQ(stats.at("bvh_nodes").get<std::size_t>(), 0u);
+    EXPECT_GT(stats.at("setup_seconds").get<double>(), 0.0);
+}
+
+// A scene with a tree says how big it is and how long getting ready took,
+// on stderr and in --stats-json, with the same node count in both.
+TEST_F(RenderCli, ReportsTheTreeAndTheTimeBeforeTheFirstPass) {
+    orb::Scene scene = small_scene();
+    for (int i = 0; i < 300; ++i)
+        scene.spheres.push_back({"", {-2.0 + 0.013 * i, 0.2 + 0.005 * i, -1.0 - 0.004 * i}, 0.05, 0});
+    const auto run = render({write_scene(scene), "-o", path("out.exr"), "--spp", "1", "--stats-json", path("stats.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto stats = nlohmann::json::parse(read_text(path("stats.json")));
+    const auto nodes = stats.at("bvh_nodes").get<std::size_t>();
+    EXPECT_GT(nodes, 0u);
+    EXPECT_GE(stats.at("bvh_seconds").get<double>(), 0.0);
+    EXPECT_GE(stats.at("setup_seconds").get<double>(), stats.at("bvh_seconds").get<double>());
+    EXPECT_NE(run.err.find("ready in "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("BVH of " + std::to_string(nodes) + " nodes over 304 spheres built in "), std::string::npos)
+        << run.err;
 }
 
 TEST_F(RenderCli, PrintsTheDeviceAndQuietSilencesEverything) {
@@ -200,6 +222,8 @@ TEST_F(RenderCli, PrintsTheDeviceAndQuietSilencesEverything) {
     const auto loud = render({scene, "-o", path("a.exr"), "--spp", "1"});
     ASSERT_EQ(loud.exit_code, 0) << loud.err;
     EXPECT_NE(loud.err.find("device: "), std::string::npos) << loud.err;
+    EXPECT_NE(loud.err.find("ready in "), std::string::npos) << loud.err;
+    EXPECT_NE(loud.err.find("4 spheres, no BVH"), std::string::npos) << loud.err;
     const auto quiet = render({scene, "-o", path("b.exr"), "--spp", "1", "-q"});
     ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
     EXPECT_EQ(quiet.err, "");

@@ -1,5 +1,6 @@
 // orb-render: renders an Orb scene with OpenCL, pass after pass, into a
 // multi-pass OpenEXR (docs/orb-render.md).
+#include <chrono>
 #include <iostream>
 
 #include "device_listing.h"
@@ -27,7 +28,9 @@ int main(int argc, char** argv) {
             // it reads a byte or builds a kernel, and the lock taken here also
             // covers reading the file that --resume continues in place.
             RenderOutputs outputs = prepare_render_outputs(options);
+            const auto reading = std::chrono::steady_clock::now();
             RenderPlan plan = make_render_plan(options);
+            plan.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - reading).count();
             if (options.benchmark)
                 return renders_frames(options) ? run_frames_benchmark(plan, options, outputs)
                                                : run_benchmark(plan, options, outputs);

@@ -18,6 +18,7 @@ struct RenderPlan {
     Scene scene;                // at scene_time
     std::string scene_label;    // the path, or <stdin>
     std::string scene_hash;     // orb::scene_content_hash(scene)
+    double read_seconds = 0;    // reading, importing, posing and hashing the scene (set by the caller that timed it)
     double scene_time = 0;
     render::RenderConfig config;
     std::uint64_t target_spp = 0;   // samples per pixel the film is to hold

@@ -1,6 +1,8 @@
 #include "render_run.h"
 
+#include <chrono>
 #include <cstdio>
+#include <memory>
 #include <iostream>
 
 #include "interrupt.h"
@@ -12,10 +14,39 @@
 #include "run_stats.h"
 
 namespace orb::render_cli {
+namespace {
+
+// The renderer for `plan`, and the seconds from reading the scene until it
+// could render: a million spheres take seconds before the first pass, and
+// the line below says where they went.
+struct ReadyRenderer {
+    std::unique_ptr<render::Renderer> renderer;
+    double setup_seconds = 0;
+};
+
+ReadyRenderer make_ready_renderer(const RenderPlan& plan) {
+    const auto began = std::chrono::steady_clock::now();
+    ReadyRenderer ready{std::make_unique<render::Renderer>(plan.scene, plan.config), 0};
+    const double construct = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    ready.setup_seconds = plan.read_seconds + construct;
+    const render::Renderer& r = *ready.renderer;
+    cli::info(std::string(r.devices().size() > 1 ? "devices: " : "device: ") + devices_label(r));
+    const render::Renderer::TreeReport tree = r.tree_report();
+    const std::string spheres = std::to_string(plan.scene.spheres.size()) + " spheres";
+    cli::info("ready in " + format_duration(ready.setup_seconds) + ": scene read and hashed in " +
+              format_duration(plan.read_seconds) + ", " +
+              (tree.nodes ? "BVH of " + std::to_string(tree.nodes) + " nodes over " + spheres + " built in " +
+                                format_duration(tree.seconds)
+                          : spheres + ", no BVH") +
+              ", kernels and upload " + format_duration(construct - tree.seconds));
+    return ready;
+}
+
+}  // namespace
 
 int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
-    render::Renderer renderer(plan.scene, plan.config);
-    cli::info(std::string(renderer.devices().size() > 1 ? "devices: " : "device: ") + devices_label(renderer));
+    const ReadyRenderer ready = make_ready_renderer(plan);
+    render::Renderer& renderer = *ready.renderer;
     if (plan.resumed) {
         renderer.load_film(plan.resumed->film);
         cli::info("resuming " + options.resume + " at " + std::to_string(plan.resumed->film.samples_per_pixel) +
@@ -34,7 +65,11 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
         return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
     }
     outputs.image->write(outcome.image.encode());
-    if (outputs.stats) outputs.stats->write(stats_json(outcome.stats));
+    if (outputs.stats) {
+        RunStats stats = outcome.stats;
+        stats.setup_seconds = ready.setup_seconds;
+        outputs.stats->write(stats_json(stats));
+    }
 
     const std::string summary = film_summary(outcome, renderer, *outputs.image);
     if (outcome.reason == render::StopReason::Interrupted) {
@@ -47,8 +82,8 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
 }
 
 int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
-    render::Renderer renderer(plan.scene, plan.config);
-    cli::info(std::string(renderer.devices().size() > 1 ? "devices: " : "device: ") + devices_label(renderer));
+    const ReadyRenderer ready = make_ready_renderer(plan);
+    render::Renderer& renderer = *ready.renderer;
     const render::BenchmarkResult result = render::run_benchmark(renderer, options.benchmark_seconds);
     cli::info("benchmark: " + std::to_string(result.samples) + " samples in " + format_duration(result.seconds) +
               " over " + std::to_string(result.passes) + " passes at " + std::to_string(plan.config.width) + "x" +
@@ -61,6 +96,7 @@ int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOu
         stats.seconds = result.seconds;
         stats.samples_per_second = result.samples_per_second;
         stats.stop_reason = "benchmark";
+        stats.setup_seconds = ready.setup_seconds;
         outputs.stats->write(stats_json(stats));
     }
     std::printf("samples_per_second=%.0f\n", result.samples_per_second);

@@ -33,8 +33,11 @@ nlohmann::ordered_json to_json(const RunStats& s) {
                              {"seconds", s.seconds},
                              {"samples_per_second", s.samples_per_second},
                              {"device_memory_bytes", s.device_memory_bytes},
+                             {"bvh_nodes", s.bvh_nodes},
+                             {"bvh_seconds", s.bvh_seconds},
                              {"stop_reason", s.stop_reason},
                              {"output", s.output}};
+    if (s.setup_seconds) j["setup_seconds"] = *s.setup_seconds;
     if (s.frame) j["frame"] = *s.frame;
     return j;
 }
@@ -49,6 +52,8 @@ RunStats renderer_stats(const render::Renderer& renderer) {
     stats.width = renderer.config().width;
     stats.height = renderer.config().height;
     stats.device_memory_bytes = renderer.device_memory_bytes();
+    stats.bvh_nodes = renderer.tree_report().nodes;
+    stats.bvh_seconds = renderer.tree_report().seconds;
     stats.spp = renderer.samples_per_pixel();
     return stats;
 }

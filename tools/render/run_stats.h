@@ -1,6 +1,7 @@
 // --stats-json: the figures of one run, for farms and CI dashboards.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -27,6 +28,9 @@ struct RunStats {
     double seconds = 0;              // this run's rendering (or timed benchmark) time
     double samples_per_second = 0;   // pixel samples per second over `seconds`
     std::uint64_t device_memory_bytes = 0;
+    std::size_t bvh_nodes = 0;        // the scene's BVH (0: none, as for a few spheres)
+    double bvh_seconds = 0;           // building (or, for a frame, refitting) it
+    std::optional<double> setup_seconds;  // from starting to read the scene until the devices could render
     std::string stop_reason;         // "spp", "time", "interrupted" or "benchmark"
     std::string output;              // "" for --benchmark
     std::string sample_ranges;       // the sample indices in the image, "0:64"; "" for --benchmark

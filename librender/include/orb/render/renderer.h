@@ -72,6 +72,13 @@ public:
     void set_scene(const Scene& scene);
     // Whether the current scene's BVH is the previous scene's refitted.
     bool last_tree_refitted() const;
+    // The current scene's BVH: its nodes (0: no tree, as for a scene of a
+    // few spheres), and the seconds building or refitting it took.
+    struct TreeReport {
+        std::size_t nodes = 0;
+        double seconds = 0;
+    };
+    TreeReport tree_report() const;
     // Another seed; the film is emptied.
     void set_seed(std::uint64_t seed);
     // Empties the film; render_pass() continues from sample `first_sample`.
