@@ -404,7 +404,7 @@ void write_scene_json_to(const Scene& scene, const detail::JsonSink& sink) {
 
 std::string write_scene_json(const Scene& scene) {
     std::string text;
-    text.reserve(4096 + scene.spheres.size() * 140);  // a sphere's line is 90-140 bytes
+    text.reserve(4096 + scene.spheres.size() * detail::kSphereLineBytes);
     write_scene_json_to(scene, [&text](std::string_view piece) { text += piece; });
     return text;
 }

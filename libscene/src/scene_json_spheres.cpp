@@ -27,7 +27,7 @@ void append_name(std::string& out, const std::string& name) {
 // Spheres [first, last) as lines of the array, each with its separator.
 std::string format_sphere_lines(const std::vector<Sphere>& spheres, std::size_t first, std::size_t last) {
     std::string out;
-    out.reserve((last - first) * 140);
+    out.reserve((last - first) * kSphereLineBytes);
     for (std::size_t i = first; i < last; ++i) {
         const Sphere& s = spheres[i];
         out += "    { \"name\": ";

@@ -4,6 +4,7 @@
 // orb-render hashes the JSON of every scene it renders.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -12,6 +13,10 @@
 #include "orb/scene/scene.h"
 
 namespace orb::detail {
+
+// What a sphere's line of the array takes, at most in practice (90-140
+// bytes): the writers reserve text by it.
+inline constexpr std::size_t kSphereLineBytes = 140;
 
 // Receives the JSON text in order, piece by piece.
 using JsonSink = std::function<void(std::string_view)>;

@@ -24,7 +24,7 @@ void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& r
     if (job.frame && (!plan.frame || plan.frame->number != *job.frame)) pose_frame(plan, *job.frame);
     if (!renderer) {
         renderer.emplace(plan.scene, plan.config);
-        cli::info(std::string(renderer->devices().size() > 1 ? "devices: " : "device: ") + devices_label(*renderer));
+        cli::info(devices_line(*renderer));
         // From here on a signal ends the frame in flight gracefully; before,
         // during the kernel build, there is nothing to save.
         install_interrupt_handlers();

@@ -44,6 +44,10 @@ std::string devices_label(const render::Renderer& renderer) {
     return text;
 }
 
+std::string devices_line(const render::Renderer& renderer) {
+    return std::string(renderer.devices().size() > 1 ? "devices: " : "device: ") + devices_label(renderer);
+}
+
 std::string kernel_builds_text(int builds) {
     return std::to_string(builds) + (builds == 1 ? " kernel build" : " kernel builds");
 }

@@ -19,6 +19,9 @@ namespace orb::render_cli {
 std::string device_label(const render::DeviceInfo& device);
 // Every device of the renderer: "NAME (PLATFORM)", joined by "; ".
 std::string devices_label(const render::Renderer& renderer);
+// The line orb-render prints once its renderer exists: "device: NAME (PLATFORM)",
+// or "devices: A; B" for several.
+std::string devices_line(const render::Renderer& renderer);
 const char* stop_reason_name(render::StopReason reason);
 std::string kernel_builds_text(int builds);  // "1 kernel build", "2 kernel builds"
 

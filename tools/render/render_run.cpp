@@ -30,7 +30,7 @@ ReadyRenderer make_ready_renderer(const RenderPlan& plan) {
     const double construct = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     ready.setup_seconds = plan.read_seconds + construct;
     const render::Renderer& r = *ready.renderer;
-    cli::info(std::string(r.devices().size() > 1 ? "devices: " : "device: ") + devices_label(r));
+    cli::info(devices_line(r));
     const render::Renderer::TreeReport tree = r.tree_report();
     const std::string spheres = std::to_string(plan.scene.spheres.size()) + " spheres";
     cli::info("ready in " + format_duration(ready.setup_seconds) + ": scene read and hashed in " +

@@ -52,8 +52,9 @@ RunStats renderer_stats(const render::Renderer& renderer) {
     stats.width = renderer.config().width;
     stats.height = renderer.config().height;
     stats.device_memory_bytes = renderer.device_memory_bytes();
-    stats.bvh_nodes = renderer.tree_report().nodes;
-    stats.bvh_seconds = renderer.tree_report().seconds;
+    const render::Renderer::TreeReport tree = renderer.tree_report();
+    stats.bvh_nodes = tree.nodes;
+    stats.bvh_seconds = tree.seconds;
     stats.spp = renderer.samples_per_pixel();
     return stats;
 }
