@@ -183,11 +183,26 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
     // Direct mode: the ray after the first non-delta vertex was traced only for its emission.
     if (mode == IntegratorMode_Direct && path->nondelta_vertices == 1) return false;
 
-    // The numbers of this scattering event (block depth + 1), drawn as used:
-    // a vertex with only delta lobes needs neither the light pair nor the
-    // direction pair (its BSDF ignores u, v: bsdf_types.cl).
+    // The numbers of this scattering event (block depth + 1). A vertex with
+    // only delta lobes needs neither the light pair nor the direction pair
+    // (its BSDF ignores u, v: bsdf_types.cl); CPUs draw them only where
+    // used. GPUs draw all of them in every lane before the branches: the
+    // numbers are the same (each is a function of its block and slot), and
+    // lanes at delta and non-delta vertices hash together instead of in
+    // turn (3% more samples/s on the Cornell box, docs/performance.md,
+    // "Nsight Compute through a CUDA replay").
     const RandBlock r = rand_block(coords, (uint)(depth + 1));
     const bool has_density = bsdf_has_density(&m.bsdf);
+#ifdef ORB_INTERSECT_SCALAR
+    const float2 u_light = rand_pair(&r, 0u);
+    const float2 u_drawn = rand_pair(&r, 1u);
+    float choice = rand_single(&r);
+#define ORB_LIGHT_PAIR u_light
+#define ORB_DIRECTION_PAIR u_drawn
+#else
+#define ORB_LIGHT_PAIR rand_pair(&r, 0u)
+#define ORB_DIRECTION_PAIR rand_pair(&r, 1u)
+#endif
     float2 u_direction = (float2)(0.5f);
     if (has_density) {
         if (ORB_FILM_BUILT(albedo) && !path->albedo_set) {
@@ -195,16 +210,20 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
             path->albedo_set = true;
         }
         add_by_vertex_count(out, path->nondelta_vertices + 1,
-                            path->beta * sample_lights(scene, p, hit.id, &m.bsdf, wo, n, outside, rand_pair(&r, 0u),
+                            path->beta * sample_lights(scene, p, hit.id, &m.bsdf, wo, n, outside, ORB_LIGHT_PAIR,
                                                        mode));
-        u_direction = rand_pair(&r, 1u);
+        u_direction = ORB_DIRECTION_PAIR;
     }
+#undef ORB_LIGHT_PAIR
+#undef ORB_DIRECTION_PAIR
 
     // u4 picks the strategy and the lobe, and comes back rescaled (uniform
     // again and independent of those picks) for the roulette below. Where
     // the BSDF has a density the direction comes from the continuation's
     // mixture, which also aims at glass and mirror balls (caustic_casters.cl).
+#ifndef ORB_INTERSECT_SCALAR
     float choice = rand_single(&r);
+#endif
     const BsdfSample bs =
         has_density ? sample_continuation(scene, &m.bsdf, p, wo, n, outside, u_direction.x, u_direction.y, &choice)
                     : bsdf_sample(&m.bsdf, wo, n, outside, u_direction.x, u_direction.y, &choice);

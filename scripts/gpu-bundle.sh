@@ -10,6 +10,8 @@ mkdir -p "$out"
 cp "$build/bin/orb-render" "$out/"
 # The ray-casting benchmark too, when built (docs/performance.md, "Why the 3× ratios stay out of reach").
 if [[ -x "$build/bin/orb-trace-benchmark" ]]; then cp "$build/bin/orb-trace-benchmark" "$out/"; fi
+# And the CUDA replay of a captured pass, for Nsight Compute ("Nsight Compute through a CUDA replay").
+if [[ -x "$build/bin/orb-cuda-replay" ]]; then cp "$build/bin/orb-cuda-replay" "$out/"; fi
 cp -L /usr/lib/x86_64-linux-gnu/libOpenCL.so.1 "$out/"
 # Everything orb-render links that is not part of a base system.
 ldd "$build/bin/orb-render" | awk '/=> \// {print $3}' |

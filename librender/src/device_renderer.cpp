@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "pass_capture.h"
 #include "program_build.h"
 
 namespace orb::render {
@@ -18,8 +19,9 @@ namespace {
 // without one, the Cornell boxes (nine spheres, three packets, long paths)
 // ran best at 72 (+3% over 80, 96 lost 3%) and the small open scenes (three
 // to five spheres in one or two packets, short paths) at 96 (+4% to +13%
-// over 80). Why the two kinds differ was not profiled (Nsight Compute does
-// not see OpenCL kernels).
+// over 80). Nsight Compute, through a CUDA replay of a pass, shows both
+// kinds' occupancy limited by these registers ("Nsight Compute through a
+// CUDA replay"); why the two kinds want different caps is not known.
 std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
 {
     const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
@@ -141,7 +143,8 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)
 {
     simd_lanes_ = simd_lanes(session_->info(), session_->device());
-    const cl::Program& program = session_->program(build_options(scene));
+    options_ = build_options(scene);
+    const cl::Program& program = session_->program(options_);
     try {
         if (&program != program_) {
             kernel_ = cl::Kernel(program, simd_lanes_ > 0 ? "render_pass_simd" : "render_pass");
@@ -238,8 +241,19 @@ void DeviceRenderer::enqueue(std::uint64_t first_sample, int count)
         pass.write_centre_ray = centre_ray_pending_ ? 1 : 0;
         bind_params(kernel_, params_);
         cl::CommandQueue& queue = session_->queue();
+        const std::string capture_dir =
+            captured_ || pass.write_centre_ray || capture_candidates_++ < pass_capture_skip() ? "" : pass_capture_dir();
+        if (!capture_dir.empty())
+            capture_pass_inputs(capture_dir, queue,
+                                {*program_, kernel_, options_, film_, scene_buffers_, params_, global_size_, local_size_});
         queue.enqueueNDRangeKernel(kernel_, cl::NullRange, global_size_, local_size_);
         queue.flush();  // start now: another device may be waiting for its turn
+        if (!capture_dir.empty()) {
+            queue.finish();
+            capture_pass_outputs(capture_dir, queue, film_);
+            captured_ = true;
+            std::fprintf(stderr, "orb: captured a pass of %d samples per pixel in %s\n", count, capture_dir.c_str());
+        }
     } catch (const cl::Error& error) {
         fail(error, "a render pass");
     }

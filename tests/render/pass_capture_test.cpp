@@ -1,0 +1,137 @@
+// ORB_CAPTURE_PASS writes one pass to a folder for a replay outside OpenCL
+// (librender/src/pass_capture.h; tests/render/cuda_replay.cpp replays it
+// through CUDA for Nsight Compute). A replay is only worth its profile if
+// the capture is exactly the pass: every kernel argument in order with its
+// bytes, the film before it and the film after it.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "orb/kernels/device_types.h"
+#include "pass_arguments.h"
+#include "render_test_support.h"
+
+using namespace orb;
+using namespace orb::render;
+using namespace orb::render::test;
+
+namespace {
+
+std::vector<char> read_bytes(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    EXPECT_TRUE(in) << path;
+    return std::vector<char>(std::istreambuf_iterator<char>(in), {});
+}
+
+std::vector<char> bytes_of(const std::vector<float>& channel)
+{
+    std::vector<char> bytes(channel.size() * sizeof(float));
+    if (!bytes.empty()) std::memcpy(bytes.data(), channel.data(), bytes.size());
+    return bytes;
+}
+
+struct CapturedArg {
+    int index = -1;
+    std::string kind;
+    std::size_t bytes = 0;
+    std::string file;
+};
+
+class CaptureDir {
+public:
+    CaptureDir()
+        : path_(std::filesystem::temp_directory_path() /
+                ("orb-capture-test-" + std::to_string(::getpid())))
+    {
+        std::filesystem::remove_all(path_);
+    }
+    ~CaptureDir() { std::filesystem::remove_all(path_); }
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
+}  // namespace
+
+TEST(PassCapture, WritesTheSecondPassExactlyAsTheRendererRanIt)
+{
+    Scene scene;
+    scene.camera.position = {0.0, 1.0, 4.0};
+    scene.camera.target = {0.0, 1.0, 0.0};
+    add_sphere(scene, {0.0, 0.0, 0.0}, 50.0, add_material(scene, MaterialType::Diffuse, {0.7, 0.7, 0.7}));
+    add_sphere(scene, {0.0, 4.0, 0.0}, 0.8, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {8, 8, 8}));
+    add_sphere(scene, {0.5, 0.6, 0.0}, 0.5, add_material(scene, MaterialType::Dielectric, {1, 1, 1}));
+    const RenderConfig config = small_config(24, 16, 11);
+
+    // The first pass writes the centre rays and is never captured; the
+    // second (2 samples, from sample 1 on) is.
+    const CaptureDir dir;
+    render_with_env(scene, config, {1, 2, 3}, "ORB_CAPTURE_PASS", dir.path().c_str());
+    const Film before = test::render(scene, config, {1});
+    const Film after = test::render(scene, config, {1, 2});
+
+    std::ifstream launch(dir.path() / "launch.txt");
+    ASSERT_TRUE(launch) << "no launch.txt in " << dir.path();
+    std::vector<CapturedArg> args;
+    std::string line, kernel, options;
+    while (std::getline(launch, line)) {
+        std::istringstream words(line);
+        std::string key;
+        words >> key;
+        if (key == "kernel") words >> kernel;
+        if (key == "options") options = line;
+        if (key == "arg") {
+            CapturedArg arg;
+            words >> arg.index >> arg.kind >> arg.bytes >> arg.file;
+            args.push_back(arg);
+        }
+    }
+    EXPECT_TRUE(kernel == "render_pass" || kernel == "render_pass_simd") << kernel;
+    EXPECT_NE(options.find("-DORB_SCENE_SPACE="), std::string::npos) << options;
+    EXPECT_GT(std::filesystem::file_size(dir.path() / "program.bin"), 0u);
+
+    // One line per argument, in the kernel's order: the film channels, then
+    // each scene table, then the parameters.
+    const int film_args = film::kChannelCount;
+    ASSERT_EQ(args.size(), static_cast<std::size_t>(PassArg::count));
+    ASSERT_EQ(args.size(), film_args + kSceneTableCount + 1);
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        EXPECT_EQ(args[i].index, static_cast<int>(i));
+        EXPECT_EQ(args[i].kind, i < static_cast<std::size_t>(film_args) ? "film"
+                                : i + 1 < args.size()                    ? "buffer"
+                                                                         : "value");
+        EXPECT_EQ(std::filesystem::file_size(dir.path() / args[i].file), args[i].bytes) << args[i].file;
+    }
+
+    // The film arguments: the film after the first pass, and after the second.
+    for (int c = 0; c < film_args; ++c) {
+        const auto channel = static_cast<film::Channel>(c);
+        const std::string name = film::info(channel).name;
+        EXPECT_EQ(read_bytes(dir.path() / args[c].file), bytes_of(before.channel(channel))) << name << " before";
+        EXPECT_EQ(read_bytes(dir.path() / ("arg" + std::to_string(c) + ".after.bin")),
+                  bytes_of(after.channel(channel)))
+            << name << " after";
+    }
+    EXPECT_NE(bytes_of(before.radiance), bytes_of(after.radiance)) << "the pass added light";
+
+    // The parameters: the second pass's.
+    const std::vector<char> params_bytes = read_bytes(dir.path() / args.back().file);
+    device::RenderPassParams params{};
+    ASSERT_EQ(params_bytes.size(), sizeof params);
+    std::memcpy(&params, params_bytes.data(), sizeof params);
+    EXPECT_EQ(params.pass.sample_count, 2);
+    EXPECT_EQ(params.pass.first_sample_lo, 1u);
+    EXPECT_EQ(params.pass.write_centre_ray, 0);
+    EXPECT_EQ(params.settings.width, 24);
+    EXPECT_EQ(params.settings.seed_lo, 11u);
+}
