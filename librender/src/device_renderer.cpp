@@ -71,9 +71,13 @@ DeviceFilm make_film(DeviceSession& session, const RenderConfig& config)
 
 std::string traversal_options(const DeviceInfo& device, const SceneLayout& scene)
 {
-    // A scene without a tree gets a program without traversal code.
+    // A scene without a tree gets a program without traversal code. NVIDIA's
+    // own OpenCL takes the PTX of a warp vote (kernels/warp_vote.cl), with
+    // which the traversal speculates (docs/performance.md, "Speculative traversal").
+    const bool nvidia_opencl = device.is_gpu && device.platform.find("NVIDIA") != std::string::npos;
     return std::string(device.is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
-           (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0");
+           (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
+           (nvidia_opencl && scene.counts.bvh_node_count > 0 ? " -DORB_WARP_VOTE=1" : "");
 }
 
 std::string with_development_options(std::string options)

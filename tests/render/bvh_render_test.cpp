@@ -126,9 +126,9 @@ TEST(BvhRender, LeafRunsNameExactlyTheLeavesOfAllLeafNodes) {
 // GPUs build the kernels with one-sphere-at-a-time intersection
 // (ORB_INTERSECT_SCALAR); its traversal must find the same spheres too. Run
 // here on PoCL through the development knob ORB_CL_OPTIONS.
-TEST(BvhRender, SameImageWithAndWithoutTheTreeInTheGpuVariant) {
+void expect_same_with_and_without_tree_with_options(const char* options) {
     const Scene scene = cloud_scene(300, 5);
-    ::setenv("ORB_CL_OPTIONS", "-DORB_INTERSECT_SCALAR=1", 1);
+    ::setenv("ORB_CL_OPTIONS", options, 1);
     try {
         expect_same_with_and_without_tree(scene);
     } catch (...) {
@@ -136,6 +136,17 @@ TEST(BvhRender, SameImageWithAndWithoutTheTreeInTheGpuVariant) {
         throw;
     }
     ::unsetenv("ORB_CL_OPTIONS");
+}
+
+TEST(BvhRender, SameImageWithAndWithoutTheTreeInTheGpuVariant) {
+    expect_same_with_and_without_tree_with_options("-DORB_INTERSECT_SCALAR=1");
+}
+
+// NVIDIA GPUs traverse speculatively (a warp vote decides when lanes test
+// leaves: warp_vote.cl). ORB_WARP_VOTE=2 runs the same control flow here,
+// every lane speculating as far as it can.
+TEST(BvhRender, SameImageWithAndWithoutTheTreeInSpeculativeTraversal) {
+    expect_same_with_and_without_tree_with_options("-DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2");
 }
 
 // What the kernels print while rendering `scene` with `options` added to
@@ -158,20 +169,25 @@ std::string kernel_output(const Scene& scene, const char* options)
 
 // With the traversal's bounds checks on (-DORB_BVH_CHECK=1), no node, packet
 // or stack index leaves its table, in the CPU variant and in the GPU variant
-// reading the scene from __global memory as GPUs do for large scenes. With
+// reading the scene from __global memory as GPUs do for large scenes, and in
+// the speculative traversal. With
 // the checked stack limit lowered to 2, the checks do report.
 TEST(BvhRender, TraversalIndicesStayInBoundsInBothVariants) {
     const Scene scene = cloud_scene(300, 5);
     EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1"), "");
     EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_SCENE_SPACE=__global"), "");
+    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2"), "");
     EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2").find("orb BVH check: stack top"),
+              std::string::npos);
+    EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2 -DORB_WARP_VOTE=2")
+                  .find("orb BVH check: stack top"),
               std::string::npos);
 }
 
 // The development counters (-DORB_BVH_COUNT=1, scripts/bvh-visits.sh)
 // print one line per ray that enters the tree, closest hits and shadow rays,
 // each with a visit count between one (the root) and every node and leaf
-// of the tree; in both variants.
+// of the tree; in both variants and in the speculative traversal.
 TEST(BvhRender, VisitCountersReportEveryTracedRay) {
     const Scene scene = cloud_scene(300, 5);
     const SceneLayout layout = layout_scene(scene);
@@ -179,7 +195,8 @@ TEST(BvhRender, VisitCountersReportEveryTracedRay) {
     for (const device::BvhNodeRecord& node : layout.tables.bvh_nodes)
         for (int child : {node.child.x, node.child.y, node.child.z, node.child.w}) leaves += child < 0;
     const long most = static_cast<long>(layout.tables.bvh_nodes.size() + leaves);
-    for (const char* options : {"-DORB_BVH_COUNT=1", "-DORB_BVH_COUNT=1 -DORB_INTERSECT_SCALAR=1"}) {
+    for (const char* options : {"-DORB_BVH_COUNT=1", "-DORB_BVH_COUNT=1 -DORB_INTERSECT_SCALAR=1",
+                                "-DORB_BVH_COUNT=1 -DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2"}) {
         std::istringstream lines(kernel_output(scene, options));
         std::map<std::string, long> rays;
         std::string line;

@@ -231,3 +231,10 @@ void expect_device_matches_brute_force(const char* options)
 TEST(TraceKernel, ClosestHitsAndShadowRaysMatchBruteForce) { expect_device_matches_brute_force(nullptr); }
 
 TEST(TraceKernel, GpuVariantMatchesBruteForce) { expect_device_matches_brute_force("-DORB_INTERSECT_SCALAR=1"); }
+
+// The speculative traversal of NVIDIA GPUs (warp_vote.cl), every lane
+// speculating as far as it can.
+TEST(TraceKernel, SpeculativeTraversalMatchesBruteForce)
+{
+    expect_device_matches_brute_force("-DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2");
+}
