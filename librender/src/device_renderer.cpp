@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "pass_capture.h"
 #include "program_build.h"
 
 namespace orb::render {
@@ -147,8 +146,7 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)
 {
     simd_lanes_ = simd_lanes(session_->info(), session_->device());
-    options_ = build_options(scene);
-    const cl::Program& program = session_->program(options_);
+    const cl::Program& program = session_->program(build_options(scene));
     try {
         if (&program != program_) {
             kernel_ = cl::Kernel(program, simd_lanes_ > 0 ? "render_pass_simd" : "render_pass");
@@ -245,18 +243,14 @@ void DeviceRenderer::enqueue(std::uint64_t first_sample, int count)
         pass.write_centre_ray = centre_ray_pending_ ? 1 : 0;
         bind_params(kernel_, params_);
         cl::CommandQueue& queue = session_->queue();
-        const std::string capture_dir =
-            captured_ || pass.write_centre_ray || capture_candidates_++ < pass_capture_skip() ? "" : pass_capture_dir();
-        if (!capture_dir.empty())
-            capture_pass_inputs(capture_dir, queue,
-                                {*program_, kernel_, options_, film_, scene_buffers_, params_, global_size_, local_size_});
+        const bool capture = capture_.take(pass.write_centre_ray != 0);
+        if (capture)
+            capture_.write_inputs(queue, {*program_, kernel_, film_, scene_buffers_, params_, global_size_, local_size_});
         queue.enqueueNDRangeKernel(kernel_, cl::NullRange, global_size_, local_size_);
         queue.flush();  // start now: another device may be waiting for its turn
-        if (!capture_dir.empty()) {
+        if (capture) {
             queue.finish();
-            capture_pass_outputs(capture_dir, queue, film_);
-            captured_ = true;
-            std::fprintf(stderr, "orb: captured a pass of %d samples per pixel in %s\n", count, capture_dir.c_str());
+            capture_.write_outputs(queue, film_, count);
         }
     } catch (const cl::Error& error) {
         fail(error, "a render pass");

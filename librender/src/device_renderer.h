@@ -16,6 +16,7 @@
 #include "orb/kernels/device_types.h"
 #include "orb/render/renderer.h"
 #include "pass_arguments.h"
+#include "pass_capture.h"
 #include "pass_tuner.h"
 #include "scene_layout.h"
 
@@ -76,9 +77,7 @@ private:
     DeviceFilm film_;
     const cl::Program* program_ = nullptr;
     bool kernel_prepared_ = false;  // prepare_kernel() has run for program_
-    std::string options_;           // program_'s build options
-    bool captured_ = false;         // a pass has gone to ORB_CAPTURE_PASS (pass_capture.h)
-    int capture_candidates_ = 0;    // passes that could have been captured so far
+    PassCapture capture_;           // the development knob ORB_CAPTURE_PASS (pass_capture.h)
     cl::Kernel kernel_;
     int simd_lanes_ = 0;  // > 0: kernel_ is render_pass_simd with this many lanes
     SceneBuffers scene_buffers_;

@@ -1,5 +1,6 @@
 #include "pass_capture.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -31,27 +32,33 @@ std::size_t write_buffer(const std::filesystem::path& dir, cl::CommandQueue& que
 
 }  // namespace
 
-std::string pass_capture_dir()
+PassCapture::PassCapture()
 {
-    const char* dir = std::getenv("ORB_CAPTURE_PASS");  // development knob
-    return dir ? dir : "";
+    if (const char* dir = std::getenv("ORB_CAPTURE_PASS")) dir_ = dir;        // development knob
+    if (const char* skip = std::getenv("ORB_CAPTURE_SKIP")) skip_ = std::atoi(skip);  // development knob
 }
 
-int pass_capture_skip()
+bool PassCapture::take(bool writes_centre_ray)
 {
-    const char* skip = std::getenv("ORB_CAPTURE_SKIP");  // development knob
-    return skip ? std::atoi(skip) : 0;
+    if (dir_.empty() || taken_ || writes_centre_ray) return false;
+    if (skip_ > 0) {
+        --skip_;
+        return false;
+    }
+    taken_ = true;
+    return true;
 }
 
-void capture_pass_inputs(const std::string& dir, cl::CommandQueue& queue, const PassLaunch& launch)
+void PassCapture::write_inputs(cl::CommandQueue& queue, const PassLaunch& launch) const
 {
-    const std::filesystem::path folder(dir);
+    const std::filesystem::path folder(dir_);
     std::filesystem::create_directories(folder);
     std::ofstream text(folder / "launch.txt");
     text << "kernel " << launch.kernel.getInfo<CL_KERNEL_FUNCTION_NAME>() << '\n'
          << "global " << launch.global[0] << ' ' << launch.global[1] << '\n'
          << "local " << launch.local[0] << ' ' << launch.local[1] << '\n'
-         << "options " << launch.build_options << '\n';
+         << "options " << launch.program.getBuildInfo<CL_PROGRAM_BUILD_OPTIONS>(queue.getInfo<CL_QUEUE_DEVICE>())
+         << '\n';
 
     const std::vector<std::vector<unsigned char>> binaries = launch.program.getInfo<CL_PROGRAM_BINARIES>();
     if (binaries.size() != 1) throw std::runtime_error("capturing a pass: the program has not one binary");
@@ -76,10 +83,11 @@ void capture_pass_inputs(const std::string& dir, cl::CommandQueue& queue, const 
     if (!text) throw std::runtime_error("capturing a pass: cannot write " + (folder / "launch.txt").string());
 }
 
-void capture_pass_outputs(const std::string& dir, cl::CommandQueue& queue, const DeviceFilm& film)
+void PassCapture::write_outputs(cl::CommandQueue& queue, const DeviceFilm& film, int samples_per_pixel) const
 {
     for (std::size_t i = 0; i < kFilmArgs.size(); ++i)
-        write_buffer(dir, queue, static_cast<cl_uint>(kFilmArgs[i]), film.buffers()[i], ".after");
+        write_buffer(dir_, queue, static_cast<cl_uint>(kFilmArgs[i]), film.buffers()[i], ".after");
+    std::fprintf(stderr, "orb: captured a pass of %d samples per pixel in %s\n", samples_per_pixel, dir_.c_str());
 }
 
 }  // namespace orb::render

@@ -20,7 +20,6 @@ namespace orb::render {
 struct PassLaunch {
     const cl::Program& program;
     const cl::Kernel& kernel;
-    const std::string& build_options;
     const DeviceFilm& film;
     const SceneBuffers& scene;
     const device::RenderPassParams& params;
@@ -28,19 +27,31 @@ struct PassLaunch {
     cl::NDRange local;
 };
 
-// The folder named by ORB_CAPTURE_PASS, or "" when the knob is not set.
-std::string pass_capture_dir();
-// ORB_CAPTURE_SKIP, or 0.
-int pass_capture_skip();
+// One renderer's capture: the knobs, read once, and whether the pass has
+// been taken.
+class PassCapture {
+public:
+    PassCapture();  // reads ORB_CAPTURE_PASS and ORB_CAPTURE_SKIP
 
-// Writes DIR/launch.txt (kernel name, work sizes, build options, one line per
-// argument), DIR/program.bin (the program's binary for the queue's device),
-// and DIR/argN.bin, each argument's bytes before the pass. Throws
-// std::runtime_error when the folder cannot be written.
-void capture_pass_inputs(const std::string& dir, cl::CommandQueue& queue, const PassLaunch& launch);
+    // Whether the pass about to be enqueued is the one to capture (counting
+    // it among the candidates when it could be); true at most once.
+    bool take(bool writes_centre_ray);
 
-// After the pass has finished: the film arguments' bytes as DIR/argN.after.bin,
-// what a replay of the same pass must reproduce.
-void capture_pass_outputs(const std::string& dir, cl::CommandQueue& queue, const DeviceFilm& film);
+    // Writes DIR/launch.txt (kernel name, work sizes, the program's build
+    // options, one line per argument), DIR/program.bin (the program's binary
+    // for the queue's device), and DIR/argN.bin, each argument's bytes before
+    // the pass. Throws std::runtime_error when the folder cannot be written.
+    void write_inputs(cl::CommandQueue& queue, const PassLaunch& launch) const;
+
+    // After the pass has finished: the film arguments' bytes as
+    // DIR/argN.after.bin, what a replay of the same pass must reproduce; and
+    // a line on stderr naming the folder.
+    void write_outputs(cl::CommandQueue& queue, const DeviceFilm& film, int samples_per_pixel) const;
+
+private:
+    std::string dir_;  // "" when the knob is not set
+    int skip_ = 0;     // candidates still to let pass
+    bool taken_ = false;
+};
 
 }  // namespace orb::render
