@@ -14,8 +14,15 @@
 //    about the normal (a diffuse bounce, leaving that sphere);
 //  - shadow rays: from each hit to a random point on a random light.
 // The bounce and shadow rays are the kind a path's later vertices cast; the
-// camera rays are the most coherent a renderer casts.
+// camera rays are the most coherent a renderer casts. Bounce and shadow rays
+// are cast three ways: in pixel order (as a wavefront renderer's compacted
+// queue holds them), sorted by direction octant and then by the Morton code
+// of the origin (what a wavefront renderer that sorts its rays would cast;
+// the sort's own cost is not counted), and shuffled (lanes holding unrelated
+// rays, close to a megakernel's warps after a few bounces).
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -63,6 +70,55 @@ double rays_per_second(RayCaster& caster, const std::vector<CastRay>& rays, bool
     const double once = caster.cast_loaded(shadow, 1);
     const int times = std::max(1, static_cast<int>(seconds / std::max(once, 1e-6)));
     return static_cast<double>(rays.size()) * times / caster.cast_loaded(shadow, times);
+}
+
+// 10 bits per axis interleaved: nearby points get nearby codes.
+std::uint32_t morton3(float x, float y, float z)
+{
+    const auto spread = [](float f) {
+        std::uint32_t v = static_cast<std::uint32_t>(std::clamp(f, 0.0f, 1.0f) * 1023.0f);
+        v = (v | (v << 16)) & 0x030000FFu;
+        v = (v | (v << 8)) & 0x0300F00Fu;
+        v = (v | (v << 4)) & 0x030C30C3u;
+        v = (v | (v << 2)) & 0x09249249u;
+        return v;
+    };
+    return (spread(x) << 2) | (spread(y) << 1) | spread(z);
+}
+
+// The rays ordered by direction octant, then by the Morton code of their
+// origin within the origins' bounding box.
+std::vector<CastRay> sorted_by_octant_and_origin(const std::vector<CastRay>& rays)
+{
+    V lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+    for (const CastRay& r : rays) {
+        lo = {std::min(lo.x, r.origin[0]), std::min(lo.y, r.origin[1]), std::min(lo.z, r.origin[2])};
+        hi = {std::max(hi.x, r.origin[0]), std::max(hi.y, r.origin[1]), std::max(hi.z, r.origin[2])};
+    }
+    const V extent = hi - lo;
+    const float scale = 1.0f / std::max({extent.x, extent.y, extent.z, 1e-30f});
+    std::vector<std::pair<std::uint64_t, std::size_t>> keys;
+    keys.reserve(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const CastRay& r = rays[i];
+        const std::uint64_t octant = (r.direction[0] < 0 ? 4u : 0u) | (r.direction[1] < 0 ? 2u : 0u) |
+                                     (r.direction[2] < 0 ? 1u : 0u);
+        const std::uint32_t code = morton3((r.origin[0] - lo.x) * scale, (r.origin[1] - lo.y) * scale,
+                                           (r.origin[2] - lo.z) * scale);
+        keys.push_back({(octant << 32) | code, i});
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<CastRay> sorted;
+    sorted.reserve(rays.size());
+    for (const auto& key : keys) sorted.push_back(rays[key.second]);
+    return sorted;
+}
+
+std::vector<CastRay> shuffled(std::vector<CastRay> rays)
+{
+    std::mt19937 rng(7);
+    std::shuffle(rays.begin(), rays.end(), rng);
+    return rays;
 }
 
 }  // namespace
@@ -150,6 +206,10 @@ int main(int argc, char** argv)
         report("camera rays", camera_rays, false);
         report("bounce rays", bounce_rays, false);
         report("shadow rays", shadow_rays, true);
+        report("bounce rays sorted", sorted_by_octant_and_origin(bounce_rays), false);
+        report("shadow rays sorted", sorted_by_octant_and_origin(shadow_rays), true);
+        report("bounce rays shuffled", shuffled(bounce_rays), false);
+        report("shadow rays shuffled", shuffled(shadow_rays), true);
     } catch (const std::exception& error) {
         std::cerr << "orb-trace-benchmark: error: " << error.what() << "\n";
         return 1;
