@@ -333,15 +333,51 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 #ifndef ORB_BVH_COUNT
 #define ORB_BVH_COUNT 0
 #endif
+// ORB_TRAVERSAL_RETURN ends a traversal (traverse_tree below), printing
+// its count first.
 #if ORB_BVH_COUNT
 #define ORB_BVH_VISITS_BEGIN int bvh_visits = 0;
 #define ORB_BVH_VISIT ++bvh_visits;
-#define ORB_BVH_VISITS_END(kind) printf("orb BVH visits: " kind " %d\n", bvh_visits);
+#define ORB_TRAVERSAL_RETURN(blocked)                                      \
+    {                                                                    \
+        if (any_hit) printf("orb BVH visits: shadow %d\n", bvh_visits); \
+        else printf("orb BVH visits: closest %d\n", bvh_visits);        \
+        return blocked;                                                  \
+    }
 #else
 #define ORB_BVH_VISITS_BEGIN
 #define ORB_BVH_VISIT
-#define ORB_BVH_VISITS_END(kind)
+#define ORB_TRAVERSAL_RETURN(blocked) return blocked;
 #endif
+
+// One traversal serves both kinds of ray. any_hit false: the closest hit
+// (`best` is kept; children are visited nearest first, deferred ones are
+// stacked with their entry distances, and a popped child that starts beyond
+// the closest hit found by then is dropped). any_hit true: a shadow ray,
+// whether a sphere other than `light` lies along the ray before t_light;
+// children are still visited nearest first, since in a dense cloud the
+// blocker is usually near the ray's origin, and the first blocker ends the
+// search. Every caller passes any_hit as a constant, so each inlined copy
+// keeps only its own branches (and the closest hit's entry stack is gone
+// from the shadow rays' copy). `current` is a node (>= 0) or a leaf (< 0,
+// its packet -1 - current), as in BvhNodeRecord::child. Returns true when a
+// shadow ray is blocked, or when a bounds check gives up on the ray.
+
+// Tests leaf packet `packet` for what the traversal looks for; true when a
+// shadow ray is blocked by it.
+inline bool leaf_ends_search(BestHit* best, const SceneView* scene, int packet, float3 o, float3 d, int self,
+                             const bool any_hit, int light, float t_light)
+{
+    if (any_hit) return packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light);
+    test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
+    return false;
+}
+
+// How far along the ray a child may start and still matter.
+inline float search_limit(const BestHit* best, const bool any_hit, float t_light)
+{
+    return any_hit ? t_light : best_distance(best);
+}
 
 #if ORB_WARP_VOTE
 // Speculative traversal (Aila and Laine, "Understanding the Efficiency of
@@ -356,136 +392,72 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 // visits made while a postponed leaf waits only cull less.
 #define ORB_TRAVERSAL_DONE 0x7fffffff  // `current` once the stack is empty
 
-// Closest hit; the order of visits and the culling of popped children are
-// traverse_bvh's below.
-inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
+inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,
+                          const bool any_hit, int light, float t_light)
 {
-    const BoxRay ray = box_ray(o, d);
     int stack_child[ORB_BVH_STACK_SIZE + 2];
-    float stack_entry[ORB_BVH_STACK_SIZE + 2];
+    float stack_entry[ORB_BVH_STACK_SIZE + 2];  // closest hits only
     int top = 0;
     int current = 0;
     int leaf = 0;  // the postponed leaf (< 0), or 0 for none
-#define ORB_POP_CLOSEST                                                        \
-    {                                                                          \
-        const float t_best = best_distance(best);                              \
-        while (top > 0 && stack_entry[top - 1] >= t_best) --top;              \
-        current = top > 0 ? stack_child[--top] : ORB_TRAVERSAL_DONE;           \
+#define ORB_POP                                                                 \
+    {                                                                           \
+        if (!any_hit) {                                                         \
+            const float t_best = best_distance(best);                           \
+            while (top > 0 && stack_entry[top - 1] >= t_best) --top;           \
+        }                                                                       \
+        current = top > 0 ? stack_child[--top] : ORB_TRAVERSAL_DONE;            \
     }
     ORB_BVH_VISITS_BEGIN
     for (;;) {
         while (current >= 0 && current != ORB_TRAVERSAL_DONE) {
             ORB_BVH_VISIT
-            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return)
+            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)
             int4 child;
             float4 entry;
-            const int count = hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
+            const int count =
+                hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light), &child, &entry);
             if (count > 0) {
                 ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
-                               ORB_BVH_CHECK_STACK, return)
-                top = push_deferred(stack_child, stack_entry, top, child, entry, count);
-                current = child.x;
-            } else {
-                ORB_POP_CLOSEST
-            }
-            if (current < 0 && leaf == 0) {
-                leaf = current;
-                ORB_POP_CLOSEST
-            }
-            if (!warp_any(leaf == 0)) break;
-        }
-        if (leaf == 0 && current < 0) {
-            leaf = current;
-            ORB_POP_CLOSEST
-        }
-        while (leaf < 0) {
-            ORB_BVH_VISIT
-            const int packet = -1 - leaf;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return)
-            test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
-            leaf = 0;
-            if (current < 0) {
-                leaf = current;
-                ORB_POP_CLOSEST
-            }
-        }
-        if (current == ORB_TRAVERSAL_DONE) break;
-    }
-#undef ORB_POP_CLOSEST
-    ORB_BVH_VISITS_END("closest")
-}
-
-// Any-hit for shadow rays (light_visible below): whether a sphere other
-// than `light` lies along the ray before t_light.
-inline bool tree_blocks(const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self, int light,
-                        float t_light)
-{
-    int stack[ORB_BVH_STACK_SIZE + 2];
-    int top = 0;
-    int current = 0;
-    int leaf = 0;
-#define ORB_POP_ANY current = top > 0 ? stack[--top] : ORB_TRAVERSAL_DONE;
-    ORB_BVH_VISITS_BEGIN
-    for (;;) {
-        while (current >= 0 && current != ORB_TRAVERSAL_DONE) {
-            ORB_BVH_VISIT
-            ORB_BVH_EXPECT(current < scene->bvh_node_count, "shadow node", current, scene->bvh_node_count,
-                           return true)
-            int4 child;
-            float4 entry;
-            const int count = hit_children(&scene->bvh_nodes[current], ray, t_light, &child, &entry);
-            if (count > 0) {
-                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "shadow stack top", top + count - 1,
                                ORB_BVH_CHECK_STACK, return true)
-                top = push_deferred(stack, 0, top, child, entry, count);
+                top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
                 current = child.x;
             } else {
-                ORB_POP_ANY
+                ORB_POP
             }
             if (current < 0 && leaf == 0) {
                 leaf = current;
-                ORB_POP_ANY
+                ORB_POP
             }
             if (!warp_any(leaf == 0)) break;
         }
         if (leaf == 0 && current < 0) {
             leaf = current;
-            ORB_POP_ANY
+            ORB_POP
         }
         while (leaf < 0) {
             ORB_BVH_VISIT
             const int packet = -1 - leaf;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "shadow leaf packet", packet, scene->packet_count,
-                           return true)
-            if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) {
-                ORB_BVH_VISITS_END("shadow")
-                return true;
-            }
+            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)
+            if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
             leaf = 0;
             if (current < 0) {
                 leaf = current;
-                ORB_POP_ANY
+                ORB_POP
             }
         }
-        if (current == ORB_TRAVERSAL_DONE) {
-            ORB_BVH_VISITS_END("shadow")
-            return false;
-        }
+        if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
     }
-#undef ORB_POP_ANY
+#undef ORB_POP
 }
 #else
-// Closest hit along the ray, ordered front to back: of a node's children
-// the ray hits, the nearest is visited next and the others are pushed with
-// their entry distances, nearest on top; a popped child whose entry lies
-// beyond the closest hit found by then is dropped. `current` is a node
-// (>= 0) or a leaf (< 0, its packet -1 - current), as in BvhNodeRecord::child.
-inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
+// Ordered traversal: the nearest hit child next, the others deferred.
+inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,
+                          const bool any_hit, int light, float t_light)
 {
-    const BoxRay ray = box_ray(o, d);
     // Two spare entries: a push may write three children whatever their count.
     int stack_child[ORB_BVH_STACK_SIZE + 2];
-    float stack_entry[ORB_BVH_STACK_SIZE + 2];
+    float stack_entry[ORB_BVH_STACK_SIZE + 2];  // closest hits only
     int top = 0;
     int current = 0;
     ORB_BVH_VISITS_BEGIN
@@ -493,38 +465,48 @@ inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3
         ORB_BVH_VISIT
         if (current < 0) {
             const int packet = -1 - current;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return)
-            test_packet(best, &scene->packets[packet], 4 * packet, o, d, self);
+            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)
+            if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
         } else {
-            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return)
+            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)
             const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);
             if (run.x >= 0) {
                 ORB_BVH_EXPECT(run.x + run.y <= scene->packet_count, "leaf run", run.x + run.y - 1,
-                               scene->packet_count, return)
-                for (int k = run.x; k < run.x + run.y; ++k) test_packet(best, &scene->packets[k], 4 * k, o, d, self);
+                               scene->packet_count, return true)
+                for (int k = run.x; k < run.x + run.y; ++k)
+                    if (leaf_ends_search(best, scene, k, o, d, self, any_hit, light, t_light))
+                        ORB_TRAVERSAL_RETURN(true)
             } else {
                 int4 child;
                 float4 entry;
-                const int count =
-                    hit_children(&scene->bvh_nodes[current], &ray, best_distance(best), &child, &entry);
+                const int count = hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light),
+                                               &child, &entry);
                 if (count > 0) {
                     ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
-                                   ORB_BVH_CHECK_STACK, return)
-                    top = push_deferred(stack_child, stack_entry, top, child, entry, count);
+                                   ORB_BVH_CHECK_STACK, return true)
+                    top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
                     current = child.x;
                     continue;
                 }
             }
         }
-        // Next: the nearest deferred child that can still hold a closer hit.
-        const float t_best = best_distance(best);
-        while (top > 0 && stack_entry[top - 1] >= t_best) --top;
-        if (top == 0) break;
+        // Next: the nearest deferred child that can still matter.
+        if (!any_hit) {
+            const float t_best = best_distance(best);
+            while (top > 0 && stack_entry[top - 1] >= t_best) --top;
+        }
+        if (top == 0) ORB_TRAVERSAL_RETURN(false)
         current = stack_child[--top];
     }
-    ORB_BVH_VISITS_END("closest")
 }
 #endif  // ORB_WARP_VOTE
+
+// Closest hit in the tree, kept in `best`.
+inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
+{
+    const BoxRay ray = box_ray(o, d);
+    traverse_tree(best, scene, &ray, o, d, self, false, -1, ORB_NO_HIT);
+}
 
 inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
 {
@@ -553,8 +535,8 @@ inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d,
 }
 
 // Shadow rays: whether sphere `light` is the first thing along the ray. Any
-// other sphere hit before it ends the search at once (any-hit traversal, in
-// no particular order), which in a dense cloud is usually within a few nodes.
+// other sphere hit before it ends the search at once (traverse_tree's any-hit
+// mode), which in a dense cloud is usually within a few nodes.
 // light -1 stands for the environment: the ray must hit nothing at all.
 inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, int light)
 {
@@ -571,57 +553,7 @@ inline bool light_visible(const SceneView* scene, float3 o, float3 d, int self, 
     }
     for (int p = 0; p < scene->outside_packet_count; ++p)
         if (packet_blocks(&scene->packets[p], 4 * p, o, d, self, light, t_light)) return false;
-    // Any-hit: every child the ray hits up to the light is visited, nearest
-    // first as it happens; the first hit sphere other than the light ends it.
     const BoxRay ray = box_ray(o, d);
-#if ORB_WARP_VOTE
-    return !tree_blocks(scene, &ray, o, d, self, light, t_light);
-#else
-    int stack[ORB_BVH_STACK_SIZE + 2];  // two spare entries, as above
-    int top = 0;
-    int current = 0;
-    ORB_BVH_VISITS_BEGIN
-    for (;;) {
-        ORB_BVH_VISIT
-        if (current < 0) {
-            const int packet = -1 - current;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "shadow leaf packet", packet, scene->packet_count,
-                           return false)
-            if (packet_blocks(&scene->packets[packet], 4 * packet, o, d, self, light, t_light)) {
-                ORB_BVH_VISITS_END("shadow")
-                return false;
-            }
-        } else {
-            ORB_BVH_EXPECT(current < scene->bvh_node_count, "shadow node", current, scene->bvh_node_count,
-                           return false)
-            const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);
-            if (run.x >= 0) {
-                ORB_BVH_EXPECT(run.x + run.y <= scene->packet_count, "shadow leaf run", run.x + run.y - 1,
-                               scene->packet_count, return false)
-                for (int k = run.x; k < run.x + run.y; ++k)
-                    if (packet_blocks(&scene->packets[k], 4 * k, o, d, self, light, t_light)) {
-                        ORB_BVH_VISITS_END("shadow")
-                        return false;
-                    }
-            } else {
-                int4 child;
-                float4 entry;
-                const int count = hit_children(&scene->bvh_nodes[current], &ray, t_light, &child, &entry);
-                if (count > 0) {
-                    ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "shadow stack top", top + count - 1,
-                                   ORB_BVH_CHECK_STACK, return false)
-                    top = push_deferred(stack, 0, top, child, entry, count);
-                    current = child.x;
-                    continue;
-                }
-            }
-        }
-        if (top == 0) {
-            ORB_BVH_VISITS_END("shadow")
-            return true;
-        }
-        current = stack[--top];
-    }
-#endif  // ORB_WARP_VOTE
+    return !traverse_tree(0, scene, &ray, o, d, self, true, light, t_light);
 #endif
 }
