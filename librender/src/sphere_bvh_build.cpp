@@ -1,7 +1,8 @@
 // Binned SAH construction of the sphere BVH (sphere_bvh.h). Each node tries
 // `bins` planes per axis over its centroids' extent and keeps the cheapest by
-// the surface area heuristic; nodes of many spheres near the root build their
-// two subtrees on two threads. The tree is built as linked nodes per thread
+// the surface area heuristic; near the root, a node whose two sides both hold
+// many spheres builds them on two threads, and a node that splits off a few
+// spheres hands its spare threads on to the larger side. The tree is built as linked nodes per thread
 // and flattened at the end into depth-first order with adjacent children.
 // A split the SAH picks is kept only while the tree stays within
 // kBvhMaxDepth levels; past that budget nodes split at the median.
@@ -123,7 +124,7 @@ int median_levels(std::uint64_t n) {
 // keeps it too. So no leaf is deeper than kBvhMaxDepth, however the SAH
 // would have split (a chain of ever smaller clusters, say).
 static_assert(31 <= kBvhMaxDepth, "the root of any tree satisfies the depth guarantee");
-constexpr std::size_t kParallelMinimum = 4096;  // smaller subtrees are not worth a thread
+constexpr std::uint32_t kParallelMinimum = 4096;  // smaller subtrees are not worth a thread
 constexpr int kMaxBins = 64;
 
 struct Builder;
@@ -144,6 +145,18 @@ struct Builder {
 
     Builder(std::vector<Prim>& p, const BvhSettings& s) : prims(p), settings(s) {}
 
+    std::uint32_t started_over = 0;  // the prims of the subtree this builder was started on
+
+    // The most prims one builder (one thread) built, less those it handed on.
+    std::uint32_t most_prims_on_one_thread() const {
+        std::uint32_t own = started_over, most = 0;
+        for (const auto& child : children) {
+            own -= child->started_over;
+            most = std::max(most, child->most_prims_on_one_thread());
+        }
+        return std::max(own, most);
+    }
+
     // Builds prims[begin, end) and returns its root's index in `nodes`.
     std::int32_t build(std::uint32_t begin, std::uint32_t end, int depth, unsigned spare_threads) {
         const auto index = static_cast<std::int32_t>(nodes.size());
@@ -162,9 +175,11 @@ struct Builder {
 
         std::uint32_t middle = split(begin, end, centroids, depth);
         if (middle == begin || middle == end) middle = median_split(begin, end, centroids);
-        if (spare_threads > 0 && end - begin >= kParallelMinimum) {
+        const std::uint32_t smaller = std::min(middle - begin, end - middle);
+        if (spare_threads > 0 && smaller >= kParallelMinimum && 8 * std::uint64_t{smaller} >= end - begin) {
             auto other = std::make_unique<Builder>(prims, settings);
             const unsigned left_share = spare_threads / 2, right_share = spare_threads - 1 - left_share;
+            other->started_over = middle - begin;
             std::thread worker([&] { other->build(begin, middle, depth + 1, left_share); });
             const std::int32_t right = build(middle, end, depth + 1, right_share);
             worker.join();
@@ -172,8 +187,13 @@ struct Builder {
             nodes[index].right = right;
             children.push_back(std::move(other));
         } else {
-            const std::int32_t left = build(begin, middle, depth + 1, 0);
-            const std::int32_t right = build(middle, end, depth + 1, 0);
+            // A side too small for a thread of its own (or a small share of
+            // the node) is built here, and the spare threads go on with the
+            // other: an SAH split that cuts off a few large spheres near the
+            // root must not leave the millions below it to one thread.
+            const bool left_larger = middle - begin >= end - middle;
+            const std::int32_t left = build(begin, middle, depth + 1, left_larger ? spare_threads : 0);
+            const std::int32_t right = build(middle, end, depth + 1, left_larger ? 0 : spare_threads);
             nodes[index].left = left;
             nodes[index].right = right;
         }
@@ -342,12 +362,14 @@ BinaryBvh build_binary_bvh(std::span<const Sphere> spheres, const BvhSettings& s
 
     const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
     Builder root(prims, settings);
+    root.started_over = static_cast<std::uint32_t>(prims.size());
     root.build(0, static_cast<std::uint32_t>(prims.size()), 1, threads - 1);
 
     bvh.nodes.reserve(2 * prims.size());
     bvh.order.reserve(prims.size());
     bvh.nodes.resize(1);
     Flattener{prims, bvh}.emit(root, 0, 0);
+    bvh.most_spheres_on_one_thread = root.most_prims_on_one_thread();
     return bvh;
 }
 

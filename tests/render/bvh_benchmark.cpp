@@ -1,16 +1,30 @@
 // Not a test: times the host BVH build (docs/performance.md).
 //   build/bin/orb-bvh-benchmark [spheres=1000000] [threads=0 (all)]
+//   build/bin/orb-bvh-benchmark --scene FILE [threads=0 (all)]
+// The first form builds over uniformly random spheres; the second over a
+// scene's spheres (any format orb-render reads), as orb-render does. Each
+// run prints the binary SAH build's and the 4-wide collapse's seconds.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iostream>
 #include <random>
+#include <sstream>
+#include <string>
 
+#include "orb/scene/import.h"
 #include "sphere_bvh.h"
 
-int main(int argc, char** argv) {
-    const std::size_t n = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 1000000;
-    orb::render::BvhSettings settings;
-    settings.threads = argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : 0;
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<orb::Sphere> random_spheres(std::size_t n)
+{
     std::mt19937 rng(12345);
     std::uniform_real_distribution<double> pos(-100.0, 100.0), rad(0.05, 0.5);
     std::vector<orb::Sphere> spheres(n);
@@ -18,12 +32,41 @@ int main(int argc, char** argv) {
         s.center = {pos(rng), pos(rng), pos(rng)};
         s.radius = rad(rng);
     }
-    for (int run = 0; run < 3; ++run) {
-        const auto start = std::chrono::steady_clock::now();
-        const orb::render::SphereBvh bvh = orb::render::build_sphere_bvh(spheres, settings);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("spheres=%zu threads=%u nodes=%zu max_depth=%d stack_bound=%d build_seconds=%.3f\n", n,
-                    settings.threads, bvh.nodes.size(), orb::render::bvh_depth(bvh), orb::render::bvh_stack_bound(bvh),
-                    seconds);
+    return spheres;
+}
+
+std::vector<orb::Sphere> scene_spheres(const char* path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(std::string("cannot read ") + path);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return orb::import_scene(bytes.str(), path, ".").scene.spheres;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const bool from_scene = argc > 2 && std::string(argv[1]) == "--scene";
+        const std::vector<orb::Sphere> spheres =
+            from_scene ? scene_spheres(argv[2]) : random_spheres(argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 1000000);
+        const int threads_arg = from_scene ? 3 : 2;
+        orb::render::BvhSettings settings;
+        settings.threads = argc > threads_arg ? static_cast<unsigned>(std::atoi(argv[threads_arg])) : 0;
+        for (int run = 0; run < 3; ++run) {
+            const auto start = std::chrono::steady_clock::now();
+            const orb::render::BinaryBvh binary = orb::render::build_binary_bvh(spheres, settings);
+            const double binary_seconds = seconds_since(start);
+            const orb::render::SphereBvh bvh = orb::render::collapse_to_4_wide(binary);
+            const double seconds = seconds_since(start);
+            std::printf("spheres=%zu threads=%u nodes=%zu max_depth=%d stack_bound=%d build_seconds=%.3f "
+                        "binary_seconds=%.3f collapse_seconds=%.3f\n",
+                        spheres.size(), settings.threads, bvh.nodes.size(), orb::render::bvh_depth(bvh),
+                        orb::render::bvh_stack_bound(bvh), seconds, binary_seconds, seconds - binary_seconds);
+        }
+    } catch (const std::exception& error) {
+        std::cerr << "orb-bvh-benchmark: error: " << error.what() << "\n";
+        return 1;
     }
 }

@@ -400,6 +400,34 @@ TEST(SphereBvh, OneThreadAndTwoThreadsBuildTheSameTree) {
     EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)), 0);
 }
 
+// A few large spheres apart from a cloud make the root's SAH split cut them
+// off: the cloud must still be shared between the threads (the 10 M-sphere
+// benchmark scene built on one thread before), and the tree stays the same.
+TEST(SphereBvh, TwoThreadsShareTheCloudWhenTheRootSplitsOffAFewSpheres) {
+    auto spheres = random_spheres(40000, 11);
+    for (int k = 0; k < 3; ++k) {
+        Sphere far;
+        far.center = {1000.0 + 50.0 * k, 1000.0, 1000.0};
+        far.radius = 20.0;
+        spheres.push_back(far);
+    }
+    BvhSettings one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const BinaryBvh a = build_binary_bvh(spheres, one), b = build_binary_bvh(spheres, two);
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    EXPECT_EQ(a.order, b.order);
+    EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BinaryBvhNode)), 0);
+    // The root's split is the uneven one this test is about: one child's box
+    // holds only the three far spheres.
+    const std::uint32_t first = a.nodes[0].first;
+    EXPECT_TRUE(a.nodes[first].lo[0] > 900.0f || a.nodes[first + 1].lo[0] > 900.0f);
+    EXPECT_EQ(a.most_spheres_on_one_thread, spheres.size());
+    // Two threads: neither builds much more than half of the cloud.
+    EXPECT_LE(b.most_spheres_on_one_thread, spheres.size() * 3 / 4);
+    EXPECT_GE(b.most_spheres_on_one_thread, spheres.size() / 2);
+}
+
 // Refitting (sphere_bvh_refit.cpp). Unmoved spheres give back the boxes the
 // build made, bit for bit; moved ones a tree whose boxes nest and hold every
 // sphere, which traversal reads as it reads a new build; and the SAH cost
