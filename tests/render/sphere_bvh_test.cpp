@@ -389,15 +389,27 @@ TEST(SphereBvh, ATreeBeyondTheStackFallsBackToTheLevelRule) {
     EXPECT_EQ(std::memcmp(falls_back.nodes.data(), by_levels.nodes.data(), by_levels.nodes.size() * sizeof(BvhNode)), 0);
 }
 
-TEST(SphereBvh, OneThreadAndTwoThreadsBuildTheSameTree) {
-    const auto spheres = random_spheres(50000, 6);
-    BvhSettings one, two;
-    one.threads = 1;
-    two.threads = 2;
-    const SphereBvh a = build_sphere_bvh(spheres, one), b = build_sphere_bvh(spheres, two);
+namespace {
+
+BvhSettings on_threads(unsigned threads) {
+    BvhSettings settings;
+    settings.threads = threads;
+    return settings;
+}
+
+// The same nodes, byte for byte, and the same leaf order (a BinaryBvh or a SphereBvh).
+template <class Tree>
+void expect_same_tree(const Tree& a, const Tree& b) {
     ASSERT_EQ(a.nodes.size(), b.nodes.size());
     EXPECT_EQ(a.order, b.order);
-    EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)), 0);
+    EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(a.nodes[0])), 0);
+}
+
+}  // namespace
+
+TEST(SphereBvh, OneThreadAndTwoThreadsBuildTheSameTree) {
+    const auto spheres = random_spheres(50000, 6);
+    expect_same_tree(build_sphere_bvh(spheres, on_threads(1)), build_sphere_bvh(spheres, on_threads(2)));
 }
 
 // A few large spheres apart from a cloud make the root's SAH split cut them
@@ -411,13 +423,8 @@ TEST(SphereBvh, TwoThreadsShareTheCloudWhenTheRootSplitsOffAFewSpheres) {
         far.radius = 20.0;
         spheres.push_back(far);
     }
-    BvhSettings one, two;
-    one.threads = 1;
-    two.threads = 2;
-    const BinaryBvh a = build_binary_bvh(spheres, one), b = build_binary_bvh(spheres, two);
-    ASSERT_EQ(a.nodes.size(), b.nodes.size());
-    EXPECT_EQ(a.order, b.order);
-    EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BinaryBvhNode)), 0);
+    const BinaryBvh a = build_binary_bvh(spheres, on_threads(1)), b = build_binary_bvh(spheres, on_threads(2));
+    expect_same_tree(a, b);
     // The root's split is the uneven one this test is about: one child's box
     // holds only the three far spheres.
     const std::uint32_t first = a.nodes[0].first;
