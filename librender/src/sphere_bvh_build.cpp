@@ -2,8 +2,9 @@
 // `bins` planes per axis over its centroids' extent and keeps the cheapest by
 // the surface area heuristic; near the root, a node whose two sides both hold
 // many spheres builds them on two threads, and a node that splits off a few
-// spheres hands its spare threads on to the larger side. The tree is built as linked nodes per thread
-// and flattened at the end into depth-first order with adjacent children.
+// spheres hands its spare threads on to the larger side. The tree is built as
+// linked nodes per thread and flattened at the end into depth-first order
+// with adjacent children.
 // A split the SAH picks is kept only while the tree stays within
 // kBvhMaxDepth levels; past that budget nodes split at the median.
 #include <algorithm>
@@ -142,10 +143,10 @@ struct Builder {
     const BvhSettings& settings;
     std::vector<BuildNode> nodes;
     std::vector<std::unique_ptr<Builder>> children;  // builders of subtrees run on other threads
+    const std::uint32_t started_over;                 // the prims of the subtree this builder builds
 
-    Builder(std::vector<Prim>& p, const BvhSettings& s) : prims(p), settings(s) {}
-
-    std::uint32_t started_over = 0;  // the prims of the subtree this builder was started on
+    Builder(std::vector<Prim>& p, const BvhSettings& s, std::uint32_t count)
+        : prims(p), settings(s), started_over(count) {}
 
     // The most prims one builder (one thread) built, less those it handed on.
     std::uint32_t most_prims_on_one_thread() const {
@@ -177,9 +178,8 @@ struct Builder {
         if (middle == begin || middle == end) middle = median_split(begin, end, centroids);
         const std::uint32_t smaller = std::min(middle - begin, end - middle);
         if (spare_threads > 0 && smaller >= kParallelMinimum && 8 * std::uint64_t{smaller} >= end - begin) {
-            auto other = std::make_unique<Builder>(prims, settings);
+            auto other = std::make_unique<Builder>(prims, settings, middle - begin);
             const unsigned left_share = spare_threads / 2, right_share = spare_threads - 1 - left_share;
-            other->started_over = middle - begin;
             std::thread worker([&] { other->build(begin, middle, depth + 1, left_share); });
             const std::int32_t right = build(middle, end, depth + 1, right_share);
             worker.join();
@@ -361,8 +361,7 @@ BinaryBvh build_binary_bvh(std::span<const Sphere> spheres, const BvhSettings& s
     if (prims.empty()) return bvh;
 
     const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
-    Builder root(prims, settings);
-    root.started_over = static_cast<std::uint32_t>(prims.size());
+    Builder root(prims, settings, static_cast<std::uint32_t>(prims.size()));
     root.build(0, static_cast<std::uint32_t>(prims.size()), 1, threads - 1);
 
     bvh.nodes.reserve(2 * prims.size());

@@ -2,8 +2,8 @@
 
 #include <chrono>
 #include <cstdio>
-#include <memory>
 #include <iostream>
+#include <memory>
 
 #include "interrupt.h"
 #include "orb/cli/messages.h"
