@@ -379,6 +379,20 @@ inline float search_limit(const BestHit* best, const bool any_hit, float t_light
     return any_hit ? t_light : best_distance(best);
 }
 
+#define ORB_TRAVERSAL_DONE 0x7fffffff  // what pop_deferred returns once the stack is empty
+
+// The nearest deferred child that can still matter, taken off the stack: a
+// closest-hit traversal first drops the children that start beyond the
+// closest hit found so far (a shadow ray keeps no entry distances).
+inline int pop_deferred(const BestHit* best, const int* children, const float* entries, int* top, const bool any_hit)
+{
+    if (!any_hit) {
+        const float t_best = best_distance(best);
+        while (*top > 0 && entries[*top - 1] >= t_best) --*top;
+    }
+    return *top > 0 ? children[--*top] : ORB_TRAVERSAL_DONE;
+}
+
 #if ORB_WARP_VOTE
 // Speculative traversal (Aila and Laine, "Understanding the Efficiency of
 // Ray Traversal on GPUs", 2009), where a warp vote exists (warp_vote.cl). A
@@ -390,7 +404,6 @@ inline float search_limit(const BestHit* best, const bool any_hit, float t_light
 // spheres; this gives 4% more samples/s on an H100 at 1 k to 1 M spheres
 // (docs/performance.md, "Speculative traversal"). The hits are the same:
 // visits made while a postponed leaf waits only cull less.
-#define ORB_TRAVERSAL_DONE 0x7fffffff  // `current` once the stack is empty
 
 inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,
                           const bool any_hit, int light, float t_light)
@@ -400,14 +413,6 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
     int top = 0;
     int current = 0;
     int leaf = 0;  // the postponed leaf (< 0), or 0 for none
-#define ORB_POP                                                                 \
-    {                                                                           \
-        if (!any_hit) {                                                         \
-            const float t_best = best_distance(best);                           \
-            while (top > 0 && stack_entry[top - 1] >= t_best) --top;           \
-        }                                                                       \
-        current = top > 0 ? stack_child[--top] : ORB_TRAVERSAL_DONE;            \
-    }
     ORB_BVH_VISITS_BEGIN
     for (;;) {
         while (current >= 0 && current != ORB_TRAVERSAL_DONE) {
@@ -423,17 +428,17 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
                 top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
                 current = child.x;
             } else {
-                ORB_POP
+                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
             }
             if (current < 0 && leaf == 0) {
                 leaf = current;
-                ORB_POP
+                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
             }
             if (!warp_any(leaf == 0)) break;
         }
         if (leaf == 0 && current < 0) {
             leaf = current;
-            ORB_POP
+            current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
         }
         while (leaf < 0) {
             ORB_BVH_VISIT
@@ -443,12 +448,11 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
             leaf = 0;
             if (current < 0) {
                 leaf = current;
-                ORB_POP
+                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
             }
         }
         if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
     }
-#undef ORB_POP
 }
 #else
 // Ordered traversal: the nearest hit child next, the others deferred.
@@ -490,13 +494,8 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
                 }
             }
         }
-        // Next: the nearest deferred child that can still matter.
-        if (!any_hit) {
-            const float t_best = best_distance(best);
-            while (top > 0 && stack_entry[top - 1] >= t_best) --top;
-        }
-        if (top == 0) ORB_TRAVERSAL_RETURN(false)
-        current = stack_child[--top];
+        current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
+        if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
     }
 }
 #endif  // ORB_WARP_VOTE
