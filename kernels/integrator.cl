@@ -135,12 +135,11 @@ inline float3 sample_lights(const SceneView* scene, float3 p, int self, const Bs
 #endif
 }
 
-// Casts the path's next ray and handles what it hits: emission, next-event
-// estimation, scattering. Returns false when the path has ended.
-inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out, const SampleCoords* coords,
-                        int max_depth, int mode)
+// Handles what the path's ray hit: emission, next-event estimation,
+// scattering. Returns false when the path has ended.
+inline bool follow_hit(const SceneView* scene, PathState* path, PathSample* out, const SampleCoords* coords,
+                       Hit hit, int max_depth, int mode)
 {
-    const Hit hit = intersect_scene(scene, path->o, path->d, path->self);
     if (hit.id < 0) {
         // Escaped: the environment's radiance (kernels/environment.cl). Alpha
         // stays 0: it is the coverage of spheres, so a render composites over a plate.
@@ -209,9 +208,14 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
             out->albedo = path->beta * bsdf_albedo(&m.bsdf, wo, n);
             path->albedo_set = true;
         }
-        add_by_vertex_count(out, path->nondelta_vertices + 1,
-                            path->beta * sample_lights(scene, p, hit.id, &m.bsdf, wo, n, outside, ORB_LIGHT_PAIR,
-                                                       mode));
+        const float3 light_sample =
+            path->beta * sample_lights(scene, p, hit.id, &m.bsdf, wo, n, outside, ORB_LIGHT_PAIR, mode);
+#if ORB_WAVEFRONT
+        // Counted only once its shadow ray is found unblocked (wavefront.cl).
+        scene->deferred_shadow->contribution = light_sample;
+#else
+        add_by_vertex_count(out, path->nondelta_vertices + 1, light_sample);
+#endif
         u_direction = ORB_DIRECTION_PAIR;
     }
 #undef ORB_LIGHT_PAIR
@@ -253,6 +257,14 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
     path->self = hit.id;
     path->depth = depth + 1;
     return true;
+}
+
+// Casts the path's next ray and follows it. Returns false when the path has ended.
+inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out, const SampleCoords* coords,
+                        int max_depth, int mode)
+{
+    return follow_hit(scene, path, out, coords, intersect_scene(scene, path->o, path->d, path->self), max_depth,
+                      mode);
 }
 
 // What one finished camera path adds to each summed channel of the film

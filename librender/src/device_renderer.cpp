@@ -107,18 +107,24 @@ void DeviceRenderer::fail(const cl::Error& error, const std::string& what) const
 
 std::string DeviceRenderer::build_options(const SceneLayout& scene) const
 {
+    return render_program_options(*session_, scene, config_, simd_lanes_);
+}
+
+std::string render_program_options(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
+                                   int simd_lanes)
+{
     // Small scenes live in constant memory (cached, broadcast to a whole
     // warp on GPUs); larger ones in global memory. In constant memory
     // every scene table is one __constant argument of render_pass, and
     // all of them together must fit the constant buffer size (which some
     // drivers apply per buffer, others to the sum).
-    const cl::Device& device = session_->device();
+    const cl::Device& device = session.device();
     const cl_ulong constant_limit = device.getInfo<CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE>();
     const cl_uint constant_args = device.getInfo<CL_DEVICE_MAX_CONSTANT_ARGS>();
     const bool constant_scene = scene_table_bytes(scene.tables) <= constant_limit && kSceneTableCount <= constant_args;
     std::string options = std::string(kKernelLanguageOptions) +
                           " -DORB_SCENE_SPACE=" + (constant_scene ? "__constant" : "__global") +
-                          traversal_options(session_->info(), scene) +
+                          traversal_options(session.info(), scene) +
                           (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
                           // Only the code the scene uses: each material kind's, rough
                           // glass's and the environment's cost registers on GPUs whether
@@ -130,15 +136,15 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
                           // No aiming code without casters (4% of an H100's samples/s on
                           // simple.scn), nor in direct mode, which counts no light that
                           // passed a caster after the first diffuse vertex.
-                          (scene.counts.caster_count > 0 && config_.mode == IntegratorMode::Global
+                          (scene.counts.caster_count > 0 && config.mode == IntegratorMode::Global
                                ? ""
                                : " -DORB_CASTER_SHARE=0.0f") +
                           " -DORB_ROUGH_DIELECTRIC=" + (scene.rough_dielectric ? "1" : "0") +
-                          (config_.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
-                          " -DORB_FILM_CHANNELS_BUILT=" + std::to_string(config_.film_channels) + "u" +
+                          (config.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
+                          " -DORB_FILM_CHANNELS_BUILT=" + std::to_string(config.film_channels) + "u" +
                           nvidia_register_cap(device, scene) +
-                          (simd_lanes_ > 0
-                               ? " -DORB_SIMD_KERNEL=1 -DORB_SIMD_WIDTH=" + std::to_string(simd_lanes_)
+                          (simd_lanes > 0
+                               ? " -DORB_SIMD_KERNEL=1 -DORB_SIMD_WIDTH=" + std::to_string(simd_lanes)
                                : std::string());
     return with_development_options(options);
 }

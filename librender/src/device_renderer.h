@@ -33,6 +33,14 @@ std::string traversal_options(const DeviceInfo& device, const SceneLayout& scene
 // that its -D definitions win.
 std::string with_development_options(std::string options);
 
+// The options render_pass is built with for `scene` under `config` on the
+// session's device (render_pass_simd with `simd_lanes` > 0): where the scene
+// lives, the traversal, only the code the scene and the film use, the
+// register cap. Other programs that run render_pass's code take them too
+// (the wavefront prototype, wavefront_renderer.h).
+std::string render_program_options(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
+                                   int simd_lanes);
+
 class DeviceRenderer {
 public:
     // A film of config.width x config.height (cleared) on the session's

@@ -69,4 +69,14 @@ void expect_same_up_to_rounding(const std::vector<float>& a, const std::vector<f
 // channels exactly.
 void expect_same_films_up_to_rounding(const Film& a, const Film& b);
 
+// Two kernels that render the same paths of the same samples (render_pass
+// and render_pass_simd, or the wavefront prototype): only where float
+// rounding differs (fused multiply-adds, a reciprocal square root for a
+// normalize) can a path take another branch near an edge or a roulette
+// threshold. Expects at most a tenth of the values `a` and `b` (sums of a
+// channel) apart by more than the same path's rounding, and the mean
+// difference within 4 standard errors of the paired differences (no bias
+// between the kernels).
+void expect_mostly_same_paths(const std::vector<float>& a, const std::vector<float>& b, const std::string& what);
+
 }  // namespace orb::render::test
