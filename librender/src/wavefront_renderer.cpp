@@ -1,6 +1,7 @@
 #include "wavefront_renderer.h"
 
 #include <array>
+#include <chrono>
 #include <stdexcept>
 
 #include "device_renderer.h"
@@ -104,27 +105,61 @@ void WavefrontRenderer::clear()
     }
 }
 
-void WavefrontRenderer::enqueue_wave(std::uint64_t first_sample)
+void WavefrontRenderer::enqueue_wave(std::uint64_t first_sample, WaveProfile* profile)
 {
     cl::CommandQueue& queue = session_->queue();
+    auto start = std::chrono::steady_clock::now();
+    // Without a profile, nothing waits; with one, each step is timed to its end.
+    const auto timed = [&](double* seconds) {
+        if (!profile) return;
+        queue.finish();
+        const auto now = std::chrono::steady_clock::now();
+        *seconds += std::chrono::duration<double>(now - start).count();
+        start = now;
+    };
+    const auto read_count = [&](int slot, std::vector<int>& into) {
+        if (!profile) return;
+        cl_int count = 0;
+        queue.enqueueReadBuffer(counts_, CL_TRUE, slot * sizeof(cl_int), sizeof(cl_int), &count);
+        into.push_back(count);
+        start = std::chrono::steady_clock::now();
+    };
     const cl_int paths = pixels_ * paths_per_pixel_;
     params_.pass.first_sample_lo = static_cast<device::uint>(first_sample & 0xffffffffu);
     params_.pass.first_sample_hi = static_cast<device::uint>(first_sample >> 32);
     bind_params(begin_, params_);
+    if (profile) queue.finish(), start = std::chrono::steady_clock::now();
     queue.enqueueFillBuffer(counts_, paths, 0, sizeof(cl_int));
     queue.enqueueNDRangeKernel(begin_, cl::NullRange, global_size_, cl::NDRange(kGroup));
+    timed(profile ? &profile->begin : nullptr);
     // The ray leaving scattering event max_depth is still cast, for the
     // emission it may hit: max_depth + 1 casts at most.
     for (int event = 0; event <= max_depth_; ++event) {
         const int in = event % 2, out = 1 - in;
+        if (profile) read_count(in, profile->paths);
         bind_own(intersect_, paths_, queues_[in], counts_, in, hits_);
         queue.enqueueNDRangeKernel(intersect_, cl::NullRange, global_size_, cl::NDRange(kGroup));
+        timed(profile ? &profile->intersect : nullptr);
         queue.enqueueFillBuffer(counts_, cl_int(0), out * sizeof(cl_int), sizeof(cl_int));
         queue.enqueueFillBuffer(counts_, cl_int(0), kShadowCount * sizeof(cl_int), sizeof(cl_int));
         bind_own(shade_, paths_, queues_[in], queues_[out], counts_, in, out, hits_, shadow_rays_, radiance_);
         queue.enqueueNDRangeKernel(shade_, cl::NullRange, global_size_, cl::NDRange(kGroup));
+        timed(profile ? &profile->shade : nullptr);
+        if (profile) read_count(kShadowCount, profile->shadow_rays);
         queue.enqueueNDRangeKernel(shadow_, cl::NullRange, global_size_, cl::NDRange(kGroup));
+        timed(profile ? &profile->shadow : nullptr);
     }
+}
+
+WavefrontRenderer::WaveProfile WavefrontRenderer::profile_wave(std::uint64_t first_sample)
+{
+    WaveProfile profile;
+    try {
+        enqueue_wave(first_sample, &profile);
+    } catch (const cl::Error& error) {
+        fail(error, "a profiled wave");
+    }
+    return profile;
 }
 
 void WavefrontRenderer::enqueue(std::uint64_t first_sample, int waves)

@@ -43,8 +43,19 @@ public:
 
     std::uint64_t path_state_bytes() const { return path_bytes_; }
 
+    // One wave from `first_sample`, waiting for each launch to end, with
+    // the seconds each kind of kernel took and the queues' lengths: where a
+    // wave's time goes. The radiance is added to the sums as by enqueue().
+    struct WaveProfile {
+        double begin = 0, intersect = 0, shade = 0, shadow = 0;  // seconds, counter resets with shade
+        std::vector<int> paths;        // paths cast at each scattering event (0: camera rays)
+        std::vector<int> shadow_rays;  // shadow rays cast after each event's shading
+    };
+    WaveProfile profile_wave(std::uint64_t first_sample);
+
 private:
-    void enqueue_wave(std::uint64_t first_sample);
+    // With `profile`, waits for each launch and fills it in.
+    void enqueue_wave(std::uint64_t first_sample, WaveProfile* profile = nullptr);
     [[noreturn]] void fail(const cl::Error& error, const std::string& what) const;
 
     std::shared_ptr<DeviceSession> session_;

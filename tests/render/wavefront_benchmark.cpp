@@ -149,6 +149,26 @@ int main(int argc, char** argv)
                         wave_rate / mega_rate);
             std::fflush(stdout);
         }
+        // Where a wave's time goes: each launch waited for (so slower than
+        // the rates above), averaged over a few waves.
+        constexpr int kProfiledWaves = 4;
+        WavefrontRenderer::WaveProfile total;
+        for (int w = 0; w < kProfiledWaves; ++w) {
+            const WavefrontRenderer::WaveProfile p =
+                wavefront.profile_wave(static_cast<std::uint64_t>(w) * wavefront.paths_per_pixel());
+            total.begin += p.begin, total.intersect += p.intersect, total.shade += p.shade, total.shadow += p.shadow;
+            if (w == 0) total.paths = p.paths, total.shadow_rays = p.shadow_rays;
+        }
+        const double samples = static_cast<double>(pixels) * wavefront.paths_per_pixel() * kProfiledWaves;
+        std::printf("profiled waves, ns per sample: begin %.3f, intersect %.3f, shade %.3f, shadow %.3f\n",
+                    1e9 * total.begin / samples, 1e9 * total.intersect / samples, 1e9 * total.shade / samples,
+                    1e9 * total.shadow / samples);
+        const double wave_paths = static_cast<double>(pixels) * wavefront.paths_per_pixel();
+        std::printf("rays per sample (first wave), closest hits by event:");
+        for (int n : total.paths) std::printf(" %.3f", n / wave_paths);
+        std::printf("; shadow rays by event:");
+        for (int n : total.shadow_rays) std::printf(" %.3f", n / wave_paths);
+        std::printf("\n");
     } catch (const std::exception& error) {
         std::cerr << "orb-wavefront-benchmark: error: " << error.what() << "\n";
         return 1;
