@@ -19,6 +19,12 @@
 // in which a sample's terms are summed differs. Each path sums its radiance
 // in its own slot; the host adds a pixel's slots.
 //
+// The paths' state is kept as arrays of float4, one array per group of
+// fields (structure of arrays): the 32 work-items of a warp then read and
+// write neighbouring 16-byte words, and the intersection kernel reads only
+// the ray's two words. Array k of a buffer starts at k * get_global_size(0),
+// the same for every kernel of a wave.
+//
 // Queues are compacted with atomic counters (counts[]: the two path queues'
 // lengths and the shadow queue's). Each kernel is launched over every pixel
 // and items past the queue's length return at once, so the host never waits
@@ -28,35 +34,96 @@
 // would need a shadow ray per light.
 
 #if ORB_WAVEFRONT
-typedef struct {
-    PathState path;
-    SampleCoords coords;
-} WavefrontPath;
+// The float4 words of one path's state (PathState and SampleCoords):
+#define WAVEFRONT_RAY_ORIGIN 0  // o, self
+#define WAVEFRONT_RAY_DIRECTION 1  // d, depth
+#define WAVEFRONT_THROUGHPUT 2  // beta, eta2
+#define WAVEFRONT_FROM_POINT 3  // from_point, from_self
+#define WAVEFRONT_FLAGS 4  // from_pdf, nondelta_vertices, albedo_set | from_density << 1, unused
+#define WAVEFRONT_COORDS 5  // pixel, sample (low, high), the Sobol key (0 for the independent sampler)
+#define WAVEFRONT_PATH_WORDS 6
+// ... and of a queued shadow ray:
+#define WAVEFRONT_SHADOW_ORIGIN 0  // the shading point, the sphere it leaves
+#define WAVEFRONT_SHADOW_DIRECTION 1  // direction, the light's sphere slot (-1 the environment)
+#define WAVEFRONT_SHADOW_CONTRIBUTION 2  // the estimate, the path it belongs to
+#define WAVEFRONT_SHADOW_WORDS 3
 
-typedef struct {
-    float4 origin_self;        // the shading point; w: the sphere it leaves (int bits)
-    float4 direction_light;    // w: the light's sphere slot (int bits), -1 the environment
-    float4 contribution_path;  // w: the path it belongs to (int bits)
-} WavefrontShadowRay;
+// Word k of item i.
+#define WAVEFRONT_WORD(buffer, k, i) (buffer)[(size_t)(k) * get_global_size(0) + (size_t)(i)]
+
+// The number of float4 words per path and per shadow ray, for the host's allocations.
+__kernel void wavefront_record_sizes(__global int* sizes)
+{
+    sizes[0] = WAVEFRONT_PATH_WORDS;
+    sizes[1] = WAVEFRONT_SHADOW_WORDS;
+}
 
 // Indices into counts[]: two path queues (a wave alternates between them)
 // and the shadow queue.
 #define WAVEFRONT_SHADOW_COUNT 2
 
-// The size of the records above as this device lays them out, for the host's allocations.
-__kernel void wavefront_record_sizes(__global int* sizes)
+inline void store_path(__global float4* state, int p, const PathState* path)
 {
-    sizes[0] = (int)sizeof(WavefrontPath);
-    sizes[1] = (int)sizeof(WavefrontShadowRay);
+    WAVEFRONT_WORD(state, WAVEFRONT_RAY_ORIGIN, p) = (float4)(path->o, as_float(path->self));
+    WAVEFRONT_WORD(state, WAVEFRONT_RAY_DIRECTION, p) = (float4)(path->d, as_float(path->depth));
+    WAVEFRONT_WORD(state, WAVEFRONT_THROUGHPUT, p) = (float4)(path->beta, path->eta2);
+    WAVEFRONT_WORD(state, WAVEFRONT_FROM_POINT, p) = (float4)(path->from_point, as_float(path->from_self));
+    WAVEFRONT_WORD(state, WAVEFRONT_FLAGS, p) =
+        (float4)(path->from_pdf, as_float(path->nondelta_vertices),
+                 as_float((path->albedo_set ? 1 : 0) | (path->from_density ? 2 : 0)), 0.0f);
 }
 
-// PathState holds bools, which may not appear in a kernel argument's
-// pointee type, so the paths travel as bytes.
-#define WAVEFRONT_PATHS ((__global WavefrontPath*)path_bytes)
+inline PathState load_path(__global const float4* state, int p)
+{
+    PathState path;
+    const float4 origin = WAVEFRONT_WORD(state, WAVEFRONT_RAY_ORIGIN, p);
+    const float4 direction = WAVEFRONT_WORD(state, WAVEFRONT_RAY_DIRECTION, p);
+    const float4 throughput = WAVEFRONT_WORD(state, WAVEFRONT_THROUGHPUT, p);
+    const float4 from = WAVEFRONT_WORD(state, WAVEFRONT_FROM_POINT, p);
+    const float4 flags = WAVEFRONT_WORD(state, WAVEFRONT_FLAGS, p);
+    path.o = origin.xyz;
+    path.self = as_int(origin.w);
+    path.d = direction.xyz;
+    path.depth = as_int(direction.w);
+    path.beta = throughput.xyz;
+    path.eta2 = throughput.w;
+    path.from_point = from.xyz;
+    path.from_self = as_int(from.w);
+    path.from_pdf = flags.x;
+    path.nondelta_vertices = as_int(flags.y);
+    path.albedo_set = (as_int(flags.z) & 1) != 0;
+    path.from_density = (as_int(flags.z) & 2) != 0;
+    return path;
+}
+
+inline void store_coords(__global float4* state, int p, const SampleCoords* c)
+{
+#if ORB_SAMPLER_SOBOL
+    const uint key = c->key;
+#else
+    const uint key = 0u;
+#endif
+    WAVEFRONT_WORD(state, WAVEFRONT_COORDS, p) =
+        as_float4((uint4)(c->pixel, (uint)c->sample, (uint)(c->sample >> 32), key));
+}
+
+inline SampleCoords load_coords(__global const float4* state, int p, uint2 seed)
+{
+    const uint4 w = as_uint4(WAVEFRONT_WORD(state, WAVEFRONT_COORDS, p));
+    SampleCoords c;
+    c.pixel = w.x;
+    c.sample = ((ulong)w.z << 32) | (ulong)w.y;
+    c.seed = seed;
+#if ORB_SAMPLER_SOBOL
+    c.key = w.w;
+    c.i_reversed = reverse_bits32(w.y);
+#endif
+    return c;
+}
 
 // Path p of a wave is pixel p % pixels, sample first_sample + p / pixels.
 __kernel void wavefront_begin(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG),
-                              __global uchar* path_bytes, __global int* queue, int paths_per_pixel)
+                              __global float4* state, __global int* queue, int paths_per_pixel)
 {
     const int width = params.settings.width;
     const int pixels = width * params.settings.height;
@@ -66,38 +133,41 @@ __kernel void wavefront_begin(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB
     const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);
     const ulong first_sample = ((ulong)params.pass.first_sample_hi << 32) | (ulong)params.pass.first_sample_lo;
     const CameraParams cam = params.camera;
-    WavefrontPath w;
+    PathState path;
     PathSample unused;
-    w.coords = sample_coords(sampler_pixel_key((uint)pixel, seed), (uint)pixel, first_sample + (ulong)(p / pixels), seed);
-    begin_camera_path(&cam, pixel % width, pixel / width, width, params.settings.height, &w.coords, &w.path, &unused);
-    WAVEFRONT_PATHS[p] = w;
+    const SampleCoords coords =
+        sample_coords(sampler_pixel_key((uint)pixel, seed), (uint)pixel, first_sample + (ulong)(p / pixels), seed);
+    begin_camera_path(&cam, pixel % width, pixel / width, width, params.settings.height, &coords, &path, &unused);
+    store_path(state, p, &path);
+    store_coords(state, p, &coords);
     queue[p] = p;
 }
 
 __kernel void wavefront_intersect(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG),
-                                  __global uchar* path_bytes, __global const int* queue, __global const int* counts,
+                                  __global const float4* state, __global const int* queue, __global const int* counts,
                                   int queue_slot, __global int2* hits)
 {
     const int i = get_global_id(0);
     if (i >= counts[queue_slot]) return;
     ORB_SCENE_VIEW_OF_ARGUMENTS
     const int p = queue[i];
-    __global const PathState* path = &WAVEFRONT_PATHS[p].path;
-    const Hit hit = intersect_scene(&scene, path->o, path->d, path->self);
+    const float4 o = WAVEFRONT_WORD(state, WAVEFRONT_RAY_ORIGIN, p);
+    const float4 d = WAVEFRONT_WORD(state, WAVEFRONT_RAY_DIRECTION, p);
+    const Hit hit = intersect_scene(&scene, o.xyz, d.xyz, as_int(o.w));
     hits[p] = (int2)(hit.id, as_int(hit.t));
 }
 
 __kernel void wavefront_shade(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG),
-                              __global uchar* path_bytes, __global const int* queue, __global int* next_queue,
+                              __global float4* state, __global const int* queue, __global int* next_queue,
                               __global int* counts, int queue_slot, int next_slot, __global const int2* hits,
-                              __global WavefrontShadowRay* shadow_rays, __global float4* radiance)
+                              __global float4* shadow_rays, __global float4* radiance)
 {
     const int i = get_global_id(0);
     if (i >= counts[queue_slot]) return;
     ORB_SCENE_VIEW_OF_ARGUMENTS
     const int p = queue[i];
-    PathState path = WAVEFRONT_PATHS[p].path;
-    const SampleCoords coords = WAVEFRONT_PATHS[p].coords;
+    PathState path = load_path(state, p);
+    const SampleCoords coords = load_coords(state, p, (uint2)(params.settings.seed_lo, params.settings.seed_hi));
     const int2 packed = hits[p];
     Hit hit;
     hit.id = packed.x;
@@ -116,30 +186,28 @@ __kernel void wavefront_shade(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB
     const float3 term = (s.emission + s.direct) + s.indirect;
     if (all(isfinite(term)) && term.x + term.y + term.z > 0.0f) radiance[p].xyz += term;
     if (shadow.pending && shadow.contribution.x + shadow.contribution.y + shadow.contribution.z > 0.0f) {
-        WavefrontShadowRay ray;
-        ray.origin_self = (float4)(shading_point, as_float(hit.id));
-        ray.direction_light = (float4)(shadow.direction, as_float(shadow.light));
-        ray.contribution_path = (float4)(shadow.contribution, as_float(p));
-        shadow_rays[atomic_inc(&counts[WAVEFRONT_SHADOW_COUNT])] = ray;
+        const int k = atomic_inc(&counts[WAVEFRONT_SHADOW_COUNT]);
+        WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_ORIGIN, k) = (float4)(shading_point, as_float(hit.id));
+        WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_DIRECTION, k) = (float4)(shadow.direction, as_float(shadow.light));
+        WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_CONTRIBUTION, k) = (float4)(shadow.contribution, as_float(p));
     }
     if (alive) {
-        WAVEFRONT_PATHS[p].path = path;
+        store_path(state, p, &path);
         next_queue[atomic_inc(&counts[next_slot])] = p;
     }
 }
 
 __kernel void wavefront_shadow(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG),
-                               __global const WavefrontShadowRay* shadow_rays, __global const int* counts,
+                               __global const float4* shadow_rays, __global const int* counts,
                                __global float4* radiance)
 {
     const int i = get_global_id(0);
     if (i >= counts[WAVEFRONT_SHADOW_COUNT]) return;
     ORB_SCENE_VIEW_OF_ARGUMENTS
-    const WavefrontShadowRay ray = shadow_rays[i];
-    if (!light_visible(&scene, ray.origin_self.xyz, ray.direction_light.xyz, as_int(ray.origin_self.w),
-                       as_int(ray.direction_light.w)))
-        return;
-    const float3 term = ray.contribution_path.xyz;
-    if (all(isfinite(term))) radiance[as_int(ray.contribution_path.w)].xyz += term;
+    const float4 o = WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_ORIGIN, i);
+    const float4 d = WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_DIRECTION, i);
+    if (!light_visible(&scene, o.xyz, d.xyz, as_int(o.w), as_int(d.w))) return;
+    const float4 c = WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_CONTRIBUTION, i);
+    if (all(isfinite(c.xyz))) radiance[as_int(c.w)].xyz += c.xyz;
 }
 #endif

@@ -43,22 +43,25 @@ WavefrontRenderer::WavefrontRenderer(std::shared_ptr<DeviceSession> session, con
     const std::size_t paths = static_cast<std::size_t>(pixels_) * paths_per_pixel_;
     global_size_ = cl::NDRange((paths + kGroup - 1) / kGroup * kGroup);
     try {
-        // The records' sizes as the device lays them out.
+        // The float4 words per path and per shadow ray (kernels/wavefront.cl).
         cl::Kernel sizes_kernel(program, "wavefront_record_sizes");
         cl::Buffer sizes(session_->context(), CL_MEM_WRITE_ONLY, 2 * sizeof(cl_int));
         sizes_kernel.setArg(0, sizes);
         cl::CommandQueue& queue = session_->queue();
         queue.enqueueTask(sizes_kernel);
-        std::array<cl_int, 2> record_bytes{};
-        queue.enqueueReadBuffer(sizes, CL_TRUE, 0, sizeof(record_bytes), record_bytes.data());
+        std::array<cl_int, 2> record_words{};
+        queue.enqueueReadBuffer(sizes, CL_TRUE, 0, sizeof(record_words), record_words.data());
 
         const cl::Context& context = session_->context();
-        path_bytes_ = paths * static_cast<std::uint64_t>(record_bytes[0]);
+        // Each array of words spans the launches' global size (wavefront.cl's WAVEFRONT_WORD).
+        const std::size_t slots = global_size_[0];
+        path_bytes_ = slots * static_cast<std::uint64_t>(record_words[0]) * sizeof(cl_float4);
         paths_ = cl::Buffer(context, CL_MEM_READ_WRITE, path_bytes_);
         for (cl::Buffer& q : queues_) q = cl::Buffer(context, CL_MEM_READ_WRITE, paths * sizeof(cl_int));
         counts_ = cl::Buffer(context, CL_MEM_READ_WRITE, kCounts * sizeof(cl_int));
         hits_ = cl::Buffer(context, CL_MEM_READ_WRITE, paths * 2 * sizeof(cl_int));
-        shadow_rays_ = cl::Buffer(context, CL_MEM_READ_WRITE, paths * static_cast<std::size_t>(record_bytes[1]));
+        shadow_rays_ = cl::Buffer(context, CL_MEM_READ_WRITE,
+                                  slots * static_cast<std::size_t>(record_words[1]) * sizeof(cl_float4));
         radiance_ = cl::Buffer(context, CL_MEM_READ_WRITE, paths * 4 * sizeof(cl_float));
 
         scene_buffers_ = upload_scene(context, scene.tables);
