@@ -3,38 +3,35 @@
 // at large N, switch"). Built only with -DORB_WAVEFRONT=1, by
 // librender/src/wavefront_renderer.h; not used for rendering.
 //
-// The path tracer is render_pass's own, cut at its ray casts. There are a
-// few path slots per pixel; each renders a run of its pixel's samples one
-// after the other, and a path that ends hands its slot to the next sample
-// at once (as render_pass regenerates paths), so the queues stay full. Each
-// iteration runs three kernels over the queue of live paths:
+// The path tracer is render_pass's own, cut at its ray casts: one path per
+// pixel of a wave (one sample of every pixel), its state in global memory,
+// and per scattering event three kernels over a queue of live paths:
 //   wavefront_intersect  casts each queued path's ray (closest hit);
 //   wavefront_shade      follow_hit (integrator.cl) on that hit: emission,
 //                        the next-event estimate, whose shadow ray it queues
-//                        instead of casting, and the next direction (or the
-//                        slot's next camera ray); live paths go to the next queue;
+//                        instead of casting, and the next direction; live
+//                        paths go to the next queue;
 //   wavefront_shadow     casts the queued shadow rays (any hit) and adds the
 //                        estimates of those that reach their light.
-// wavefront_begin starts every slot's first camera path. The numbers a path
-// draws are render_pass's (the same pixel, sample index and blocks), so the
-// prototype renders the very samples render_pass renders for those sample
-// indices; only the order in which a sample's terms are summed differs. Each
-// slot sums its radiance in its own place; the host adds a pixel's slots.
+// wavefront_begin starts a wave's camera paths. The numbers a path draws are
+// render_pass's (the same pixel, sample index and blocks), so a wave renders
+// the very samples render_pass renders for that sample index; only the order
+// in which a sample's terms are summed differs. Each path sums its radiance
+// in its own slot; the host adds a pixel's slots.
 //
 // The paths' state is kept as arrays of float4, one array per group of
 // fields (structure of arrays): the 32 work-items of a warp then read and
 // write neighbouring 16-byte words, and the intersection kernel reads only
 // the ray's two words. Array k of a buffer starts at k * get_global_size(0),
-// the same for every kernel. (An array of 144-byte structs made the
-// prototype 1.5 to 3 times slower on an H100: docs/performance.md.)
+// the same for every kernel of a wave.
 //
 // Queues are compacted with atomic counters (counts[]: the two path queues'
-// lengths and the shadow queue's). Each kernel is launched over every slot
-// and items past the queue's length return at once, so the host waits for a
-// count only now and then, to stop. A slot's radiance is written by at most
-// one work-item per launch (one shadow ray per path per iteration), so no
-// atomics are needed there. Global mode only: direct mode's estimate loops
-// over every light, which would need a shadow ray per light.
+// lengths and the shadow queue's). Each kernel is launched over every pixel
+// and items past the queue's length return at once, so the host never waits
+// for a count. A path's radiance slot is written by at most one work-item
+// per launch (one shadow ray per path per event), so no atomics are needed there.
+// Global mode only: direct mode's estimate loops over every light, which
+// would need a shadow ray per light.
 
 #if ORB_WAVEFRONT
 // The float4 words of one path's state (PathState and SampleCoords):
@@ -61,7 +58,7 @@ __kernel void wavefront_record_sizes(__global int* sizes)
     sizes[1] = WAVEFRONT_SHADOW_WORDS;
 }
 
-// Indices into counts[]: two path queues (iterations alternate between them)
+// Indices into counts[]: two path queues (a wave alternates between them)
 // and the shadow queue.
 #define WAVEFRONT_SHADOW_COUNT 2
 
@@ -124,8 +121,7 @@ inline SampleCoords load_coords(__global const float4* state, int p, uint2 seed)
     return c;
 }
 
-// Path slot p is pixel p % pixels; its samples are first_sample + p / pixels
-// and every paths_per_pixel-th after it (wavefront_shade starts them).
+// Path p of a wave is pixel p % pixels, sample first_sample + p / pixels.
 __kernel void wavefront_begin(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG),
                               __global float4* state, __global int* queue, int paths_per_pixel)
 {
@@ -164,16 +160,14 @@ __kernel void wavefront_intersect(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG,
 __kernel void wavefront_shade(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG),
                               __global float4* state, __global const int* queue, __global int* next_queue,
                               __global int* counts, int queue_slot, int next_slot, __global const int2* hits,
-                              __global float4* shadow_rays, __global float4* radiance, int paths_per_pixel,
-                              int samples_per_slot)
+                              __global float4* shadow_rays, __global float4* radiance)
 {
     const int i = get_global_id(0);
     if (i >= counts[queue_slot]) return;
     ORB_SCENE_VIEW_OF_ARGUMENTS
     const int p = queue[i];
     PathState path = load_path(state, p);
-    const uint2 seed = (uint2)(params.settings.seed_lo, params.settings.seed_hi);
-    SampleCoords coords = load_coords(state, p, seed);
+    const SampleCoords coords = load_coords(state, p, (uint2)(params.settings.seed_lo, params.settings.seed_hi));
     const int2 packed = hits[p];
     Hit hit;
     hit.id = packed.x;
@@ -186,7 +180,7 @@ __kernel void wavefront_shade(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB
     PathSample s;
     s.emission = s.direct = s.indirect = s.albedo = s.normal = (float3)(0.0f);
     s.alpha = 0.0f;
-    bool alive = follow_hit(&scene, &path, &s, &coords, hit, params.settings.max_depth, params.settings.mode);
+    const bool alive = follow_hit(&scene, &path, &s, &coords, hit, params.settings.max_depth, params.settings.mode);
 
     // render_pass drops a sample whose radiance is not finite; here, the term.
     const float3 term = (s.emission + s.direct) + s.indirect;
@@ -196,22 +190,6 @@ __kernel void wavefront_shade(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB
         WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_ORIGIN, k) = (float4)(shading_point, as_float(hit.id));
         WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_DIRECTION, k) = (float4)(shadow.direction, as_float(shadow.light));
         WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_CONTRIBUTION, k) = (float4)(shadow.contribution, as_float(p));
-    }
-    if (!alive) {
-        // Path regeneration, as render_pass's: the slot's next sample starts
-        // at once, its camera ray cast with the other paths' next rays.
-        const ulong first_sample = ((ulong)params.pass.first_sample_hi << 32) | (ulong)params.pass.first_sample_lo;
-        const int pixels = params.settings.width * params.settings.height;
-        const ulong next = coords.sample + (ulong)paths_per_pixel;
-        if (next < first_sample + (ulong)(p / pixels) + (ulong)samples_per_slot * (ulong)paths_per_pixel) {
-            const uint pixel = coords.pixel;
-            coords = sample_coords(sampler_pixel_key(pixel, seed), pixel, next, seed);
-            const CameraParams cam = params.camera;
-            begin_camera_path(&cam, (int)pixel % params.settings.width, (int)pixel / params.settings.width,
-                              params.settings.width, params.settings.height, &coords, &path, &s);
-            store_coords(state, p, &coords);
-            alive = true;
-        }
     }
     if (alive) {
         store_path(state, p, &path);

@@ -71,7 +71,7 @@ WavefrontRenderer::WavefrontRenderer(std::shared_ptr<DeviceSession> session, con
         shadow_ = cl::Kernel(program, "wavefront_shadow");
         bind_buffers(begin_, film_, scene_buffers_, 3);
         bind_buffers(intersect_, film_, scene_buffers_, 5);
-        bind_buffers(shade_, film_, scene_buffers_, 11);
+        bind_buffers(shade_, film_, scene_buffers_, 9);
         bind_buffers(shadow_, film_, scene_buffers_, 3);
         bind_own(begin_, paths_, queues_[0], paths_per_pixel_);
         bind_own(shadow_, shadow_rays_, counts_, radiance_);
@@ -108,12 +108,11 @@ void WavefrontRenderer::clear()
     }
 }
 
-void WavefrontRenderer::enqueue_run(std::uint64_t first_sample, int samples_per_slot, RunProfile* profile)
+void WavefrontRenderer::enqueue_wave(std::uint64_t first_sample, WaveProfile* profile)
 {
     cl::CommandQueue& queue = session_->queue();
     auto start = std::chrono::steady_clock::now();
-    // Without a profile nothing waits but the check for an empty queue; with
-    // one, each step is timed to its end.
+    // Without a profile, nothing waits; with one, each step is timed to its end.
     const auto timed = [&](double* seconds) {
         if (!profile) return;
         queue.finish();
@@ -121,67 +120,59 @@ void WavefrontRenderer::enqueue_run(std::uint64_t first_sample, int samples_per_
         *seconds += std::chrono::duration<double>(now - start).count();
         start = now;
     };
-    const auto read_count = [&](int slot) {
+    const auto read_count = [&](int slot, std::vector<int>& into) {
+        if (!profile) return;
         cl_int count = 0;
         queue.enqueueReadBuffer(counts_, CL_TRUE, slot * sizeof(cl_int), sizeof(cl_int), &count);
+        into.push_back(count);
         start = std::chrono::steady_clock::now();
-        return count;
     };
     const cl_int paths = pixels_ * paths_per_pixel_;
     params_.pass.first_sample_lo = static_cast<device::uint>(first_sample & 0xffffffffu);
     params_.pass.first_sample_hi = static_cast<device::uint>(first_sample >> 32);
     bind_params(begin_, params_);
-    bind_params(shade_, params_);
     if (profile) queue.finish(), start = std::chrono::steady_clock::now();
     queue.enqueueFillBuffer(counts_, paths, 0, sizeof(cl_int));
     queue.enqueueNDRangeKernel(begin_, cl::NullRange, global_size_, cl::NDRange(kGroup));
     timed(profile ? &profile->begin : nullptr);
-    // Every iteration moves each live path one ray on (or to its slot's next
-    // sample), so a slot's run ends within samples_per_slot * (max_depth + 1)
-    // iterations. The queue's length is read every few iterations to stop
-    // once it is empty (every iteration when profiling).
-    constexpr int kIterationsPerCheck = 8;
-    const long long limit = static_cast<long long>(samples_per_slot) * (max_depth_ + 1);
-    for (long long iteration = 0;; ++iteration) {
-        const int in = static_cast<int>(iteration % 2), out = 1 - in;
-        if (profile || iteration >= limit || (iteration > 0 && iteration % kIterationsPerCheck == 0)) {
-            const int live = read_count(in);
-            if (live == 0) break;
-            if (iteration >= limit) throw std::logic_error("the wavefront renderer's paths did not end");
-            if (profile) profile->paths.push_back(live);
-        }
+    // The ray leaving scattering event max_depth is still cast, for the
+    // emission it may hit: max_depth + 1 casts at most.
+    for (int event = 0; event <= max_depth_; ++event) {
+        const int in = event % 2, out = 1 - in;
+        if (profile) read_count(in, profile->paths);
         bind_own(intersect_, paths_, queues_[in], counts_, in, hits_);
         queue.enqueueNDRangeKernel(intersect_, cl::NullRange, global_size_, cl::NDRange(kGroup));
         timed(profile ? &profile->intersect : nullptr);
         queue.enqueueFillBuffer(counts_, cl_int(0), out * sizeof(cl_int), sizeof(cl_int));
         queue.enqueueFillBuffer(counts_, cl_int(0), kShadowCount * sizeof(cl_int), sizeof(cl_int));
-        bind_own(shade_, paths_, queues_[in], queues_[out], counts_, in, out, hits_, shadow_rays_, radiance_,
-                 paths_per_pixel_, samples_per_slot);
+        bind_own(shade_, paths_, queues_[in], queues_[out], counts_, in, out, hits_, shadow_rays_, radiance_);
         queue.enqueueNDRangeKernel(shade_, cl::NullRange, global_size_, cl::NDRange(kGroup));
         timed(profile ? &profile->shade : nullptr);
-        if (profile) profile->shadow_rays.push_back(read_count(kShadowCount));
+        if (profile) read_count(kShadowCount, profile->shadow_rays);
         queue.enqueueNDRangeKernel(shadow_, cl::NullRange, global_size_, cl::NDRange(kGroup));
         timed(profile ? &profile->shadow : nullptr);
     }
 }
 
-WavefrontRenderer::RunProfile WavefrontRenderer::profile_run(std::uint64_t first_sample, int samples_per_slot)
+WavefrontRenderer::WaveProfile WavefrontRenderer::profile_wave(std::uint64_t first_sample)
 {
-    RunProfile profile;
+    WaveProfile profile;
     try {
-        enqueue_run(first_sample, samples_per_slot, &profile);
+        enqueue_wave(first_sample, &profile);
     } catch (const cl::Error& error) {
-        fail(error, "a profiled run");
+        fail(error, "a profiled wave");
     }
     return profile;
 }
 
-void WavefrontRenderer::enqueue(std::uint64_t first_sample, int samples_per_slot)
+void WavefrontRenderer::enqueue(std::uint64_t first_sample, int waves)
 {
     try {
-        enqueue_run(first_sample, samples_per_slot, nullptr);
+        for (int w = 0; w < waves; ++w)
+            enqueue_wave(first_sample + static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(paths_per_pixel_));
+        session_->queue().flush();
     } catch (const cl::Error& error) {
-        fail(error, "a run of samples");
+        fail(error, "a wave");
     }
 }
 
@@ -190,7 +181,7 @@ void WavefrontRenderer::finish()
     try {
         session_->queue().finish();
     } catch (const cl::Error& error) {
-        fail(error, "waiting for the samples");
+        fail(error, "waiting for the waves");
     }
 }
 

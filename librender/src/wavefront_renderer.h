@@ -1,7 +1,8 @@
 // A wavefront path tracer built from render_pass's own code
 // (kernels/wavefront.cl), for measuring whether a wavefront design beats
 // the megakernel (docs/performance.md, "A wavefront renderer, measured").
-// Not used for rendering: it computes the radiance alone, in global mode.
+// Not used for rendering: it computes the radiance alone, in global mode,
+// `paths_per_pixel` samples of every pixel per wave.
 #pragma once
 
 #include <cstdint>
@@ -22,20 +23,18 @@ class WavefrontRenderer {
 public:
     // Builds the wavefront kernels with the options render_pass gets for
     // `scene` and `config` on the session's device, plus `extra_options`,
-    // and allocates `paths_per_pixel` path slots per pixel (more of them
-    // make each launch longer against its fixed cost). Throws
+    // and allocates `paths_per_pixel` paths per pixel (a wave's paths: more
+    // of them make each launch longer against its fixed cost). Throws
     // std::invalid_argument for direct mode, std::runtime_error when
     // building or allocating fails.
     WavefrontRenderer(std::shared_ptr<DeviceSession> session, const SceneLayout& scene,
                       const device::CameraParams& camera, const RenderConfig& config, int paths_per_pixel = 1,
                       const std::string& extra_options = "");
 
-    // Renders samples_per_slot samples in each path slot: with P paths per
-    // pixel, the samples first_sample to first_sample + P * samples_per_slot
-    // - 1 of every pixel, adding their radiance to the sums. Returns when
-    // the device has been given the last of the work (it reads a queue's
-    // length now and then to know that).
-    void enqueue(std::uint64_t first_sample, int samples_per_slot);
+    // Enqueues waves of samples from `first_sample` on, `waves` of them,
+    // each of paths_per_pixel() samples per pixel, adding their radiance to
+    // the sums.
+    void enqueue(std::uint64_t first_sample, int waves);
     int paths_per_pixel() const { return paths_per_pixel_; }
     void finish();
     // Every pixel's summed radiance, rgb, rows from the top; waits for the device.
@@ -44,18 +43,19 @@ public:
 
     std::uint64_t path_state_bytes() const { return path_bytes_; }
 
-    // enqueue(), waiting for each launch to end, with the seconds each kind
-    // of kernel took and the queues' lengths: where the time goes.
-    struct RunProfile {
+    // One wave from `first_sample`, waiting for each launch to end, with
+    // the seconds each kind of kernel took and the queues' lengths: where a
+    // wave's time goes. The radiance is added to the sums as by enqueue().
+    struct WaveProfile {
         double begin = 0, intersect = 0, shade = 0, shadow = 0;  // seconds, counter resets with shade
-        std::vector<int> paths;        // rays cast at each iteration
-        std::vector<int> shadow_rays;  // shadow rays cast at each iteration
+        std::vector<int> paths;        // paths cast at each scattering event (0: camera rays)
+        std::vector<int> shadow_rays;  // shadow rays cast after each event's shading
     };
-    RunProfile profile_run(std::uint64_t first_sample, int samples_per_slot);
+    WaveProfile profile_wave(std::uint64_t first_sample);
 
 private:
     // With `profile`, waits for each launch and fills it in.
-    void enqueue_run(std::uint64_t first_sample, int samples_per_slot, RunProfile* profile);
+    void enqueue_wave(std::uint64_t first_sample, WaveProfile* profile = nullptr);
     [[noreturn]] void fail(const cl::Error& error, const std::string& what) const;
 
     std::shared_ptr<DeviceSession> session_;

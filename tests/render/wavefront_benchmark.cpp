@@ -6,16 +6,12 @@
 //   build/bin/orb-wavefront-benchmark SCENE [--device SEL] [--width W] [--height H] [--seconds S]
 //       [--rounds R] [--paths-per-pixel K] [--sampler sobol|independent] [--options "CL OPTIONS"]
 //
-// K path slots per pixel (default 1) each render a run of samples.
-//
 // Each round times render_pass (only the beauty layer's channels built, as
 // `orb-render --passes beauty`) and then the wavefront renderer for S
 // seconds each (default 2, 1920x1080, 2 rounds), after a warm-up, and
 // prints both in samples per second. Both render the same samples of the
 // same estimator (global mode, the scene's depth), so the mean radiance of
-// the two images, printed too, must agree within noise. Then a short
-// profiled run: the time per kind of kernel, the rays per sample, and how
-// many paths are live at each iteration.
+// the two images, printed too, must agree within noise.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -153,22 +149,25 @@ int main(int argc, char** argv)
                         wave_rate / mega_rate);
             std::fflush(stdout);
         }
-        // Where the time goes: each launch waited for (so slower than the
-        // rates above), over a run of a few samples per slot.
-        constexpr int kProfiledSamples = 4;
-        const WavefrontRenderer::RunProfile profile = wavefront.profile_run(0, kProfiledSamples);
-        const double samples = static_cast<double>(pixels) * wavefront.paths_per_pixel() * kProfiledSamples;
-        std::printf("profiled run (%d samples per slot, %zu iterations), ns per sample: begin %.3f, intersect %.3f, "
-                    "shade %.3f, shadow %.3f\n",
-                    kProfiledSamples, profile.paths.size(), 1e9 * profile.begin / samples,
-                    1e9 * profile.intersect / samples, 1e9 * profile.shade / samples, 1e9 * profile.shadow / samples);
-        const double slots = static_cast<double>(pixels) * wavefront.paths_per_pixel();
-        double rays = 0, shadow_rays = 0;
-        for (int n : profile.paths) rays += n;
-        for (int n : profile.shadow_rays) shadow_rays += n;
-        std::printf("rays per sample: closest hits %.3f, shadow rays %.3f; live paths per slot by iteration:",
-                    rays / samples, shadow_rays / samples);
-        for (int n : profile.paths) std::printf(" %.3f", n / slots);
+        // Where a wave's time goes: each launch waited for (so slower than
+        // the rates above), averaged over a few waves.
+        constexpr int kProfiledWaves = 4;
+        WavefrontRenderer::WaveProfile total;
+        for (int w = 0; w < kProfiledWaves; ++w) {
+            const WavefrontRenderer::WaveProfile p =
+                wavefront.profile_wave(static_cast<std::uint64_t>(w) * wavefront.paths_per_pixel());
+            total.begin += p.begin, total.intersect += p.intersect, total.shade += p.shade, total.shadow += p.shadow;
+            if (w == 0) total.paths = p.paths, total.shadow_rays = p.shadow_rays;
+        }
+        const double samples = static_cast<double>(pixels) * wavefront.paths_per_pixel() * kProfiledWaves;
+        std::printf("profiled waves, ns per sample: begin %.3f, intersect %.3f, shade %.3f, shadow %.3f\n",
+                    1e9 * total.begin / samples, 1e9 * total.intersect / samples, 1e9 * total.shade / samples,
+                    1e9 * total.shadow / samples);
+        const double wave_paths = static_cast<double>(pixels) * wavefront.paths_per_pixel();
+        std::printf("rays per sample (first wave), closest hits by event:");
+        for (int n : total.paths) std::printf(" %.3f", n / wave_paths);
+        std::printf("; shadow rays by event:");
+        for (int n : total.shadow_rays) std::printf(" %.3f", n / wave_paths);
         std::printf("\n");
     } catch (const std::exception& error) {
         std::cerr << "orb-wavefront-benchmark: error: " << error.what() << "\n";
