@@ -34,14 +34,16 @@
 // would need a shadow ray per light.
 
 #if ORB_WAVEFRONT
-// The float4 words of one path's state (PathState and SampleCoords):
+// The float4 words of one path's state (PathState and SampleCoords). The
+// fields a stored path always has equal are kept once: from_point is the
+// ray's origin and from_self the sphere it leaves (follow_hit sets both to
+// the shading point and its sphere, begin_path to the camera and -1), and
+// the pixel is the slot's.
 #define WAVEFRONT_RAY_ORIGIN 0  // o, self
-#define WAVEFRONT_RAY_DIRECTION 1  // d, depth
+#define WAVEFRONT_RAY_DIRECTION 1  // d, depth | nondelta_vertices << 8 | albedo_set << 16 | from_density << 17
 #define WAVEFRONT_THROUGHPUT 2  // beta, eta2
-#define WAVEFRONT_FROM_POINT 3  // from_point, from_self
-#define WAVEFRONT_FLAGS 4  // from_pdf, nondelta_vertices, albedo_set | from_density << 1, unused
-#define WAVEFRONT_COORDS 5  // pixel, sample (low, high), the Sobol key (0 for the independent sampler)
-#define WAVEFRONT_PATH_WORDS 6
+#define WAVEFRONT_SAMPLE 3  // from_pdf, sample (low, high), the Sobol key (0 for the independent sampler)
+#define WAVEFRONT_PATH_WORDS 4
 // ... and of a queued shadow ray:
 #define WAVEFRONT_SHADOW_ORIGIN 0  // the shading point, the sphere it leaves
 #define WAVEFRONT_SHADOW_DIRECTION 1  // direction, the light's sphere slot (-1 the environment)
@@ -62,63 +64,48 @@ __kernel void wavefront_record_sizes(__global int* sizes)
 // and the shadow queue.
 #define WAVEFRONT_SHADOW_COUNT 2
 
-inline void store_path(__global float4* state, int p, const PathState* path)
-{
-    WAVEFRONT_WORD(state, WAVEFRONT_RAY_ORIGIN, p) = (float4)(path->o, as_float(path->self));
-    WAVEFRONT_WORD(state, WAVEFRONT_RAY_DIRECTION, p) = (float4)(path->d, as_float(path->depth));
-    WAVEFRONT_WORD(state, WAVEFRONT_THROUGHPUT, p) = (float4)(path->beta, path->eta2);
-    WAVEFRONT_WORD(state, WAVEFRONT_FROM_POINT, p) = (float4)(path->from_point, as_float(path->from_self));
-    WAVEFRONT_WORD(state, WAVEFRONT_FLAGS, p) =
-        (float4)(path->from_pdf, as_float(path->nondelta_vertices),
-                 as_float((path->albedo_set ? 1 : 0) | (path->from_density ? 2 : 0)), 0.0f);
-}
-
-inline PathState load_path(__global const float4* state, int p)
-{
-    PathState path;
-    const float4 origin = WAVEFRONT_WORD(state, WAVEFRONT_RAY_ORIGIN, p);
-    const float4 direction = WAVEFRONT_WORD(state, WAVEFRONT_RAY_DIRECTION, p);
-    const float4 throughput = WAVEFRONT_WORD(state, WAVEFRONT_THROUGHPUT, p);
-    const float4 from = WAVEFRONT_WORD(state, WAVEFRONT_FROM_POINT, p);
-    const float4 flags = WAVEFRONT_WORD(state, WAVEFRONT_FLAGS, p);
-    path.o = origin.xyz;
-    path.self = as_int(origin.w);
-    path.d = direction.xyz;
-    path.depth = as_int(direction.w);
-    path.beta = throughput.xyz;
-    path.eta2 = throughput.w;
-    path.from_point = from.xyz;
-    path.from_self = as_int(from.w);
-    path.from_pdf = flags.x;
-    path.nondelta_vertices = as_int(flags.y);
-    path.albedo_set = (as_int(flags.z) & 1) != 0;
-    path.from_density = (as_int(flags.z) & 2) != 0;
-    return path;
-}
-
-inline void store_coords(__global float4* state, int p, const SampleCoords* c)
+inline void store_path(__global float4* state, int p, const PathState* path, const SampleCoords* c)
 {
 #if ORB_SAMPLER_SOBOL
     const uint key = c->key;
 #else
     const uint key = 0u;
 #endif
-    WAVEFRONT_WORD(state, WAVEFRONT_COORDS, p) =
-        as_float4((uint4)(c->pixel, (uint)c->sample, (uint)(c->sample >> 32), key));
+    const int packed = path->depth | (path->nondelta_vertices << 8) | (path->albedo_set ? 1 << 16 : 0) |
+                       (path->from_density ? 1 << 17 : 0);
+    WAVEFRONT_WORD(state, WAVEFRONT_RAY_ORIGIN, p) = (float4)(path->o, as_float(path->self));
+    WAVEFRONT_WORD(state, WAVEFRONT_RAY_DIRECTION, p) = (float4)(path->d, as_float(packed));
+    WAVEFRONT_WORD(state, WAVEFRONT_THROUGHPUT, p) = (float4)(path->beta, path->eta2);
+    WAVEFRONT_WORD(state, WAVEFRONT_SAMPLE, p) =
+        (float4)(path->from_pdf, as_float((uint)c->sample), as_float((uint)(c->sample >> 32)), as_float(key));
 }
 
-inline SampleCoords load_coords(__global const float4* state, int p, uint2 seed)
+inline void load_path(__global const float4* state, int p, uint pixel, uint2 seed, PathState* path, SampleCoords* c)
 {
-    const uint4 w = as_uint4(WAVEFRONT_WORD(state, WAVEFRONT_COORDS, p));
-    SampleCoords c;
-    c.pixel = w.x;
-    c.sample = ((ulong)w.z << 32) | (ulong)w.y;
-    c.seed = seed;
+    const float4 origin = WAVEFRONT_WORD(state, WAVEFRONT_RAY_ORIGIN, p);
+    const float4 direction = WAVEFRONT_WORD(state, WAVEFRONT_RAY_DIRECTION, p);
+    const float4 throughput = WAVEFRONT_WORD(state, WAVEFRONT_THROUGHPUT, p);
+    const float4 sample = WAVEFRONT_WORD(state, WAVEFRONT_SAMPLE, p);
+    const int packed = as_int(direction.w);
+    path->o = origin.xyz;
+    path->self = as_int(origin.w);
+    path->d = direction.xyz;
+    path->depth = packed & 0xff;
+    path->nondelta_vertices = (packed >> 8) & 0xff;
+    path->albedo_set = (packed & (1 << 16)) != 0;
+    path->from_density = (packed & (1 << 17)) != 0;
+    path->beta = throughput.xyz;
+    path->eta2 = throughput.w;
+    path->from_point = path->o;
+    path->from_self = path->self;
+    path->from_pdf = sample.x;
+    c->pixel = pixel;
+    c->sample = ((ulong)as_uint(sample.z) << 32) | (ulong)as_uint(sample.y);
+    c->seed = seed;
 #if ORB_SAMPLER_SOBOL
-    c.key = w.w;
-    c.i_reversed = reverse_bits32(w.y);
+    c->key = as_uint(sample.w);
+    c->i_reversed = reverse_bits32(as_uint(sample.y));
 #endif
-    return c;
 }
 
 // Path p of a wave is pixel p % pixels, sample first_sample + p / pixels.
@@ -138,8 +125,7 @@ __kernel void wavefront_begin(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB
     const SampleCoords coords =
         sample_coords(sampler_pixel_key((uint)pixel, seed), (uint)pixel, first_sample + (ulong)(p / pixels), seed);
     begin_camera_path(&cam, pixel % width, pixel / width, width, params.settings.height, &coords, &path, &unused);
-    store_path(state, p, &path);
-    store_coords(state, p, &coords);
+    store_path(state, p, &path, &coords);
     queue[p] = p;
 }
 
@@ -166,8 +152,10 @@ __kernel void wavefront_shade(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB
     if (i >= counts[queue_slot]) return;
     ORB_SCENE_VIEW_OF_ARGUMENTS
     const int p = queue[i];
-    PathState path = load_path(state, p);
-    const SampleCoords coords = load_coords(state, p, (uint2)(params.settings.seed_lo, params.settings.seed_hi));
+    PathState path;
+    SampleCoords coords;
+    load_path(state, p, (uint)(p % (params.settings.width * params.settings.height)),
+              (uint2)(params.settings.seed_lo, params.settings.seed_hi), &path, &coords);
     const int2 packed = hits[p];
     Hit hit;
     hit.id = packed.x;
@@ -192,7 +180,7 @@ __kernel void wavefront_shade(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB
         WAVEFRONT_WORD(shadow_rays, WAVEFRONT_SHADOW_CONTRIBUTION, k) = (float4)(shadow.contribution, as_float(p));
     }
     if (alive) {
-        store_path(state, p, &path);
+        store_path(state, p, &path, &coords);
         next_queue[atomic_inc(&counts[next_slot])] = p;
     }
 }
