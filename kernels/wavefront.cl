@@ -1,11 +1,13 @@
 // A wavefront form of render_pass, for measuring whether one would beat the
 // megakernel (issue 9 §5: "if a wavefront design ... beats the megakernel
-// at large N, switch"). Built only with -DORB_WAVEFRONT=1, by
-// librender/src/wavefront_renderer.h; not used for rendering.
+// at large N, switch"; docs/performance.md, "A wavefront renderer,
+// measured": it does not within the memory issue 9 allows). Built only with
+// -DORB_WAVEFRONT=1, by librender/src/wavefront_renderer.h; not used for rendering.
 //
-// The path tracer is render_pass's own, cut at its ray casts: one path per
-// pixel of a wave (one sample of every pixel), its state in global memory,
-// and per scattering event three kernels over a queue of live paths:
+// The path tracer is render_pass's own, cut at its ray casts. A wave is a
+// few samples of every pixel, one path slot each, the paths' state in
+// global memory; per scattering event three kernels run over a queue of
+// live paths:
 //   wavefront_intersect  casts each queued path's ray (closest hit);
 //   wavefront_shade      follow_hit (integrator.cl) on that hit: emission,
 //                        the next-event estimate, whose shadow ray it queues
@@ -15,23 +17,26 @@
 //                        estimates of those that reach their light.
 // wavefront_begin starts a wave's camera paths. The numbers a path draws are
 // render_pass's (the same pixel, sample index and blocks), so a wave renders
-// the very samples render_pass renders for that sample index; only the order
-// in which a sample's terms are summed differs. Each path sums its radiance
-// in its own slot; the host adds a pixel's slots.
+// the very samples render_pass renders for those sample indices; only the
+// order in which a sample's terms are summed differs. Each path sums its
+// radiance in its own slot; the host adds a pixel's slots. (Handing a
+// finished path's slot to the pixel's next sample at once, as render_pass
+// does, was slower: benchmarks/2026-11-24-gpu/wavefront-regeneration.patch.)
 //
 // The paths' state is kept as arrays of float4, one array per group of
 // fields (structure of arrays): the 32 work-items of a warp then read and
 // write neighbouring 16-byte words, and the intersection kernel reads only
 // the ray's two words. Array k of a buffer starts at k * get_global_size(0),
-// the same for every kernel of a wave.
+// the same for every kernel of a wave. (An array of 144-byte structs made
+// the prototype 1.5 to 3 times slower on an H100.)
 //
 // Queues are compacted with atomic counters (counts[]: the two path queues'
-// lengths and the shadow queue's). Each kernel is launched over every pixel
+// lengths and the shadow queue's). Each kernel is launched over every slot
 // and items past the queue's length return at once, so the host never waits
-// for a count. A path's radiance slot is written by at most one work-item
-// per launch (one shadow ray per path per event), so no atomics are needed there.
-// Global mode only: direct mode's estimate loops over every light, which
-// would need a shadow ray per light.
+// for a count. A slot's radiance is written by at most one work-item per
+// launch (one shadow ray per path per event), so no atomics are needed
+// there. Global mode only: direct mode's estimate loops over every light,
+// which would need a shadow ray per light.
 
 #if ORB_WAVEFRONT
 // The float4 words of one path's state (PathState and SampleCoords). The
