@@ -327,6 +327,9 @@ inline FilmCentre film_centre_ray(const SceneView* scene, const CameraParams* ca
     scene.bvh_node_count = params.scene.bvh_node_count;                                              \
     scene.caster_count = params.scene.caster_count;                                                  \
     scene.environment = params.environment;
+// Not in the wavefront prototype's program, whose next-event estimates queue
+// their shadow rays instead of casting them (wavefront.cl).
+#if !ORB_WAVEFRONT
 __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG))
 {
     const int width = params.settings.width;
@@ -379,3 +382,4 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     }
     ORB_FILM_ADD_SUMS
 }
+#endif
