@@ -59,10 +59,10 @@
 #define WAVEFRONT_WORD(buffer, k, i) (buffer)[(size_t)(k) * get_global_size(0) + (size_t)(i)]
 
 // The number of float4 words per path and per shadow ray, for the host's allocations.
-__kernel void wavefront_record_sizes(__global int* sizes)
+__kernel void wavefront_record_words(__global int* words)
 {
-    sizes[0] = WAVEFRONT_PATH_WORDS;
-    sizes[1] = WAVEFRONT_SHADOW_WORDS;
+    words[0] = WAVEFRONT_PATH_WORDS;
+    words[1] = WAVEFRONT_SHADOW_WORDS;
 }
 
 // Indices into counts[]: two path queues (a wave alternates between them)

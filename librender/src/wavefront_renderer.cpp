@@ -44,13 +44,13 @@ WavefrontRenderer::WavefrontRenderer(std::shared_ptr<DeviceSession> session, con
     global_size_ = cl::NDRange((paths + kGroup - 1) / kGroup * kGroup);
     try {
         // The float4 words per path and per shadow ray (kernels/wavefront.cl).
-        cl::Kernel sizes_kernel(program, "wavefront_record_sizes");
-        cl::Buffer sizes(session_->context(), CL_MEM_WRITE_ONLY, 2 * sizeof(cl_int));
-        sizes_kernel.setArg(0, sizes);
+        cl::Kernel words_kernel(program, "wavefront_record_words");
+        cl::Buffer words(session_->context(), CL_MEM_WRITE_ONLY, 2 * sizeof(cl_int));
+        words_kernel.setArg(0, words);
         cl::CommandQueue& queue = session_->queue();
-        queue.enqueueTask(sizes_kernel);
+        queue.enqueueTask(words_kernel);
         std::array<cl_int, 2> record_words{};
-        queue.enqueueReadBuffer(sizes, CL_TRUE, 0, sizeof(record_words), record_words.data());
+        queue.enqueueReadBuffer(words, CL_TRUE, 0, sizeof(record_words), record_words.data());
 
         const cl::Context& context = session_->context();
         // Each array of words spans the launches' global size (wavefront.cl's WAVEFRONT_WORD).

@@ -47,6 +47,28 @@ RenderConfig small_config(int width, int height, std::uint64_t seed, int max_dep
     return config;
 }
 
+Scene every_branch_scene()
+{
+    Scene scene;
+    scene.camera.position = {0.0, 2.0, 7.0};
+    scene.camera.target = {0.0, 0.8, 0.0};
+    scene.camera.vfov_deg = 45.0;
+    scene.camera.aperture = 0.1;
+    scene.camera.focus_distance = 7.0;
+    const auto floor = add_material(scene, MaterialType::Diffuse, {0.7, 0.7, 0.7});
+    const auto red = add_material(scene, MaterialType::Diffuse, {0.8, 0.2, 0.2});
+    const auto mirror = add_material(scene, MaterialType::Mirror, {0.9, 0.9, 0.9});
+    const auto glass = add_material(scene, MaterialType::Dielectric, {1.0, 0.95, 0.9}, {0, 0, 0}, 1.5);
+    add_sphere(scene, {0.0, -1e4, 0.0}, 1e4, floor);
+    add_sphere(scene, {-1.6, 0.7, 0.0}, 0.7, red);
+    add_sphere(scene, {0.0, 0.7, -0.5}, 0.7, mirror);
+    add_sphere(scene, {1.6, 0.7, 0.4}, 0.7, glass);
+    add_sphere(scene, {-2.0, 4.0, 1.0}, 0.4, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {20, 18, 16}));
+    add_sphere(scene, {2.5, 3.0, -1.0}, 0.3, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {4, 6, 8}));
+    add_sphere(scene, {0.0, 5.0, -2.0}, 0.8, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {1, 1, 1}));
+    return scene;
+}
+
 Film render(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes)
 {
     Renderer renderer(scene, config);

@@ -15,6 +15,11 @@ std::uint32_t add_material(Scene& scene, MaterialType type, Vec3 color, Vec3 emi
 // Adds a sphere and returns its index.
 int add_sphere(Scene& scene, Vec3 centre, double radius, std::uint32_t material);
 
+// Diffuse, mirror and glass balls on a huge floor, three lights of unequal
+// power (the alias table picks them), seen through a thin lens: every branch
+// of the path tracer's kernels (simd_kernel_test.cpp, wavefront_test.cpp).
+Scene every_branch_scene();
+
 RenderConfig small_config(int width, int height, std::uint64_t seed = 7, int max_depth = 6,
                           IntegratorMode mode = IntegratorMode::Global);
 

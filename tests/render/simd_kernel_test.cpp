@@ -67,32 +67,9 @@ Film render_both_expecting_same_paths(const Scene& scene, const RenderConfig& co
     return simd;
 }
 
-// Diffuse, mirror and glass balls on a floor, three lights of unequal power
-// (the alias table picks them), seen through a thin lens: every branch of
-// render_pass_simd. 37 pixels per row leave the last work-item's lanes
-// partly outside the image.
-Scene every_branch_scene()
-{
-    Scene scene;
-    scene.camera.position = {0.0, 2.0, 7.0};
-    scene.camera.target = {0.0, 0.8, 0.0};
-    scene.camera.vfov_deg = 45.0;
-    scene.camera.aperture = 0.1;
-    scene.camera.focus_distance = 7.0;
-    const auto floor = add_material(scene, MaterialType::Diffuse, {0.7, 0.7, 0.7});
-    const auto red = add_material(scene, MaterialType::Diffuse, {0.8, 0.2, 0.2});
-    const auto mirror = add_material(scene, MaterialType::Mirror, {0.9, 0.9, 0.9});
-    const auto glass = add_material(scene, MaterialType::Dielectric, {1.0, 0.95, 0.9}, {0, 0, 0}, 1.5);
-    add_sphere(scene, {0.0, -1e4, 0.0}, 1e4, floor);
-    add_sphere(scene, {-1.6, 0.7, 0.0}, 0.7, red);
-    add_sphere(scene, {0.0, 0.7, -0.5}, 0.7, mirror);
-    add_sphere(scene, {1.6, 0.7, 0.4}, 0.7, glass);
-    add_sphere(scene, {-2.0, 4.0, 1.0}, 0.4, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {20, 18, 16}));
-    add_sphere(scene, {2.5, 3.0, -1.0}, 0.3, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {4, 6, 8}));
-    add_sphere(scene, {0.0, 5.0, -2.0}, 0.8, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {1, 1, 1}));
-    return scene;
-}
 
+// Every branch of render_pass_simd; 37 pixels per row leave the last
+// work-item's lanes partly outside the image.
 TEST(SimdKernel, SamePathsAsRenderPassOnEveryBranch)
 {
     const Scene scene = every_branch_scene();

@@ -21,28 +21,13 @@ using namespace orb::render::test;
 
 namespace {
 
-// Diffuse, mirror and glass balls on a huge floor (outside any tree), three
-// lights of unequal power (the alias table picks them), a thin lens; with
-// `cloud` small spheres among them, enough for a tree.
+// every_branch_scene() with `cloud` small diffuse and glass spheres among
+// its balls, enough for a tree.
 Scene scene_with(int cloud)
 {
-    Scene scene;
-    scene.camera.position = {0.0, 2.0, 7.0};
-    scene.camera.target = {0.0, 0.8, 0.0};
-    scene.camera.vfov_deg = 45.0;
-    scene.camera.aperture = 0.1;
-    scene.camera.focus_distance = 7.0;
-    const auto floor = add_material(scene, MaterialType::Diffuse, {0.7, 0.7, 0.7});
+    Scene scene = every_branch_scene();
     const auto red = add_material(scene, MaterialType::Diffuse, {0.8, 0.2, 0.2});
-    const auto mirror = add_material(scene, MaterialType::Mirror, {0.9, 0.9, 0.9});
     const auto glass = add_material(scene, MaterialType::Dielectric, {1.0, 0.95, 0.9}, {0, 0, 0}, 1.5);
-    add_sphere(scene, {0.0, -1e4, 0.0}, 1e4, floor);
-    add_sphere(scene, {-1.6, 0.7, 0.0}, 0.7, red);
-    add_sphere(scene, {0.0, 0.7, -0.5}, 0.7, mirror);
-    add_sphere(scene, {1.6, 0.7, 0.4}, 0.7, glass);
-    add_sphere(scene, {-2.0, 4.0, 1.0}, 0.4, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {20, 18, 16}));
-    add_sphere(scene, {2.5, 3.0, -1.0}, 0.3, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {4, 6, 8}));
-    add_sphere(scene, {0.0, 5.0, -2.0}, 0.8, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {1, 1, 1}));
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> xz(-3.0, 3.0), y(1.6, 3.0), r(0.02, 0.12);
     for (int i = 0; i < cloud; ++i) add_sphere(scene, {xz(rng), y(rng), xz(rng) - 1.0}, r(rng), i % 7 == 0 ? glass : red);
