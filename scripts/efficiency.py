@@ -142,17 +142,17 @@ def orb_curve(bin_dir: Path, scene: str, reference: str, width: int, height: int
     return curve
 
 
-def report(curves: list[Curve], pixels: int) -> list[dict]:
+def report(curves: list[Curve], pixels: int, targets: tuple[float, ...] = TARGETS) -> list[dict]:
     rows = []
     for c in curves:
         row = {"renderer": c.renderer, "scene": c.scene, "samples_per_second": c.samples_per_second(pixels),
                "relmse_x_seconds": c.error_times_seconds(),
                "rungs": [vars(r) for r in c.rungs]}
-        for t in TARGETS:
+        for t in targets:
             row[f"seconds_to_{t:g}"] = c.time_to(t)
         rows.append(row)
         reached = "  ".join(f"t({t:g})={row[f'seconds_to_{t:g}']:.2f}s" if row[f"seconds_to_{t:g}"] is not None
-                            else f"t({t:g})=not reached" for t in TARGETS)
+                            else f"t({t:g})=not reached" for t in targets)
         print(f"{c.renderer:8s} {Path(c.scene).name:20s} {row['samples_per_second'] / 1e6:7.3f} M samples/s  "
               f"{reached}  relMSE*s={row['relmse_x_seconds']:.3g}")
     return rows
