@@ -7,7 +7,8 @@
 # samples/s figure: independent sampler, the old roulette); plus a
 # converged reference from each build. The images come back as HALF EXRs
 # and are scored on the development machine with orb-diff
-# (scripts/efficiency.py --images).
+# (scripts/efficiency-rungs.py --reference; docs/performance.md, "Time to
+# equal error on the GPU, measured").
 set -uo pipefail
 source scripts/gpu-node-env.sh "$PWD/.gpu/b"
 W=/tmp/orb-eff
