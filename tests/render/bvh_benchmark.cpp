@@ -7,21 +7,16 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <random>
-#include <sstream>
 #include <string>
 
-#include "orb/scene/import.h"
+#include "benchmark_support.h"
 #include "sphere_bvh.h"
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using orb::bench::seconds_since;
 
 std::vector<orb::Sphere> random_spheres(std::size_t n)
 {
@@ -35,14 +30,7 @@ std::vector<orb::Sphere> random_spheres(std::size_t n)
     return spheres;
 }
 
-std::vector<orb::Sphere> scene_spheres(const char* path)
-{
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(std::string("cannot read ") + path);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return orb::import_scene(bytes.str(), path, ".").scene.spheres;
-}
+std::vector<orb::Sphere> scene_spheres(const char* path) { return orb::bench::import_scene_file(path).spheres; }
 
 }  // namespace
 

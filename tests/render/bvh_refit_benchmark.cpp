@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "benchmark_support.h"
 #include "orb/render/renderer.h"
 #include "scene_layout.h"
 #include "sphere_bvh.h"
@@ -22,10 +23,7 @@ using namespace orb::render;
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using orb::bench::seconds_since;
 
 }  // namespace
 

@@ -25,15 +25,13 @@
 #include <cstdint>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "benchmark_support.h"
 #include "orb/render/device.h"
-#include "orb/scene/import.h"
 #include "ray_caster.h"
 #include "scene_layout.h"
 
@@ -141,11 +139,7 @@ int main(int argc, char** argv)
             else if (flag == "--seconds") seconds = std::stod(value);
             else throw std::runtime_error("unknown option " + flag);
         }
-        std::ifstream in(argv[1], std::ios::binary);
-        if (!in) throw std::runtime_error(std::string("cannot read ") + argv[1]);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        const Scene scene = import_scene(bytes.str(), argv[1], ".").scene;
+        const Scene scene = bench::import_scene_file(argv[1]);
         const SceneLayout layout = layout_scene(scene);
         const device::CameraParams camera = layout_camera(scene.camera, width, height);
 

@@ -15,16 +15,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "benchmark_support.h"
 #include "device_renderer.h"
 #include "orb/render/device.h"
 #include "orb/render/film.h"
-#include "orb/scene/import.h"
 #include "scene_layout.h"
 #include "wavefront_renderer.h"
 
@@ -35,7 +33,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+using bench::seconds_since;
 
 struct Timed {
     double samples_per_second = 0;
@@ -98,11 +96,7 @@ int main(int argc, char** argv)
                 sampler = value == "sobol" ? SamplerKind::Sobol : SamplerKind::Independent;
             else throw std::runtime_error("unknown option or value: " + flag + " " + value);
         }
-        std::ifstream in(argv[1], std::ios::binary);
-        if (!in) throw std::runtime_error(std::string("cannot read ") + argv[1]);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        const Scene scene = import_scene(bytes.str(), argv[1], ".").scene;
+        const Scene scene = bench::import_scene_file(argv[1]);
         const SceneLayout layout = layout_scene(scene);
         const device::CameraParams camera = layout_camera(scene.camera, width, height);
 

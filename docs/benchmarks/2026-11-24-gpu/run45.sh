@@ -6,9 +6,9 @@
 # independent sampler, and by `old` (2a51ab0, the build of the 4.7 G
 # samples/s figure: independent sampler, the old roulette); plus a
 # converged reference from each build. The images come back as HALF EXRs
-# and are scored on the development machine with orb-diff
-# (scripts/efficiency-rungs.py --reference; docs/performance.md, "Time to
-# equal error on the GPU, measured").
+# and are scored on the development machine with orb-diff: linked as
+# RUNGS/<name>/cornell/rung-SPP.{exr,json} for scripts/efficiency-rungs.py
+# --reference (docs/performance.md, "Time to equal error on the GPU, measured").
 set -uo pipefail
 source scripts/gpu-node-env.sh "$PWD/.gpu/b"
 W=/tmp/orb-eff
