@@ -125,6 +125,17 @@ TEST(GltfCli, DefaultLightAndNoDefaultLight) {
     EXPECT_EQ(load_scene_json(run.out, "out").environment.kind, EnvironmentKind::None);
 }
 
+// A chosen environment lights the asset: no default light and no warning about one.
+TEST(GltfCli, AChosenEnvironmentReplacesTheDefaultLight) {
+    const fs::path out = scratch("environment.json");
+    const ToolRun run = run_import(quote(generated("nested.glb")) + " --environment 0.25,0.5,1 --strict", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(run.err.find("no light"), std::string::npos) << run.err;
+    const Environment environment = load_scene_json(run.out, "out").environment;
+    EXPECT_EQ(environment.kind, EnvironmentKind::Color);
+    EXPECT_EQ(environment.color, (Vec3{0.25, 0.5, 1}));
+}
+
 TEST(GltfCli, ErrorsAndUsage) {
     const fs::path out = scratch("bad.json");
     ToolRun run = run_import(quote(generated("ortho.gltf")), out);

@@ -2,9 +2,11 @@
 // -> the canonical Orb JSON scene, its binary form (.orb), or back to .scn
 // (docs/orb-import.md).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "environment_options.h"
 #include "gltf_options.h"
 #include "map_paths.h"
 #include "orb/cli/io.h"
@@ -33,6 +35,7 @@ constexpr const char* kExamples = R"(Examples:
   orb-import cloud.ply --radius 0.01 -o cloud.json   PLY point cloud -> spheres, camera, lights
   orb-import cloud.ply -o cloud.orb                  ... -> the binary scene (fast to load)
   orb-import cloud.orb -o cloud.json                 binary scene -> Orb JSON, exactly
+  orb-import model.glb --environment sky.exr -o m.json  lit by an HDR map (or --environment R,G,B)
   orb-import cornell.json --to scn -o cornell.scn    Orb JSON -> .scn (warns about losses)
   orb-import model.gltf --to scn --strict -o m.scn   fail instead of losing anything
   cat scene.txt | orb-import - --from scn            read stdin, say what it is
@@ -48,6 +51,7 @@ struct Arguments {
     std::string to;
     bool strict = false;
     orb::ImportOptions import_options;
+    orb::import_tool::EnvironmentChoice environment;
 };
 
 // Where relative references (glTF buffers and images, environment maps) are
@@ -82,10 +86,15 @@ int run(Arguments& args) {
     if (args.from.empty() && extension == ".ply") args.import_options.format = orb::SceneFormat::Ply;
     if (args.from.empty() && extension == ".orb") args.import_options.format = orb::SceneFormat::OrbBinary;
     args.import_options.gltf.strict = args.strict;
+    // A chosen environment lights the scene: no default light for a glTF asset.
+    if (!args.environment.value.empty()) args.import_options.gltf.default_light = false;
 
     // The output is checked and prepared before anything is read or converted.
     orb::cli::refuse_overlapping_paths({{"INPUT", args.input}}, {{"-o", args.output}});
     orb::cli::OutputFile output(args.output, "-o");
+    // Checked before the input is read, which may be millions of spheres.
+    std::optional<orb::Environment> environment =
+        orb::import_tool::chosen_environment(args.environment, base_directory(args.output));
 
     const std::string source = orb::cli::is_stdio(args.input) ? "<stdin>" : args.input;
     const std::string bytes = orb::cli::read_input(args.input);
@@ -94,6 +103,7 @@ int run(Arguments& args) {
     report_losses(imported.warnings, args.strict, source);
     for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
+    if (environment) imported.scene.environment = std::move(*environment);
 
     std::string text;
     if (to == OutputFormat::Scn) {
@@ -131,6 +141,7 @@ int main(int argc, char** argv) {
                          "Fail (exit 1, no output) instead of warning when information would be lost");
             orb::import_tool::add_gltf_options(app, args.import_options.gltf);
             orb::import_tool::add_ply_options(app, args.import_options.ply);
+            orb::import_tool::add_environment_options(app, args.environment);
             app.footer(kExamples);
         },
         [&] { return run(args); });
