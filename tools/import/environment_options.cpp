@@ -90,13 +90,10 @@ std::optional<Environment> chosen_environment(const EnvironmentChoice& choice, c
         throw InputError(what + ": not an OpenEXR file (Orb reads environment maps as EXR; convert one with, for "
                                 "example, oiiotool sky.hdr -o sky.exr)");
     environment.kind = EnvironmentKind::Map;
-    environment.map = choice.value;
+    environment.map = rebased_map_path(choice.value, fs::current_path().string(), output_dir);
     environment.intensity = choice.intensity;
     environment.rotation_deg = choice.rotation_deg;
-    Scene holder;  // rebase_environment_map works on a scene's environment
-    holder.environment = environment;
-    rebase_environment_map(holder, fs::current_path().string(), output_dir);
-    return holder.environment;
+    return environment;
 }
 
 }  // namespace orb::import_tool
