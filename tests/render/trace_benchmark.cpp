@@ -5,7 +5,7 @@
 // registers; this measures that kernel's part, with the traversal
 // render_pass uses (trace_rays, librender/src/ray_caster.h).
 //
-//   build/bin/orb-trace-benchmark SCENE [--device SEL] [--width W] [--height H] [--seconds S]
+//   build/bin/orb-trace-benchmark SCENE [--device SEL] [--width W] [--height H] [--seconds S] [--dump DIR]
 //
 // Three batches, each cast repeatedly for S seconds (default 2) after one
 // warm-up cast:
@@ -27,7 +27,9 @@
 #include <cstdio>
 #include <iostream>
 #include <random>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "benchmark_support.h"
@@ -112,6 +114,46 @@ std::vector<CastRay> sorted_by_octant_and_origin(const std::vector<CastRay>& ray
     return sorted;
 }
 
+// --dump DIR: the spheres and the three batches with Orb's answers, for a
+// peer to cast the same rays (scripts/embree-trace-benchmark.sh). Raw
+// little-endian arrays, no header:
+//   spheres.f32  five floats per sphere slot: centre xyz, radius, and 1 for
+//                a sphere outside the tree (the floor, the lamps) else 0;
+//                padding slots have radius 0
+//   NAME.rays    CastRay records (32 bytes: origin, self, direction, light)
+//   NAME.hits    camera and bounce: CastHit records (sphere, t); shadow:
+//                one int32 per ray, 1 when the light is visible
+void write_raw(const std::string& path, const void* data, std::size_t bytes)
+{
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) throw std::runtime_error("cannot write " + path);
+    const bool ok = std::fwrite(data, 1, bytes, file) == bytes;
+    if (std::fclose(file) != 0 || !ok) throw std::runtime_error("cannot write " + path);
+}
+
+void dump_batches(const std::string& dir, const SceneLayout& layout, RayCaster& caster,
+                  const std::vector<std::pair<std::string, const std::vector<CastRay>*>>& batches)
+{
+    std::vector<float> spheres;
+    const std::size_t outside_slots = 4 * static_cast<std::size_t>(layout.counts.outside_packet_count);
+    for (std::size_t i = 0; i < layout.tables.spheres.size(); ++i) {
+        const device::float4 s = layout.tables.spheres[i].centre_radius;
+        spheres.insert(spheres.end(), {s.x, s.y, s.z, s.w, i < outside_slots ? 1.0f : 0.0f});
+    }
+    write_raw(dir + "/spheres.f32", spheres.data(), spheres.size() * sizeof(float));
+    for (const auto& [name, rays] : batches) {
+        write_raw(dir + "/" + name + ".rays", rays->data(), rays->size() * sizeof(CastRay));
+        if (name == "shadow") {
+            const std::vector<bool> visible = caster.visible(*rays);
+            const std::vector<std::int32_t> flags(visible.begin(), visible.end());
+            write_raw(dir + "/" + name + ".hits", flags.data(), flags.size() * sizeof(std::int32_t));
+        } else {
+            const std::vector<CastHit> hits = caster.closest(*rays);
+            write_raw(dir + "/" + name + ".hits", hits.data(), hits.size() * sizeof(CastHit));
+        }
+    }
+}
+
 std::vector<CastRay> shuffled(std::vector<CastRay> rays)
 {
     std::mt19937 rng(7);
@@ -124,11 +166,11 @@ std::vector<CastRay> shuffled(std::vector<CastRay> rays)
 int main(int argc, char** argv)
 {
     if (argc < 2) {
-        std::cerr << "usage: orb-trace-benchmark SCENE [--device SEL] [--width W] [--height H] [--seconds S]\n";
+        std::cerr << "usage: orb-trace-benchmark SCENE [--device SEL] [--width W] [--height H] [--seconds S] [--dump DIR]\n";
         return 2;
     }
     try {
-        std::string device_selector;
+        std::string device_selector, dump_dir;
         int width = 1920, height = 1080;
         double seconds = 2.0;
         for (int i = 2; i + 1 < argc; i += 2) {
@@ -137,6 +179,7 @@ int main(int argc, char** argv)
             else if (flag == "--width") width = std::stoi(value);
             else if (flag == "--height") height = std::stoi(value);
             else if (flag == "--seconds") seconds = std::stod(value);
+            else if (flag == "--dump") dump_dir = value;
             else throw std::runtime_error("unknown option " + flag);
         }
         const Scene scene = bench::import_scene_file(argv[1]);
@@ -186,6 +229,10 @@ int main(int argc, char** argv)
             const V target = xyz(lamp) + lamp.w * V{s * std::cos(a), s * std::sin(a), z};
             shadow_rays.push_back(make_ray(p, unit(target - p), hits[i].sphere, light));
         }
+
+        if (!dump_dir.empty())
+            dump_batches(dump_dir, layout, caster,
+                         {{"camera", &camera_rays}, {"bounce", &bounce_rays}, {"shadow", &shadow_rays}});
 
         const auto report = [&](const char* name, const std::vector<CastRay>& rays, bool shadow) {
             if (rays.empty()) {
