@@ -35,11 +35,10 @@ mkdir "$work/rays"
 echo "== $scene, ${width}x${height}, $(nproc) threads"
 for round in $(seq 1 "$rounds"); do
   echo "-- round $round: Orb"
-  if [[ $round -eq 1 ]]; then
-    "$orb" "$scene" --width "$width" --height "$height" --seconds "$seconds" --dump "$work/rays" | head -5
-  else
-    "$orb" "$scene" --width "$width" --height "$height" --seconds "$seconds" | head -5
-  fi
+  dump=()
+  [[ $round -eq 1 ]] && dump=(--dump "$work/rays")  # Embree casts the first round's rays
+  # The three batches as cast; not their sorted and shuffled variants.
+  "$orb" "$scene" --width "$width" --height "$height" --seconds "$seconds" "${dump[@]}" | grep -vE 'sorted|shuffled'
   echo "-- round $round: Embree"
   "$work/embree-trace-benchmark" "$work/rays" --threads "$(nproc)" --seconds "$seconds"
   "$work/embree-trace-benchmark" "$work/rays" --threads "$(nproc)" --seconds "$seconds" --split | tail -n +2 | sed 's/^/split: /'

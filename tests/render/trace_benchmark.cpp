@@ -131,8 +131,11 @@ void write_raw(const std::string& path, const void* data, std::size_t bytes)
     if (std::fclose(file) != 0 || !ok) throw std::runtime_error("cannot write " + path);
 }
 
+// The camera rays' hits are the ones the bounce and shadow rays were made
+// from; the other two batches are cast here for their answers.
 void dump_batches(const std::string& dir, const SceneLayout& layout, RayCaster& caster,
-                  const std::vector<std::pair<std::string, const std::vector<CastRay>*>>& batches)
+                  const std::vector<CastRay>& camera_rays, const std::vector<CastHit>& camera_hits,
+                  const std::vector<CastRay>& bounce_rays, const std::vector<CastRay>& shadow_rays)
 {
     std::vector<float> spheres;
     const std::size_t outside_slots = 4 * static_cast<std::size_t>(layout.counts.outside_packet_count);
@@ -141,17 +144,18 @@ void dump_batches(const std::string& dir, const SceneLayout& layout, RayCaster& 
         spheres.insert(spheres.end(), {s.x, s.y, s.z, s.w, i < outside_slots ? 1.0f : 0.0f});
     }
     write_raw(dir + "/spheres.f32", spheres.data(), spheres.size() * sizeof(float));
-    for (const auto& [name, rays] : batches) {
-        write_raw(dir + "/" + name + ".rays", rays->data(), rays->size() * sizeof(CastRay));
-        if (name == "shadow") {
-            const std::vector<bool> visible = caster.visible(*rays);
-            const std::vector<std::int32_t> flags(visible.begin(), visible.end());
-            write_raw(dir + "/" + name + ".hits", flags.data(), flags.size() * sizeof(std::int32_t));
-        } else {
-            const std::vector<CastHit> hits = caster.closest(*rays);
-            write_raw(dir + "/" + name + ".hits", hits.data(), hits.size() * sizeof(CastHit));
-        }
-    }
+    const auto write_rays = [&](const char* name, const std::vector<CastRay>& rays) {
+        write_raw(dir + "/" + name + ".rays", rays.data(), rays.size() * sizeof(CastRay));
+    };
+    write_rays("camera", camera_rays);
+    write_raw(dir + "/camera.hits", camera_hits.data(), camera_hits.size() * sizeof(CastHit));
+    write_rays("bounce", bounce_rays);
+    const std::vector<CastHit> bounce_hits = caster.closest(bounce_rays);
+    write_raw(dir + "/bounce.hits", bounce_hits.data(), bounce_hits.size() * sizeof(CastHit));
+    write_rays("shadow", shadow_rays);
+    const std::vector<bool> visible = caster.visible(shadow_rays);
+    const std::vector<std::int32_t> flags(visible.begin(), visible.end());
+    write_raw(dir + "/shadow.hits", flags.data(), flags.size() * sizeof(std::int32_t));
 }
 
 std::vector<CastRay> shuffled(std::vector<CastRay> rays)
@@ -231,8 +235,7 @@ int main(int argc, char** argv)
         }
 
         if (!dump_dir.empty())
-            dump_batches(dump_dir, layout, caster,
-                         {{"camera", &camera_rays}, {"bounce", &bounce_rays}, {"shadow", &shadow_rays}});
+            dump_batches(dump_dir, layout, caster, camera_rays, hits, bounce_rays, shadow_rays);
 
         const auto report = [&](const char* name, const std::vector<CastRay>& rays, bool shadow) {
             if (rays.empty()) {
