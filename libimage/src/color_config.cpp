@@ -1,8 +1,12 @@
 #include "orb/image/color_config.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "color_config_impl.h"
@@ -10,6 +14,25 @@
 
 namespace orb::image {
 namespace {
+
+// 64-bit FNV-1a as 16 hex digits (as the scene hash is): a change of content, not an adversary, is what it tells.
+std::string fnv1a_hex(const std::string& bytes) {
+    std::uint64_t hash = 1469598103934665603ull;
+    for (unsigned char byte : bytes) {
+        hash ^= byte;
+        hash *= 1099511628211ull;
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+std::string file_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError(path + ": cannot read the OpenColorIO config");
+    return text;
+}
 
 std::string join(const std::vector<std::string>& items) {
     std::string out;
@@ -45,6 +68,7 @@ ColorConfig ColorConfig::load(const std::string& explicit_path, const std::strin
     ColorConfig result;
     result.impl_ = impl;
     result.source_ = path;
+    result.content_hash_ = fnv1a_hex(file_text(path));
     return result;
 }
 

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "orb/image/quantize.h"
+#include "orb/image/record_carrier.h"
 #include "orb/scene/error.h"
 
 namespace OIIO = OIIO_NAMESPACE;
@@ -121,6 +122,8 @@ std::string encode_image(const Image& source, const WriteOptions& options) {
     for (const std::string& name : image.channel_names) spec.channelnames.push_back(name);
     if (n == 4) spec.alpha_channel = 3;
     if (options.format == "exr") spec.attribute("compression", "zip");
+    if (const std::string carrier = record_attribute_for(options.format); !carrier.empty() && !options.record.empty())
+        spec.attribute(carrier, options.record);
 
     if (!out->supports("ioproxy")) return encode_through_file(*out, spec, image, type, options);
     std::vector<unsigned char> buffer;

@@ -15,8 +15,12 @@
 #include "orb/cli/tool_main.h"
 #include "orb/image/color_options.h"
 #include "orb/image/contact_sheet.h"
+#include "orb/image/display_currency.h"
+#include "orb/image/display_record.h"
+#include "orb/image/display_settings.h"
 #include "orb/image/load.h"
 #include "orb/image/passes.h"
+#include "orb/image/source_identity.h"
 #include "orb/image/tonemap.h"
 #include "orb/image/write.h"
 #include "orb/scene/error.h"
@@ -80,22 +84,6 @@ void refuse_overlaps(const std::vector<Job>& jobs, const Settings& s) {
     orb::cli::refuse_overlapping_paths(inputs, outputs);
 }
 
-// --skip-existing: an output that is a regular file OpenImageIO reads to the
-// end is left alone. Outputs are renamed into place only once complete, so
-// a file that does not read was damaged later; it is made again. A device or
-// FIFO is always written.
-bool is_complete_output(const std::string& path) {
-    std::error_code ec;
-    if (path == "-" || !fs::is_regular_file(path, ec)) return false;
-    try {
-        load_image(path);
-        return true;
-    } catch (const std::exception& e) {
-        orb::cli::warning(std::string(e.what()) + "; making it again");
-        return false;
-    }
-}
-
 // The command line's write options for one output (format unchecked).
 WriteOptions write_options_for(const Job& job, const Settings& s) {
     WriteOptions options;
@@ -120,10 +108,76 @@ void check_formats(const std::vector<Job>& jobs, const Settings& s) {
     }
 }
 
+// The settings an output is made with, resolved as tonemap_one resolves
+// them, so that what is recorded in an image and what a later run asks for
+// compare alike: the display and view defaults filled in (asking for the
+// default view by name is asking for the same image), --input-space by its
+// canonical name ("" = the input's own, which its identity and the config
+// decide), dithering only where it applies (8 bits).
+DisplaySettings settings_for(const WriteOptions& options, const Settings& s, const ColorConfig& config) {
+    DisplaySettings d;
+    d.contact_sheet = s.contact_sheet;
+    d.pass = s.contact_sheet ? "" : s.pass;
+    if (!s.color.input_space.empty()) {
+        d.input_space = config.resolve_color_space(s.color.input_space);
+        if (d.input_space.empty()) d.input_space = s.color.input_space;  // unknown: tonemap_one reports it
+    }
+    d.display = s.color.display.empty() ? config.default_display() : s.color.display;
+    d.view = s.color.view.empty() ? config.default_view(d.display) : s.color.view;
+    d.look = s.color.look;
+    d.exposure = s.exposure;
+    d.config = config.content_hash();
+    d.format = options.format;
+    d.bits = options.bits;
+    d.dither = options.dither && options.bits == 8;
+    return d;
+}
+
+// --skip-existing: whether the output of `job` is current (display_currency.h
+// has the rule). One line says why an existing output is made again; that
+// the input has no identity (stdin) is said once.
+bool is_current(const Job& job, const Settings& s, const ColorConfig& config, bool& said_cannot_judge) {
+    DisplaySettings asked;
+    try {
+        asked = settings_for(checked_write_options(write_options_for(job, s)), s, config);
+    } catch (const std::exception&) {
+        return false;  // tonemap_one reports the bad format with this output
+    }
+    const DisplayImageVerdict verdict = judge_display_image(job.output, job.input, asked);
+    using Kind = DisplayImageVerdict::Kind;
+    switch (verdict.kind) {
+        case Kind::Current:
+            return true;
+        case Kind::Absent:
+            return false;
+        case Kind::Damaged:
+            orb::cli::warning(verdict.reason + "; making it again");
+            return false;
+        case Kind::Stale:
+            orb::cli::info(job.output + ": " + verdict.reason + ": making it again");
+            return false;
+        case Kind::CannotJudge:
+            if (!said_cannot_judge) orb::cli::info("--skip-existing: " + verdict.reason + ": making it");
+            said_cannot_judge = true;
+            return false;
+    }
+    return false;
+}
+
 void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
     WriteOptions options = checked_write_options(write_options_for(job, s));
     options.premultiply_alpha = options.format == "exr" || options.format == "tif";
     orb::cli::OutputFile output(job.output, "-o");  // fails now, before the work, if it cannot be written
+
+    // The input's identity is taken before its pixels are read: if it is
+    // replaced meanwhile, the image records the older file and the next
+    // --skip-existing run makes it again, rather than keeping a stale one.
+    const SourceLookup source = identify_source(job.input);
+    DisplayRecord record;
+    record.source_is_file = source.state == SourceLookup::State::File;
+    record.source = source.identity;
+    record.settings = settings_for(options, s, config);
+    options.record = format_display_record(record);
 
     const LoadedImage loaded = load_image(job.input);
     DisplayView request{input_space_for(config, s.color, loaded), s.color.display, s.color.view, s.color.look,
@@ -170,7 +224,8 @@ int main(int argc, char** argv) {
                            "Frames for pattern inputs/outputs (%04d or ####): 1-240, 1-240x2, 1,5,9-12")
                 ->option_text("LIST");
             app.add_flag("--skip-existing", s.skip_existing,
-                         "Leave outputs that already exist and read as images alone (their inputs may be gone)");
+                         "Leave outputs alone that are current: whole, made from the file now at their input path "
+                         "with these settings (an output whose input is gone is kept)");
             app.add_flag("--contact-sheet", s.contact_sheet, "Lay out all passes of the input in one labelled image");
             app.footer(
                 "Examples:\n"
@@ -203,8 +258,9 @@ int main(int argc, char** argv) {
             const ColorConfig config = load_color_config(s.color);
             // Sequences: a bad frame is reported and the rest still get done.
             int failures = 0, skipped = 0;
+            bool said_cannot_judge = false;
             for (const Job& job : jobs) {
-                if (s.skip_existing && is_complete_output(job.output)) {
+                if (s.skip_existing && is_current(job, s, config, said_cannot_judge)) {
                     ++skipped;
                     continue;
                 }
@@ -218,7 +274,7 @@ int main(int argc, char** argv) {
             }
             if (skipped)
                 orb::cli::info("skipped " + std::to_string(skipped) + " of " + std::to_string(jobs.size()) +
-                               (skipped == 1 ? " output that exists" : " outputs that exist"));
+                               (skipped == 1 ? " output that is current" : " outputs that are current"));
             if (failures) orb::cli::error(std::to_string(failures) + " of " + std::to_string(jobs.size()) + " images failed");
             return failures ? orb::cli::kFailure : orb::cli::kSuccess;
         });

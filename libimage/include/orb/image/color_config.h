@@ -15,6 +15,10 @@ public:
     static ColorConfig load(const std::string& explicit_path, const std::string& default_path);
 
     const std::string& source() const { return source_; }  // where it came from, for messages
+    // The config's identity by content, not by path: the 64-bit FNV-1a of the
+    // config file's text as 16 hex digits. Files the config refers to (LUTs)
+    // and the environment its context variables read are not part of it.
+    const std::string& content_hash() const { return content_hash_; }
 
     std::vector<std::string> displays() const;
     std::vector<std::string> views(const std::string& display) const;
@@ -43,6 +47,7 @@ public:
 private:
     std::shared_ptr<const Impl> impl_;
     std::string source_;
+    std::string content_hash_;
 };
 
 }  // namespace orb::image

@@ -12,6 +12,9 @@ struct WriteOptions {
     int bits = 0;        // 0: the format's default (8; EXR: 16-bit half)
     bool dither = true;  // dither when quantising to 8 bits
     bool premultiply_alpha = false;  // for formats that store associated alpha (EXR, TIFF)
+    // The display record (display_record.h) to keep in the image's metadata,
+    // where the format has a carrier for it (record_carrier.h); "" for none.
+    std::string record;
 };
 
 // Lower-case extension of a path without the dot ("" if none).
