@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 namespace orb::exr::detail {
@@ -14,37 +15,32 @@ using Planes = std::map<std::string, std::vector<float>>;
 
 // Means are computed in double and rounded once, so mean * n gives the sum
 // back within a float rounding or two.
-std::vector<float> mean_channel(const Sums& sums, int components, int component, double n) {
-    const std::size_t pixels = sums.size() / components;
-    std::vector<float> out(pixels);
-    for (std::size_t i = 0; i < pixels; ++i)
+void mean_channel(const Sums& sums, int components, int component, double n, std::span<float> out) {
+    for (std::size_t i = 0; i < out.size(); ++i)
         out[i] = static_cast<float>(static_cast<double>(sums[i * components + component]) / n);
-    return out;
 }
 
 // Variance of the pixel mean: the unbiased sample variance divided by n,
 // (sum_sq/n - mean^2) * n/(n-1) / n. Zero with fewer than two samples,
 // where it is unknown (and where sum_sq = mean^2 recovers exactly).
-std::vector<float> variance_channel(const Sums& sums, const Sums& sums_sq, int components, int component,
-                                    std::uint64_t n) {
-    std::vector<float> out(sums.size() / components, 0.0f);
-    if (n < 2) return out;
+void variance_channel(const Sums& sums, const Sums& sums_sq, int components, int component, std::uint64_t n,
+                      std::span<float> out) {
+    if (n < 2) {
+        std::fill(out.begin(), out.end(), 0.0f);
+        return;
+    }
     const double nd = static_cast<double>(n);
     for (std::size_t i = 0; i < out.size(); ++i) {
         const double mean = static_cast<double>(sums[i * components + component]) / nd;
         const double mean_sq = static_cast<double>(sums_sq[i * components + component]) / nd;
         out[i] = static_cast<float>(std::max(0.0, mean_sq - mean * mean) / (nd - 1.0));
     }
-    return out;
 }
 
-// The mean normalised (0 where it is 0), then its length.
-void add_unit_vector_planes(std::vector<Plane>& planes, const ChannelInfo& channel, const Sums& sums, double n) {
-    const int components = channel.components;
+// The mean normalised (0 where it is 0), then its length: planes
+// out[0 .. components-1] and out[components].
+void unit_vector_planes(const Sums& sums, int components, double n, const std::vector<std::span<float>>& out) {
     const std::size_t pixels = sums.size() / components;
-    std::vector<Plane> out;
-    for (int c = 0; c <= components; ++c)
-        out.push_back({channel.exr_names[c], c == components, std::vector<float>(pixels)});
     for (std::size_t i = 0; i < pixels; ++i) {
         double mean[3] = {0, 0, 0};
         double length_sq = 0;
@@ -54,16 +50,13 @@ void add_unit_vector_planes(std::vector<Plane>& planes, const ChannelInfo& chann
         }
         const double length = std::sqrt(length_sq);
         const double scale = length > 0 ? 1.0 / length : 0.0;
-        for (int c = 0; c < components; ++c) out[c].values[i] = static_cast<float>(mean[c] * scale);
-        out[components].values[i] = static_cast<float>(length);
+        for (int c = 0; c < components; ++c) out[c][i] = static_cast<float>(mean[c] * scale);
+        out[components][i] = static_cast<float>(length);
     }
-    for (Plane& plane : out) planes.push_back(std::move(plane));
 }
 
-std::vector<float> component_values(const Sums& values, int components, int component) {
-    std::vector<float> out(values.size() / components);
+void component_values(const Sums& values, int components, int component, std::span<float> out) {
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = values[i * components + component];
-    return out;
 }
 
 const std::vector<float>& plane(const Planes& planes, const std::string& name) {
@@ -116,10 +109,25 @@ void recover_values(const Planes& planes, const ChannelInfo& channel, Sums& valu
 
 }  // namespace
 
-std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes) {
+std::size_t plane_count(const std::vector<Pass>& passes) {
+    std::size_t count = 0;
+    for (Pass pass : passes)
+        for (const ChannelInfo* channel : pass_film_channels(pass)) count += static_cast<std::size_t>(channel->exr_name_count);
+    return count;
+}
+
+std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes,
+                                  std::vector<float>& storage) {
     if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
     const double n = static_cast<double>(film.samples_per_pixel);
+    const std::size_t pixels = static_cast<std::size_t>(film.width) * static_cast<std::size_t>(film.height);
+    if (storage.size() < plane_count(passes) * pixels) storage.resize(plane_count(passes) * pixels);
     std::vector<Plane> planes;
+    const auto next_plane = [&](const char* name, bool always_float) {
+        const std::span<float> values(storage.data() + planes.size() * pixels, pixels);
+        planes.push_back({name, always_float, values});
+        return values;
+    };
     for (Pass pass : passes) {
         for (const ChannelInfo* channel : pass_film_channels(pass)) {
             const Sums& sums = film.channel(channel->channel);
@@ -127,18 +135,23 @@ std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pa
             switch (channel->stored_as) {
                 case StoredAs::Mean:
                     for (int c = 0; c < components; ++c)
-                        planes.push_back({channel->exr_names[c], false, mean_channel(sums, components, c, n)});
+                        mean_channel(sums, components, c, n, next_plane(channel->exr_names[c], false));
                     break;
-                case StoredAs::UnitVector: add_unit_vector_planes(planes, *channel, sums, n); break;
+                case StoredAs::UnitVector: {
+                    std::vector<std::span<float>> out;
+                    for (int c = 0; c <= components; ++c)
+                        out.push_back(next_plane(channel->exr_names[c], c == components));
+                    unit_vector_planes(sums, components, n, out);
+                    break;
+                }
                 case StoredAs::VarianceOfMean:
                     for (int c = 0; c < components; ++c)
-                        planes.push_back({channel->exr_names[c], false,
-                                          variance_channel(film.channel(channel->paired), sums, components, c,
-                                                           film.samples_per_pixel)});
+                        variance_channel(film.channel(channel->paired), sums, components, c, film.samples_per_pixel,
+                                         next_plane(channel->exr_names[c], false));
                     break;
                 case StoredAs::Value:
                     for (int c = 0; c < components; ++c)
-                        planes.push_back({channel->exr_names[c], true, component_values(sums, components, c)});
+                        component_values(sums, components, c, next_plane(channel->exr_names[c], true));
                     break;
             }
         }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,11 +17,17 @@ namespace orb::exr::detail {
 struct Plane {
     std::string name;
     bool always_float = false;  // Z, id and resume helpers stay FLOAT under --half
-    std::vector<float> values;  // one float per pixel, row-major, top row first
+    std::span<float> values;    // one float per pixel, row-major, top row first
 };
 
-// The channels of `passes`, plus their resume helpers, in a fixed order.
-std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes);
+// How many planes film_to_planes makes for `passes`.
+std::size_t plane_count(const std::vector<Pass>& passes);
+
+// The channels of `passes`, plus their resume helpers, in a fixed order,
+// stored one after another in `storage` (resized to fit; a buffer reused
+// frame after frame costs no fresh pages).
+std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes,
+                                  std::vector<float>& storage);
 
 // Recovers the sums of `passes` from planes read back (every channel of each
 // pass, and its helpers, present). `film` is sized and has its sample count.

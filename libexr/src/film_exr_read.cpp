@@ -151,6 +151,11 @@ ExrFilmSummary read_summary(const Imf::Header& header, const std::string& path) 
     } catch (const std::invalid_argument& e) {
         fail(path, std::string(attr::kPasses) + ": " + e.what());
     }
+    for (Pass pass : summary.passes)
+        for (const std::string& name : pass_channels(pass)) {
+            const Imf::Channel* channel = header.channels().findChannel(name);
+            if (channel && channel->type == Imf::HALF) summary.half = true;
+        }
     return summary;
 }
 

@@ -11,10 +11,10 @@
 
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
 #include <fstream>
-#include <list>
 #include <stdexcept>
 #include <thread>
 
@@ -35,11 +35,23 @@ Imath::M44f to_imath(const Matrix44& m) {
 Imf::Compression to_imf(ExrCompression compression) {
     switch (compression) {
         case ExrCompression::None: return Imf::NO_COMPRESSION;
+        case ExrCompression::Rle: return Imf::RLE_COMPRESSION;
+        case ExrCompression::Zips: return Imf::ZIPS_COMPRESSION;
         case ExrCompression::Zip: return Imf::ZIP_COMPRESSION;
         case ExrCompression::Piz: return Imf::PIZ_COMPRESSION;
     }
     return Imf::ZIP_COMPRESSION;
 }
+
+struct NamedCompression {
+    ExrCompression compression;
+    const char* name;
+};
+constexpr NamedCompression kCompressions[] = {{ExrCompression::Zip, "zip"},
+                                               {ExrCompression::Zips, "zips"},
+                                               {ExrCompression::Piz, "piz"},
+                                               {ExrCompression::Rle, "rle"},
+                                               {ExrCompression::None, "none"}};
 
 int checked_int(std::uint64_t value, const char* what) {
     if (value > static_cast<std::uint64_t>(INT_MAX))
@@ -74,23 +86,27 @@ void add_metadata(Imf::Header& header, const render::Film& film, const ExrMetada
     Imf::addWorldToNDC(header, to_imath(m.world_to_ndc));
 }
 
-// OpenEXR's output stream over a growing string: the file is encoded in
-// memory and the caller writes it, checking every step (orb::cli::OutputFile).
+// OpenEXR's output stream over a string that is kept from file to file:
+// only its first `size` bytes are this file, and it grows (never shrinks)
+// without clearing what it will overwrite anyway.
 class MemoryStream final : public Imf::OStream {
 public:
-    MemoryStream() : Imf::OStream("<memory>") {}
+    MemoryStream(std::string& bytes, std::size_t& size) : Imf::OStream("<memory>"), bytes_(bytes), size_(size) {
+        size_ = 0;
+    }
     void write(const char c[], int n) override {
         const auto end = position_ + static_cast<std::uint64_t>(n);
-        if (end > bytes_.size()) bytes_.resize(end);
+        if (end > bytes_.size()) bytes_.resize(std::max<std::uint64_t>(end, 2 * bytes_.size()));
         std::memcpy(bytes_.data() + position_, c, static_cast<std::size_t>(n));
         position_ = end;
+        size_ = std::max<std::size_t>(size_, end);
     }
     std::uint64_t tellp() override { return position_; }
     void seekp(std::uint64_t position) override { position_ = position; }
-    std::string take() { return std::move(bytes_); }
 
 private:
-    std::string bytes_;
+    std::string& bytes_;
+    std::size_t& size_;
     std::uint64_t position_ = 0;
 };
 
@@ -106,12 +122,43 @@ void use_all_cores_for_compression() {
 
 }  // namespace
 
-std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options) {
+const std::vector<std::string>& compression_names() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all;
+        for (const NamedCompression& c : kCompressions) all.push_back(c.name);
+        return all;
+    }();
+    return names;
+}
+
+const char* compression_name(ExrCompression compression) {
+    for (const NamedCompression& c : kCompressions)
+        if (c.compression == compression) return c.name;
+    return "?";
+}
+
+ExrCompression parse_compression(const std::string& name) {
+    for (const NamedCompression& c : kCompressions)
+        if (name == c.name) return c.compression;
+    std::string choices;
+    for (const NamedCompression& c : kCompressions) choices += std::string(choices.empty() ? "" : ", ") + c.name;
+    throw std::invalid_argument("unknown EXR compression '" + name + "' (expected " + choices + ")");
+}
+
+// Fills an ExrEncoding (a class so that ExrEncoding can name it a friend).
+class ExrEncoder {
+public:
+    static void encode(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+                       ExrEncoding& into);
+};
+
+void ExrEncoder::encode(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+                        ExrEncoding& into) {
     if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("cannot write an empty film");
     if (options.passes.empty()) throw std::invalid_argument("no passes to write");
     use_all_cores_for_compression();
 
-    const std::vector<detail::Plane> planes = detail::film_to_planes(film, options.passes);
+    const std::vector<detail::Plane> planes = detail::film_to_planes(film, options.passes, into.planes_);
 
     Imf::Header header(film.width, film.height);
     header.compression() = to_imf(options.compression);
@@ -121,25 +168,29 @@ std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadat
     add_metadata(header, film, metadata, options.passes);
 
     // OpenEXR's writer does not convert pixel types, so HALF channels get
-    // their own rounded copies (std::list: the buffers must not move).
+    // rounded copies, one plane after another like the float planes.
     Imf::FrameBuffer frame;
-    std::list<std::vector<Imath::half>> half_copies;
     const auto width = static_cast<std::size_t>(film.width);
-    for (const detail::Plane& plane : planes) {
+    const std::size_t pixels = width * static_cast<std::size_t>(film.height);
+    if (options.half && into.halfs_.size() < planes.size() * pixels) into.halfs_.resize(planes.size() * pixels);
+    static_assert(sizeof(Imath::half) == sizeof(std::uint16_t));
+    auto* halfs = reinterpret_cast<Imath::half*>(into.halfs_.data());
+    for (std::size_t p = 0; p < planes.size(); ++p) {
+        const detail::Plane& plane = planes[p];
         if (options.half && !plane.always_float) {
-            auto& copy = half_copies.emplace_back(plane.values.begin(), plane.values.end());
+            Imath::half* copy = halfs + p * pixels;
+            std::copy(plane.values.begin(), plane.values.end(), copy);
             header.channels().insert(plane.name, Imf::Channel(Imf::HALF));
-            frame.insert(plane.name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(copy.data()), sizeof(Imath::half),
+            frame.insert(plane.name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(copy), sizeof(Imath::half),
                                                 sizeof(Imath::half) * width));
         } else {
             header.channels().insert(plane.name, Imf::Channel(Imf::FLOAT));
-            frame.insert(plane.name,
-                         Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(plane.values.data())),
-                                    sizeof(float), sizeof(float) * width));
+            frame.insert(plane.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(plane.values.data()), sizeof(float),
+                                                sizeof(float) * width));
         }
     }
 
-    MemoryStream stream;
+    MemoryStream stream(into.bytes_, into.size_);
     try {
         Imf::OutputFile file(stream, header);
         file.setFrameBuffer(frame);
@@ -147,7 +198,17 @@ std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadat
     } catch (const std::exception& e) {
         throw std::runtime_error(std::string("cannot encode the EXR: ") + e.what());
     }
-    return stream.take();
+}
+
+void encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+                     ExrEncoding& into) {
+    ExrEncoder::encode(film, metadata, options, into);
+}
+
+std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options) {
+    ExrEncoding encoding;
+    encode_film_exr(film, metadata, options, encoding);
+    return std::string(encoding.bytes());
 }
 
 void write_film_exr(const std::string& path, const render::Film& film, const ExrMetadata& metadata,

@@ -78,6 +78,7 @@ RenderStatus inspect_render(const std::string& path, RenderCheck check) {
     status.sample_ranges = summary.sample_ranges.format();
     status.width = summary.width;
     status.height = summary.height;
+    status.summary = summary;
     if (status.spp < status.target_spp) {
         status.reason = "stopped at " + std::to_string(status.spp) + " of " + std::to_string(status.target_spp) +
                         " samples per pixel";

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -78,7 +79,11 @@ TEST_F(FramesCli, UsageErrors) {
         {{"1-3", "beauty.exr", "--paths"}, "'beauty.exr' has no frame number"},
         {{"1-3", "--paths"}, "--paths needs a PATTERN"},
         {{"1-3", "--missing"}, "--missing needs a PATTERN"},
-        {{"1-3", "b.%04d.exr", "--spp", "4"}, "--spp, --samples, --width and --height go with --missing"},
+        {{"1-3", "b.%04d.exr", "--spp", "4"}, "the render's options (--spp, --width, --passes, ...) go with --missing"},
+        {{"1-3", "b.%04d.exr", "--scene", "s.json"}, "go with --missing"},
+        {{"1-3", "b.%04d.exr", "--missing", "--passes", "beauty,bogus"}, "--passes: "},
+        {{"1-3", "b.%04d.exr", "--missing", "--sample-range", "0:2", "--spp", "2"}, "drop --spp"},
+        {{"1-3", "b.%04d.exr", "--missing", "--mode", "local"}, "--mode"},
         {{"1-3", "b.%s.exr", "--paths"}, "the only % conversions"},
         {{"1-3", "b.%04d.exr", "--missing", "--spp", "0"}, "--spp"},
     };
@@ -94,9 +99,9 @@ TEST_F(FramesCli, UsageErrors) {
 }
 
 TEST_F(FramesCli, MissingNamesFramesThatAreNotCompleteRenders) {
-    render("f.0001.exr", {"--spp", "2"});                    // complete
-    render("f.0003.exr", {"--spp", "2"});                    // complete, then cut short below
-    render("f.0004.exr", {"--spp", "100000", "--time", "0.05"});  // stopped by its time limit
+    render("f.0001.exr", {"--frame", "1", "--spp", "2"});                    // complete
+    render("f.0003.exr", {"--frame", "3", "--spp", "2"});                    // complete, then cut short below
+    render("f.0004.exr", {"--frame", "4", "--spp", "100000", "--time", "0.05"});  // stopped by its time limit
     std::ofstream(path("f.0005.exr")) << "not an EXR";
     fs::create_directory(path("f.0006.exr"));
     // Frame 2 is absent. Frame 3 loses its last bytes (a copy that died half way).
@@ -107,11 +112,11 @@ TEST_F(FramesCli, MissingNamesFramesThatAreNotCompleteRenders) {
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out, "2\n3\n4\n5\n6\n");
     // Files that exist but do not count are explained; an absent one is not.
-    EXPECT_THAT(r.err, HasSubstr("frame 4: " + path("f.0004.exr") + ": stopped at "));
-    EXPECT_THAT(r.err, HasSubstr("of 100000 samples per pixel"));
-    EXPECT_THAT(r.err, HasSubstr("frame 5: " + path("f.0005.exr") + ": not an OpenEXR file"));
-    EXPECT_THAT(r.err, HasSubstr("frame 6: " + path("f.0006.exr") + ": is a directory"));
-    EXPECT_THAT(r.err, HasSubstr("frame 3: " + path("f.0003.exr") + ": truncated or damaged"));
+    EXPECT_THAT(r.err, HasSubstr("frame 4: " + path("f.0004.exr") + ": holds "));
+    EXPECT_THAT(r.err, HasSubstr(" of 100000 spp"));
+    EXPECT_THAT(r.err, HasSubstr("frame 5: " + path("f.0005.exr") + ": unreadable (not an OpenEXR file)"));
+    EXPECT_THAT(r.err, HasSubstr("frame 6: " + path("f.0006.exr") + ": unreadable (is a directory"));
+    EXPECT_THAT(r.err, HasSubstr("frame 3: " + path("f.0003.exr") + ": unreadable (truncated or damaged"));
     EXPECT_THAT(r.err, HasSubstr("frame 3: " + path("f.0003.exr")));
     EXPECT_THAT(r.err, ::testing::Not(HasSubstr("frame 2:")));
     EXPECT_THAT(r.err, ::testing::Not(HasSubstr("frame 1:")));
@@ -123,33 +128,111 @@ TEST_F(FramesCli, MissingNamesFramesThatAreNotCompleteRenders) {
 }
 
 TEST_F(FramesCli, MissingChecksSampleCountAndSizeWhenAsked) {
-    render("f.0001.exr", {"--spp", "2"});
-    render("f.0002.exr", {"--spp", "3"});
+    render("f.0001.exr", {"--frame", "1", "--spp", "2"});
+    render("f.0002.exr", {"--frame", "2", "--spp", "3"});
     EXPECT_EQ(frames({"1-2", path("f.%04d.exr"), "--missing"}).out, "");
     const ProcessResult spp = frames({"1-2", path("f.%04d.exr"), "--missing", "--spp", "3"});
     EXPECT_EQ(spp.out, "1\n");
-    EXPECT_THAT(spp.err, HasSubstr("has 2 samples per pixel, not 3"));
+    EXPECT_THAT(spp.err, HasSubstr("holds 2 of 3 spp"));
+    // At least the samples asked for: a frame of 3 has the 2 asked.
+    EXPECT_EQ(frames({"1-2", path("f.%04d.exr"), "--missing", "--spp", "2"}).out, "");
     const ProcessResult size = frames({"1-2", path("f.%04d.exr"), "--missing", "--width", "8", "--height", "5"});
     EXPECT_EQ(size.out, "1\n2\n");
-    EXPECT_THAT(size.err, HasSubstr("is 8x6, not 8x5"));
+    EXPECT_THAT(size.err, HasSubstr("rendered at 8x6, 8x5 asked"));
     EXPECT_EQ(frames({"1-2", path("f.%04d.exr"), "--missing", "--width", "8", "--height", "6"}).out, "");
 }
 
 TEST_F(FramesCli, MissingChecksTheSamplesOfASlice) {
-    render("s.0001.exr", {"--sample-range", "4:3"});
+    render("s.0001.exr", {"--frame", "1", "--sample-range", "4:3"});
     EXPECT_EQ(frames({"1", path("s.%04d.exr"), "--missing", "--samples", "4:3"}).out, "");
     EXPECT_EQ(frames({"1", path("s.%04d.exr"), "--missing", "--samples", "04:003"}).out, "");
     const ProcessResult other = frames({"1", path("s.%04d.exr"), "--missing", "--samples", "0:3"});
     EXPECT_EQ(other.out, "1\n");
-    EXPECT_THAT(other.err, HasSubstr("holds samples 4:3, not 0:3"));
+    EXPECT_THAT(other.err, HasSubstr("holds the samples 4:3, 0:3 asked"));
+    EXPECT_EQ(frames({"1", path("s.%04d.exr"), "--missing", "--sample-range", "4:3"}).out, "");
     // A whole render holds 0:spp.
-    render("w.0001.exr", {"--spp", "3"});
+    render("w.0001.exr", {"--frame", "1", "--spp", "3"});
     EXPECT_EQ(frames({"1", path("w.%04d.exr"), "--missing", "--samples", "0:3"}).out, "");
     for (const char* bad : {"3", "1:0", "a:2", ":2", "1:", "-1:2"}) {
         const ProcessResult r = frames({"1", path("s.%04d.exr"), "--missing", "--samples", bad});
         EXPECT_EQ(r.exit_code, 2) << bad;
         EXPECT_THAT(r.err, HasSubstr("--samples: expected START:COUNT")) << bad;
     }
+}
+
+// orb-frames --missing --scene, orb-render --missing and what orb-render
+// --skip-existing really renders, with the same options, on one folder that
+// holds every kind of file there can be.
+TEST_F(FramesCli, MissingAgreesWithOrbRenderOnEveryKindOfFile) {
+    const std::vector<std::string> asked{"--spp", "4", "--seed", "3"};
+    const auto frame = [&](int number, std::vector<std::string> extra) {
+        std::vector<std::string> args{"--frame", std::to_string(number)};
+        args.insert(args.end(), extra.begin(), extra.end());
+        render("f." + std::string(number < 10 ? "000" : "00") + std::to_string(number) + ".exr", args);
+    };
+    frame(1, asked);                                               // finished
+    frame(2, {"--spp", "6", "--seed", "3"});                       // more samples than asked: finished
+    frame(3, {"--spp", "100000", "--seed", "3", "--time", "0.000001"});  // stopped short: continued
+    frame(4, {"--spp", "2", "--seed", "3"});                       // fewer samples: continued
+    frame(5, {"--spp", "4", "--seed", "3", "--passes", "beauty,depth"});  // other layers
+    frame(6, {"--spp", "4", "--seed", "4"});                       // other seed
+    frame(7, {"--spp", "4", "--seed", "3", "--mode", "direct"});   // other light transport
+    frame(8, {"--spp", "4", "--seed", "3", "--fps", "30"});        // another moment
+    frame(9, {"--sample-range", "2:2", "--seed", "3"});            // a slice, not a whole frame
+    frame(10, asked);                                              // cut short below
+    fs::resize_file(path("f.0010.exr"), fs::file_size(path("f.0010.exr")) - 16);
+    {  // rendered from another scene: the same glTF with its mirror ball moved
+        std::ifstream in(kScene);
+        std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        const auto at = text.find("0.9,");
+        ASSERT_NE(at, std::string::npos);
+        text.replace(at, 4, "0.5,");
+        std::ofstream(path("moved.gltf")) << text;
+        std::vector<std::string> args{ORB_RENDER_EXE, path("moved.gltf"), "--width", "8", "--height", "6", "-q",
+                                      "--frame", "11", "-o", path("f.0011.exr")};
+        args.insert(args.end(), asked.begin(), asked.end());
+        ASSERT_EQ(run_process(args).exit_code, 0);
+    }
+    // 12 is absent.
+    const std::string expected = "3\n4\n5\n6\n7\n8\n9\n10\n11\n12\n";
+
+    std::vector<std::string> listing{"1-12", path("f.%04d.exr"), "--missing", "--scene", kScene, "--width", "8",
+                                     "--height", "6"};
+    listing.insert(listing.end(), asked.begin(), asked.end());
+    const ProcessResult by_frames = frames(listing);
+    EXPECT_EQ(by_frames.out, expected) << by_frames.err;
+
+    std::vector<std::string> render_args{ORB_RENDER_EXE, kScene, "--frames", "1-12", "-o", path("f.%04d.exr"),
+                                         "--width", "8", "--height", "6"};
+    render_args.insert(render_args.end(), asked.begin(), asked.end());
+    std::vector<std::string> missing = render_args;
+    missing.push_back("--missing");
+    const ProcessResult by_render = run_process(missing);
+    EXPECT_EQ(by_render.out, expected) << by_render.err;
+    // The same reasons, word for word.
+    EXPECT_EQ(by_render.err, std::regex_replace(by_frames.err, std::regex("orb-frames: "), "orb-render: "));
+
+    render_args.push_back("--skip-existing");
+    const ProcessResult rendered = run_process(render_args);
+    ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+    std::string done;
+    for (int f = 1; f <= 12; ++f)
+        if (rendered.err.find("frame " + std::to_string(f) + ": done") != std::string::npos)
+            done += std::to_string(f) + "\n";
+    EXPECT_EQ(done, expected) << rendered.err;
+    EXPECT_EQ(frames(listing).out, "");
+    EXPECT_EQ(run_process(missing).out, "");
+
+    // Without --scene the scene is not compared: the frame of the moved mirror ball passes.
+    listing.erase(listing.begin() + 3, listing.begin() + 5);
+    fs::remove(path("f.0011.exr"));
+    ASSERT_EQ(run_process({ORB_RENDER_EXE, path("moved.gltf"), "--width", "8", "--height", "6", "-q", "--frame", "11",
+                           "-o", path("f.0011.exr"), "--spp", "4", "--seed", "3"})
+                  .exit_code,
+              0);
+    EXPECT_EQ(frames(listing).out, "") << frames(listing).err;
+    listing.insert(listing.begin() + 3, {"--scene", kScene});
+    EXPECT_EQ(frames(listing).out, "11\n");
 }
 
 TEST_F(FramesCli, AClosedStdoutIsAFailure) {

@@ -52,7 +52,8 @@ std::string OutputSafety::scene_file(const std::string& name) const {
 std::string OutputSafety::tiny_exr(const std::string& name) const {
     const std::string file = path(name);
     std::vector<std::string> args = tiny_render_args(scene_file("tiny-scene.json"));
-    args.insert(args.end(), {"-o", file});
+    // Every layer, so that the tools that handle several (orb-diff --all-passes) have them.
+    args.insert(args.end(), {"-o", file, "--passes", "all"});
     const ProcessResult r = run("orb-render", args);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     fs::remove(path("tiny-scene.json"));

@@ -48,7 +48,7 @@ TEST_F(MergeCli, RefusesSlicesOfAnotherRender) {
     expect_refused({path("a.exr"), slice("depth.exr", {"--max-depth", "3"})}, "depth.exr", "orb:maxDepth 3");
     expect_refused({path("a.exr"), slice("mode.exr", {"--mode", "direct"})}, "mode.exr", "orb:mode direct");
     expect_refused({path("a.exr"), slice("size.exr", {"--width", "16"})}, "size.exr", "the width 16");
-    expect_refused({path("a.exr"), slice("passes.exr", {"--passes", "beauty"})}, "passes.exr", "orb:passes beauty");
+    expect_refused({path("a.exr"), slice("passes.exr", {"--passes", "beauty,albedo"})}, "passes.exr", "orb:passes beauty,albedo");
     expect_refused({path("a.exr"), slice("time.exr", {"--time-at", "1"})}, "time.exr", "orb:sceneTime 1");
     orb::Scene other = small_scene();
     other.spheres[1].radius = 0.6;

@@ -53,6 +53,25 @@ TEST_F(RenderCli, TwoDevicesRenderTheImageOfOne) {
     EXPECT_NE(read_film_exr(path("two.exr")).metadata.device.find("; "), std::string::npos);
 }
 
+// With only the beauty computed, each device's film holds the other
+// channels at their clear values, and the sum of the two films is still the
+// one device's image.
+TEST_F(RenderCli, TwoDevicesRenderTheBeautyOfOne) {
+    const std::string scene = write_scene(small_scene());
+    const std::vector<std::string> common{scene, "--spp", "12", "--seed", "5", "--passes", "beauty"};
+    auto args = common;
+    args.insert(args.end(), {"--device", "all", "-o", path("two.exr"), "--stats-json", path("two.json")});
+    const auto two = render_on_two(args);
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    const auto stats = nlohmann::json::parse(read_text(path("two.json")));
+    EXPECT_GT(stats.at("devices")[0].at("spp").get<std::uint64_t>(), 0u);
+    EXPECT_GT(stats.at("devices")[1].at("spp").get<std::uint64_t>(), 0u);
+    args = common;
+    args.insert(args.end(), {"--device", "1", "-o", path("one.exr")});
+    ASSERT_EQ(render_on_two(args).exit_code, 0);
+    expect_same_samples(read_film_exr(path("one.exr")), read_film_exr(path("two.exr")));
+}
+
 TEST_F(RenderCli, TwoDevicesRenderASliceOfAFrame) {
     const std::string scene = write_scene(moving_ball_scene());
     const std::vector<std::string> common{scene, "--frame", "6", "--sample-range", "8:16"};

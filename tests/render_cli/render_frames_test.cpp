@@ -41,9 +41,9 @@ int count(const std::string& text, const std::string& what) {
 
 TEST_F(RenderCli, FramesRenderEveryFrameAtItsTimeWithOneKernelBuild) {
     const std::string scene = write_scene(moving_ball_scene());
-    const auto run = render({scene, "--frames", "1-3", "--spp", "2", "-o", path("beauty.%04d.exr")});
+    const auto run = render({scene, "--frames", "1-3", "--spp", "2", "--passes", "beauty,id", "-o", path("beauty.%04d.exr")});
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_NE(run.err.find("3 rendered, 0 complete already"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("3 rendered, 0 finished already"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("(1 kernel build)"), std::string::npos) << run.err;
     EXPECT_EQ(count(run.err, "device: "), 1) << run.err;  // one session for all frames
     std::set<std::uint64_t> seeds;
@@ -98,7 +98,7 @@ TEST_F(RenderCli, FrameSlicesMergeToTheWholeFrame) {
     expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("merged.exr")));
 }
 
-TEST_F(RenderCli, SkipExistingLeavesCompleteFramesAndRendersTheOthersAgain) {
+TEST_F(RenderCli, SkipExistingLeavesFinishedFramesContinuesPartialOnesAndRendersTheOthersAgain) {
     const std::string scene = write_scene(moving_ball_scene());
     ASSERT_EQ(render({scene, "--frames", "1-2", "--spp", "2", "-o", path("f.%04d.exr")}).exit_code, 0);
     // Frame 2 damaged (cut short), frame 3 interrupted: 1 of its 8 spp.
@@ -109,20 +109,29 @@ TEST_F(RenderCli, SkipExistingLeavesCompleteFramesAndRendersTheOthersAgain) {
 
     const auto run = render({scene, "--frames", "1-4", "--spp", "2", "-o", path("f.%04d.exr"), "--skip-existing"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_NE(run.err.find("frame 1: " + path("f.0001.exr") + " is complete; skipped"), std::string::npos) << run.err;
-    EXPECT_NE(run.err.find("rendering " + path("f.0002.exr") + " again: it is unreadable"), std::string::npos)
+    EXPECT_NE(run.err.find("frame 1: " + path("f.0001.exr") + ": finished (2 spp); skipped"), std::string::npos)
         << run.err;
-    EXPECT_NE(run.err.find("rendering " + path("f.0003.exr") + " again: it holds 1 of its 8 spp"), std::string::npos)
+    EXPECT_NE(run.err.find("frame 2: " + path("f.0002.exr") + ": unreadable ("), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("): rendering again"), std::string::npos) << run.err;
+    // 1 of 2 asked: the same render, continued (its own target of 8 is not what this run asks).
+    EXPECT_NE(run.err.find("frame 3: " + path("f.0003.exr") + ": holds 1 of 2 spp: continuing it"), std::string::npos)
         << run.err;
+    EXPECT_NE(run.err.find("3 rendered (1 continued), 1 finished already"), std::string::npos) << run.err;
     EXPECT_EQ(fs::last_write_time(path("f.0001.exr")), first_time);
-    for (int frame = 2; frame <= 4; ++frame)
-        EXPECT_EQ(read_film_exr(path("f.000" + std::to_string(frame) + ".exr")).film.samples_per_pixel, 2u);
+    for (int frame = 2; frame <= 4; ++frame) {
+        const auto film = read_film_exr(path("f.000" + std::to_string(frame) + ".exr"));
+        EXPECT_EQ(film.film.sample_ranges.format(), "0:2") << frame;
+        EXPECT_EQ(film.metadata.target_spp, 2u) << frame;
+    }
 
-    // All complete: nothing to render, no OpenCL set up at all.
+    // All finished: nothing to render, no OpenCL set up at all.
     const auto again = render({scene, "--frames", "1-4", "--spp", "2", "-o", path("f.%04d.exr"), "--skip-existing"});
     ASSERT_EQ(again.exit_code, 0) << again.err;
     EXPECT_EQ(again.err.find("device: "), std::string::npos) << again.err;
-    EXPECT_NE(again.err.find("0 rendered, 4 complete already"), std::string::npos) << again.err;
+    EXPECT_NE(again.err.find("0 rendered, 4 finished already"), std::string::npos) << again.err;
+    // Fewer samples than a file holds: still finished.
+    const auto fewer = render({scene, "--frames", "1-4", "--spp", "1", "-o", path("f.%04d.exr"), "--skip-existing"});
+    EXPECT_NE(fewer.err.find("0 rendered, 4 finished already"), std::string::npos) << fewer.err;
 }
 
 TEST_F(RenderCli, ClaimsAreRespectedWhileAliveAndTakenOverWhenStale) {
@@ -140,7 +149,7 @@ TEST_F(RenderCli, ClaimsAreRespectedWhileAliveAndTakenOverWhenStale) {
               std::string::npos)
         << run.err;
     EXPECT_NE(run.err.find("f.0004.exr is claimed by host elsewhere.example pid 42"), std::string::npos) << run.err;
-    EXPECT_NE(run.err.find("3 rendered, 0 complete already, 2 claimed elsewhere"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("3 rendered, 0 finished already, 2 claimed elsewhere"), std::string::npos) << run.err;
     EXPECT_EQ(files(), (std::vector<std::string>{"f.0001.exr", "f.0002.exr.claim", "f.0003.exr", "f.0004.exr.claim",
                                                  "f.0005.exr", "scene.json"}));
 

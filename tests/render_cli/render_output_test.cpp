@@ -30,7 +30,7 @@ std::set<std::string> channel_names(const orb::exr::testing::RawExr& raw) {
 TEST_F(RenderCli, WritesEveryDocumentedChannelAndAttribute) {
     const orb::Scene scene = small_scene();
     const std::string scene_file = write_scene(scene);
-    const auto run = render({scene_file, "-o", path("out.exr"), "--seed", "7"});
+    const auto run = render({scene_file, "-o", path("out.exr"), "--seed", "7", "--passes", "all"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
 
     const auto raw = read_raw_exr(path("out.exr"));
@@ -70,9 +70,41 @@ TEST_F(RenderCli, WritesEveryDocumentedChannelAndAttribute) {
     EXPECT_EQ(h.typedAttribute<Imf::StringAttribute>("orb:version").value(), ORB_VERSION);
 }
 
+TEST_F(RenderCli, TheDefaultIsTheBeautyLayerInFloatWithZip) {
+    const auto run = render({write_scene(small_scene()), "-o", path("out.exr")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto raw = read_raw_exr(path("out.exr"));
+    EXPECT_EQ(channel_names(raw), (std::set<std::string>{"R", "G", "B", "A"}));
+    for (const auto& [name, type] : raw.channel_types) EXPECT_EQ(type, "FLOAT") << name;
+    Imf::InputFile file(path("out.exr").c_str());
+    EXPECT_EQ(file.header().compression(), Imf::ZIP_COMPRESSION);
+    EXPECT_EQ(file.header().typedAttribute<Imf::StringAttribute>("orb:passes").value(), "beauty");
+}
+
+TEST_F(RenderCli, EveryCompressionStoresTheSameValues) {
+    const std::string scene = write_scene(small_scene());
+    ASSERT_EQ(render({scene, "-o", path("zip.exr"), "--passes", "all"}).exit_code, 0);
+    const auto reference = read_raw_exr(path("zip.exr"));
+    const std::map<std::string, Imf::Compression> kinds{
+        {"none", Imf::NO_COMPRESSION}, {"rle", Imf::RLE_COMPRESSION}, {"zips", Imf::ZIPS_COMPRESSION},
+        {"zip", Imf::ZIP_COMPRESSION}, {"piz", Imf::PIZ_COMPRESSION}};
+    for (const auto& [name, kind] : kinds) {
+        const std::string out = path(name + "-out.exr");
+        const auto run = render({scene, "-o", out, "--passes", "all", "--compression", name});
+        ASSERT_EQ(run.exit_code, 0) << name << ": " << run.err;
+        Imf::InputFile file(out.c_str());
+        EXPECT_EQ(file.header().compression(), kind) << name;
+        // Lossless: the same seed gives the same image, bit for bit, however it is stored.
+        EXPECT_EQ(read_raw_exr(out).channels, reference.channels) << name;
+    }
+    const auto bad = render({scene, "-o", path("bad.exr"), "--compression", "dwaa"});
+    EXPECT_EQ(bad.exit_code, 2) << bad.err;
+    EXPECT_NE(bad.err.find("--compression"), std::string::npos) << bad.err;
+}
+
 TEST_F(RenderCli, PartsAddUpToBeautyAndAuxiliaryChannelsHaveTheirMeaning) {
     const orb::Scene scene = small_scene();
-    const auto run = render({write_scene(scene), "-o", path("out.exr"), "--spp", "6"});
+    const auto run = render({write_scene(scene), "-o", path("out.exr"), "--spp", "6", "--passes", "all"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto raw = read_raw_exr(path("out.exr"));
     const auto& ch = raw.channels;

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "frame_checks.h"
+#include "missing_frames.h"
 #include "orb/cli/frame_spec.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/tool_main.h"
@@ -21,8 +21,16 @@ struct Settings {
     std::string pattern;
     bool paths = false;
     bool missing = false;
-    orb::frames::FrameRequirements wanted;
+    std::string scene;
+    orb::request::RequestOptions render;  // the render the frames are asked to hold
 };
+
+// Whether any option of the render asked for was given.
+bool any_render_option(const Settings& s) {
+    const orb::request::RequestOptions& r = s.render;
+    return !s.scene.empty() || r.spp || r.sample_range || r.seed || r.mode || r.sampler || r.max_depth || r.width ||
+           r.height || r.passes || r.half || r.fps || r.same_seed;
+}
 
 // "-" reads the list from stdin, where newlines and spaces separate items as
 // commas do, so the output of one orb-frames can feed another.
@@ -62,8 +70,6 @@ std::string canonical_sample_range(const std::string& text) {
 
 int main(int argc, char** argv) {
     Settings s;
-    std::optional<unsigned long long> spp;
-    std::optional<int> width, height;
     std::optional<std::string> samples;
     return orb::cli::run_tool(
         argc, argv, "orb-frames", "List the frames of a frame list, their file names, or those not yet rendered",
@@ -75,48 +81,49 @@ int main(int argc, char** argv) {
                 ->option_text("PATTERN");
             app.add_flag("--paths", s.paths, "Print each frame's file name instead of its number");
             app.add_flag("--missing", s.missing,
-                         "Only frames whose file is not a complete orb-render EXR (reached its target spp, not truncated)");
-            app.add_option("--spp", spp, "With --missing: a frame must also have exactly N samples per pixel")
-                ->option_text("N")
-                ->check(CLI::Range(1ULL, 2147483647ULL));
-            app.add_option("--samples", samples,
-                           "With --missing: a frame must also hold exactly the samples START ... START+COUNT-1 "
-                           "(a slice from orb-render --sample-range)")
-                ->option_text("START:COUNT");
-            app.add_option("--width", width, "With --missing: a frame must also be W pixels wide")
-                ->option_text("W")
-                ->check(CLI::Range(1, 1 << 20));
-            app.add_option("--height", height, "With --missing: a frame must also be H pixels high")
-                ->option_text("H")
-                ->check(CLI::Range(1, 1 << 20));
+                         "Only the frames that orb-render --skip-existing with the same options would render: "
+                         "absent, stopped short, damaged, or another render");
+            app.add_option("--scene", s.scene,
+                           "With --missing: the scene orb-render renders, so that its content, camera and render "
+                           "block are compared too")
+                ->option_text("SCENE");
+            orb::request::add_request_options(app, s.render);
+            app.add_option("--samples", samples, "Older name of --sample-range")->option_text("START:COUNT");
             app.footer(
                 "Prints one frame number (or with --paths one file name) per line, in the list's order.\n"
                 "Examples:\n"
                 "  for f in $(orb-frames 1-240x2); do orb-render shot.json --frame $f -o beauty.%04d.exr; done\n"
                 "  orb-frames 1-240 shots/beauty.%04d.exr --missing           # frames still to render\n"
                 "  orb-frames 1-240 shots/beauty.####.exr --missing --spp 256 --paths\n"
+                "  orb-frames 1-240 shots/beauty.%04d.exr --missing --scene shot.glb --spp 256 --passes all\n"
                 "Frame lists and patterns: docs/frames.md.\n"
                 "Exit status: 0 success (whether or not frames are missing), 1 output failed, 2 usage error.");
         },
         [&]() -> int {
-            if (samples) samples = canonical_sample_range(*samples);
-            s.wanted = {spp, samples, width, height};
+            if (samples) {
+                if (s.render.sample_range) throw UsageError("--samples is --sample-range's older name; give one");
+                s.render.sample_range = canonical_sample_range(*samples);
+            }
             if ((s.paths || s.missing) && s.pattern.empty())
                 throw UsageError(std::string(s.missing ? "--missing" : "--paths") + " needs a PATTERN, e.g. beauty.%04d.exr");
-            if ((spp || samples || width || height) && !s.missing)
-                throw UsageError("--spp, --samples, --width and --height go with --missing");
+            if (any_render_option(s) && !s.missing)
+                throw UsageError("--scene and the render's options (--spp, --width, --passes, ...) go with --missing");
+            orb::request::check_request_options(s.render);
             if (!s.pattern.empty() && orb::cli::count_frame_fields(s.pattern) == 0)
                 throw UsageError("'" + s.pattern + "' has no frame number: write %04d or #### where it goes");
             const orb::cli::FrameSpec spec = orb::cli::parse_frame_spec(list_text(s.list));
+            std::optional<orb::frames::MissingFrames> judge;
+            if (s.missing) judge.emplace(s.scene, s.render);
             std::string out;
             for (int frame : spec) {
                 const std::string path = s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, frame);
-                if (s.missing) {
-                    const std::string why = orb::frames::why_not_done(path, s.wanted);
-                    if (why.empty()) continue;
+                if (judge) {
+                    const orb::exr::OutputJudgement verdict = judge->judge(path, frame);
+                    if (verdict.state == orb::exr::OutputState::Finished) continue;
                     // An absent file is the usual case and says nothing new; a present one that does
-                    // not count (interrupted, truncated, another --spp) is worth a note.
-                    if (why != "no such file") orb::cli::info("frame " + std::to_string(frame) + ": " + path + ": " + why);
+                    // not count (stopped short, truncated, another render) is worth a note.
+                    if (verdict.state != orb::exr::OutputState::Missing)
+                        orb::cli::info("frame " + std::to_string(frame) + ": " + path + ": " + verdict.reason);
                 }
                 out += s.paths ? path : std::to_string(frame);
                 out += '\n';

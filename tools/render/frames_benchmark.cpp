@@ -53,10 +53,12 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
     const int spp = static_cast<int>(options.spp.value_or(1));
     const std::string render_name = "render (" + std::to_string(spp) + " spp)";
     Phase pose{"pose"}, upload{"upload"}, render_phase{render_name.c_str()}, read{"read back"}, wait{"wait for writer"},
-        encode{"encode+write (beside rendering)"};
+        encode{"alone: encode"}, write{"alone: write+fsync"};
     exr::ExrWriteOptions write_options;
     write_options.passes = plan.passes;
     write_options.half = plan.half;
+    write_options.compression = plan.compression;
+    std::size_t bytes_per_frame = 0;
     try {
         BackgroundWriter writer;
         for (std::size_t i = 0; i < jobs.size(); ++i) {
@@ -86,14 +88,22 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
             wait.add(writer.seconds_waited() - waited_before);
         }
         writer.finish();
-        // The writer's own time, measured apart from rendering: one frame encoded and written alone.
-        for (std::size_t i = 0; i < std::min<std::size_t>(jobs.size(), 4); ++i) {
-            const Clock::time_point t = Clock::now();
+        // The writer's own time, measured apart from rendering: one frame
+        // encoded, then written (temporary file, fsync, rename), alone.
+        // Its memory is reused from frame to frame, as the writer's is.
+        const std::size_t alone = std::min<std::size_t>(jobs.size(), 4);
+        exr::ExrEncoding encoding;
+        for (std::size_t i = 0; i < alone; ++i) {
             FinalImage image{renderer->read_film(), plan_metadata(plan), write_options};
-            cli::OutputFile(folder + "/alone.exr", "-o").write(image.encode());
+            Clock::time_point t = Clock::now();
+            image.encode(encoding);
             encode.add(seconds_since(t));
+            bytes_per_frame = encoding.bytes().size();
+            t = Clock::now();
+            cli::OutputFile(folder + "/alone.exr", "-o").write(encoding.bytes());
+            write.add(seconds_since(t));
         }
-        encode.total *= static_cast<double>(jobs.size()) / static_cast<double>(std::min<std::size_t>(jobs.size(), 4));
+        for (Phase* phase : {&encode, &write}) phase->total *= static_cast<double>(jobs.size()) / static_cast<double>(alone);
     } catch (...) {
         std::filesystem::remove_all(folder);
         throw;
@@ -103,10 +113,13 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
     const double n = static_cast<double>(jobs.size());
     const double overhead_ms = 1000.0 * (pose.total + upload.total + read.total + wait.total) / n;
     std::string line = "frames benchmark: " + std::to_string(jobs.size()) + " frames at " +
-                       std::to_string(plan.config.width) + "x" + std::to_string(plan.config.height) + ", " +
-                       kernel_builds_text(renderer->programs_built()) + "; per frame, mean (max) ms:";
+                       std::to_string(plan.config.width) + "x" + std::to_string(plan.config.height) + ", layers " +
+                       exr::format_passes(plan.passes) + (plan.half ? " (half)" : "") + ", " +
+                       exr::compression_name(plan.compression) + " " + std::to_string(bytes_per_frame / 1000) +
+                       " kB a frame, " + kernel_builds_text(renderer->programs_built()) +
+                       "; per frame, mean (max) ms:";
     char text[128];
-    for (const Phase* phase : {&pose, &upload, &render_phase, &read, &wait, &encode}) {
+    for (const Phase* phase : {&pose, &upload, &render_phase, &read, &wait, &encode, &write}) {
         std::snprintf(text, sizeof text, " %s %.1f (%.1f);", phase->name, 1000.0 * phase->total / n,
                       1000.0 * phase->most);
         line += text;

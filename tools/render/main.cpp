@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
                 return renders_frames(options) ? run_frames_benchmark(plan, options, outputs)
                                                : run_benchmark(plan, options, outputs);
             // Frames, and outputs left alone when complete, are prepared one at a time.
-            if (renders_frames(options) || options.skip_existing || options.claim)
+            if (renders_frames(options) || options.skip_existing || options.claim || options.missing)
                 return run_frames(plan, options, outputs);
             return run_render(plan, options, outputs);
         });

@@ -16,6 +16,7 @@ public:
         metadata_.device = devices_label(renderer);
         options_.half = plan.half;
         options_.passes = plan.passes;
+        options_.compression = plan.compression;
     }
 
     FinalImage image(double seconds_this_run, render::Film reuse = {}) {

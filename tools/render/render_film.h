@@ -31,6 +31,7 @@ struct FinalImage {
     exr::ExrMetadata metadata;
     exr::ExrWriteOptions options;
     std::string encode() const { return exr::encode_film_exr(film, metadata, options); }
+    void encode(exr::ExrEncoding& into) const { exr::encode_film_exr(film, metadata, options, into); }
 };
 
 struct FilmOutcome {

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <chrono>
 #include <filesystem>
 #include <optional>
@@ -16,7 +17,7 @@
 #include "orb/cli/output_overlap.h"
 #include "orb/cli/tool_main.h"
 #include "orb/exr/film_exr.h"
-#include "orb/exr/render_status.h"
+#include "orb/exr/render_request.h"
 #include "orb/scene/error.h"
 #include "progress_reporter.h"
 #include "render_film.h"
@@ -28,15 +29,62 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Why `path` is not a finished render, or nothing when it is one (the one
-// definition of finished, orb::exr::inspect_render; every block decoded,
-// since a frame skipped by mistake costs more than reading it).
-std::optional<std::string> unfinished(const std::string& path) {
-    const exr::RenderStatus status = exr::inspect_render(path, exr::RenderCheck::Pixels);
-    if (status.complete) return std::nullopt;
-    if (!status.exists) return "it does not exist";
-    if (!status.readable) return "it is unreadable (" + path + ": " + status.reason + ")";
-    return "it holds " + std::to_string(status.spp) + " of its " + std::to_string(status.target_spp) + " spp";
+// What is at a job's output, against what this run asks of it (the one
+// definition of finished, orb::exr::judge_output). Every block is decoded:
+// a frame skipped or continued by mistake costs more than reading it.
+exr::OutputJudgement judge(RenderPlan& plan, const Job& job) {
+    return exr::judge_output(job.output, request_for(plan, job.frame), exr::RenderCheck::Pixels);
+}
+
+// The one line saying what happens to an output that is there but is not
+// the finished render asked for.
+void announce(const std::string& label, const std::string& output, const exr::OutputJudgement& verdict) {
+    if (verdict.state == exr::OutputState::Continuable)
+        cli::info(label + output + ": " + verdict.reason + ": continuing it");
+    else if (verdict.state == exr::OutputState::Different)
+        cli::info(label + output + ": " + verdict.reason + ": rendering again");
+}
+
+// Loads the samples of `output` into the renderer, which set_up() left
+// empty at the plan's first sample. Returns false, after saying why, when
+// the file cannot be continued after all (changed since it was judged);
+// the frame is then rendered from its first sample.
+bool continue_from(RenderPlan& plan, const std::string& label, const std::string& output,
+                   render::Renderer& renderer) {
+    try {
+        exr::ExrFilm file = exr::read_film_exr(output);
+        exr::require_resumable(file, plan.passes, output);
+        const render::SampleRanges& held = file.film.sample_ranges;
+        if (held.ranges().size() != 1 || held.first() != plan.first_sample ||
+            held.total() >= plan.target_spp)
+            throw InputError(output + ": holds the samples " + held.format() + " now");
+        renderer.load_film(file.film);
+        file.film = {};  // on the device now; the metadata stays for orb:renderSeconds
+        plan.resumed = std::move(file);
+        return true;
+    } catch (const std::exception& e) {
+        cli::warning(label + "cannot continue: " + e.what() + "; rendering it from its first sample");
+        renderer.clear(plan.first_sample);
+        return false;
+    }
+}
+
+// --missing: what --skip-existing would render, without rendering (nor
+// opening a device). Headers only, as orb-frames --missing reads them.
+int list_missing(RenderPlan& plan, const std::vector<Job>& jobs) {
+    std::string out;
+    for (const Job& job : jobs) {
+        const exr::OutputJudgement verdict = exr::judge_output(job.output, request_for(plan, job.frame));
+        if (verdict.state == exr::OutputState::Finished) continue;
+        if (verdict.state != exr::OutputState::Missing) cli::info(label_of(job) + job.output + ": " + verdict.reason);
+        out += (job.frame ? std::to_string(*job.frame) : job.output) + "\n";
+    }
+    std::fputs(out.c_str(), stdout);
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        cli::error("cannot write to stdout");
+        return cli::kFailure;
+    }
+    return cli::kSuccess;
 }
 
 // A missing or read-only folder fails at once, not at the first frame that
@@ -73,24 +121,29 @@ cli::OutputFile prepare_image(const std::string& path, const RenderOptions& opti
 
 int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
     const std::vector<Job> jobs = jobs_of(plan, options);
+    if (options.missing) return list_missing(plan, jobs);
     require_output_folders(jobs);
-    const bool skip_complete = options.skip_existing || options.claim;
+    const bool finish_existing = options.skip_existing || options.claim;
     const Clock::time_point start = Clock::now();
 
     std::optional<render::Renderer> renderer;
     BackgroundWriter writer;  // after the renderer: destroyed first, so a pending write ends before it
     std::vector<RunStats> rendered;
     std::vector<long> skipped;
-    int claimed_elsewhere = 0;
+    int claimed_elsewhere = 0, continued = 0;
     for (const Job& job : jobs) {
         if (interrupt_requested().load()) break;
         const std::string label = label_of(job);
-        if (skip_complete) {
-            if (!unfinished(job.output)) {
-                cli::info(label + job.output + " is complete; skipped");
-                if (job.frame) skipped.push_back(*job.frame);
-                continue;
-            }
+        std::optional<exr::OutputJudgement> verdict;
+        const auto finished = [&] {
+            if (verdict->state != exr::OutputState::Finished) return false;
+            cli::info(label + job.output + ": finished (" + std::to_string(verdict->held_spp) + " spp); skipped");
+            if (job.frame) skipped.push_back(*job.frame);
+            return true;
+        };
+        if (finish_existing) {
+            verdict = judge(plan, job);
+            if (finished()) continue;
         }
         std::optional<FrameClaim> claim;
         if (options.claim) {
@@ -101,19 +154,18 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
                 ++claimed_elsewhere;
                 continue;
             }
-            // Another machine may have finished it between the check and the claim.
-            if (!unfinished(job.output)) {
-                cli::info(label + job.output + " is complete; skipped");
-                if (job.frame) skipped.push_back(*job.frame);
-                continue;
-            }
-        } else if (skip_complete) {
-            if (const auto why = unfinished(job.output); why && *why != "it does not exist")
-                cli::info(label + "rendering " + job.output + " again: " + *why);
+            // Another machine may have finished or continued it between the check and the claim.
+            verdict = judge(plan, job);
+            if (finished()) continue;
         }
+        if (verdict) announce(label, job.output, *verdict);
 
         cli::OutputFile image = prepare_image(job.output, options);
         set_up(plan, job, renderer);
+        plan.resumed.reset();
+        if (verdict && verdict->state == exr::OutputState::Continuable &&
+            continue_from(plan, label, job.output, *renderer))
+            ++continued;
         FilmOutcome outcome = render_film(*renderer, plan, options, image, label, claim ? &*claim : nullptr,
                                           writer.take_spare_film());
         if (!outcome.rendered) {
@@ -139,8 +191,9 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
                                                                         : stats_json(rendered.front()));
     if (interrupt_requested().load()) return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
     if (jobs.size() > 1)
-        cli::info("frames: " + std::to_string(rendered.size()) + " rendered, " + std::to_string(skipped.size()) +
-                  " complete already" +
+        cli::info("frames: " + std::to_string(rendered.size()) + " rendered" +
+                  (continued ? " (" + std::to_string(continued) + " continued)" : "") + ", " +
+                  std::to_string(skipped.size()) + " finished already" +
                   (options.claim ? ", " + std::to_string(claimed_elsewhere) + " claimed elsewhere" : "") + " in " +
                   format_duration(seconds_since(start)) +
                   (renderer ? " (" + kernel_builds_text(renderer->programs_built()) + ")" : ""));

@@ -11,23 +11,10 @@
 #include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
 #include "orb/cli/tool_main.h"
-#include "orb/exr/passes.h"
-#include "orb/render/sample_ranges.h"
+#include "orb/exr/film_exr.h"
 
 namespace orb::render_cli {
 namespace {
-
-const CLI::Validator kPositiveSeconds(
-    [](std::string& text) -> std::string {
-        try {
-            std::size_t used = 0;
-            const double value = std::stod(text, &used);
-            if (used == text.size() && std::isfinite(value) && value > 0) return {};
-        } catch (const std::exception&) {
-        }
-        return "expected a positive number of seconds, got '" + text + "'";
-    },
-    "SECONDS>0");
 
 const CLI::Validator kFiniteNumber(
     [](std::string& text) -> std::string {
@@ -40,33 +27,6 @@ const CLI::Validator kFiniteNumber(
         return "expected a number, got '" + text + "'";
     },
     "NUMBER");
-
-// A seed is any 64-bit value, written in decimal. CLI11 alone would wrap -1 to
-// 2^64-1 and clamp larger values, so distinct seeds would collide: only plain
-// digits that fit are accepted.
-const CLI::Validator kSeed(
-    [](std::string& text) -> std::string {
-        std::uint64_t value = 0;
-        const char* end = text.data() + text.size();
-        const auto [stop, error] = std::from_chars(text.data(), end, value);
-        if (!text.empty() && error == std::errc{} && stop == end) return {};
-        return "expected a whole number in [0, 18446744073709551615], got '" + text + "'";
-    },
-    "0..2^64-1");
-
-// START:COUNT, COUNT within what orb:spp (an EXR int) can record.
-const CLI::Validator kSampleRange(
-    [](std::string& text) -> std::string {
-        try {
-            const render::SampleRange range = render::parse_sample_range(text);
-            if (range.count > static_cast<std::uint64_t>(INT_MAX))
-                return "COUNT must be at most 2147483647 (orb:spp is an EXR int), got '" + text + "'";
-        } catch (const std::invalid_argument& e) {
-            return e.what();
-        }
-        return {};
-    },
-    "START:COUNT");
 
 const char* kExamples = R"(Examples:
   orb-render scenes/cornell.json -o cornell.exr
@@ -87,37 +47,21 @@ Details: docs/orb-render.md)";
 }  // namespace
 
 void add_render_options(CLI::App& app, RenderOptions& o) {
+    const CLI::Validator& seconds = request::positive_number();
     app.add_option("SCENE", o.scene, "Scene file (Orb JSON or binary .orb, .scn, glTF, PLY) or - for stdin");
     app.add_option("-o,--output", o.output, "Output EXR, or - for stdout");
     app.add_flag("--list-devices", o.list_devices, "List OpenCL devices and exit");
     app.add_option("--device", o.device, "Device index or name substring (default: fastest GPU, else CPU)");
-    app.add_option("--spp", o.spp, "Samples per pixel to reach (default: the scene's render.spp)")
-        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{INT_MAX}));
-    app.add_option("--sample-range", o.sample_range,
-                   "Render exactly the samples START ... START+COUNT-1 (a slice of a frame, for orb-merge)")
-        ->check(kSampleRange);
-    app.add_option("--time", o.time_limit, "Stop after this many seconds of rendering")->check(kPositiveSeconds);
-    app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")
-        ->check(kPositiveSeconds);
+    request::add_request_options(app, o);
+    app.add_option("--time", o.time_limit, "Stop after this many seconds of rendering")->check(seconds);
+    app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")->check(seconds);
     app.add_option("--resume", o.resume, "Continue the render stored in this orb-render EXR");
-    app.add_option("--seed", o.seed, "Random seed, 0 ... 2^64-1 (default 0)")->check(kSeed);
-    app.add_option("--mode", o.mode, "Light transport: global (path tracing) or direct")
-        ->check(CLI::IsMember({"global", "direct"}));
-    app.add_option("--sampler", o.sampler,
-                   "Random numbers: sobol (low discrepancy, default) or independent")
-        ->check(CLI::IsMember({"sobol", "independent"}));
-    app.add_option("--max-depth", o.max_depth, "Maximum path depth (default: the scene's render.max_depth)")
-        ->check(CLI::Range(0, 1024));
-    app.add_option("--width", o.width, "Image width (default: the scene's render.width)")->check(CLI::Range(1, 65536));
-    app.add_option("--height", o.height, "Image height (default: the scene's render.height)")
-        ->check(CLI::Range(1, 65536));
-    app.add_flag("--half", o.half, "Store colour layers as HALF (Z and id stay FLOAT)");
-    app.add_option("--passes", o.passes,
-                   "Layers to write (only these are computed; with --benchmark, the layers to time): beauty,direct,indirect,emission,albedo,normal,depth,variance,id or all");
+    app.add_option("--compression", o.compression,
+                   "EXR compression, all lossless: zip (default), zips, piz, rle or none")
+        ->check(CLI::IsMember(exr::compression_names()));
     app.add_option("--stats-json", o.stats_json, "Write the run's figures as JSON to FILE (- for stdout)");
     app.add_flag("--benchmark", o.benchmark, "Time warm-up and timed passes, write no image, print samples_per_second=");
-    app.add_option("--benchmark-seconds", o.benchmark_seconds, "Timed part of --benchmark (default 5)")
-        ->check(kPositiveSeconds);
+    app.add_option("--benchmark-seconds", o.benchmark_seconds, "Timed part of --benchmark (default 5)")->check(seconds);
     app.add_option("--time-at", o.time_at, "Render an animated scene at this time in seconds")->check(kFiniteNumber);
     app.add_option("--frames", o.frames,
                    "Render these frames of an animation: 1-240, 1-240x2 (every 2nd), 1,5,9-12; -o needs a frame "
@@ -125,19 +69,21 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
         ->option_text("SPEC");
     app.add_option("--frame", o.frame, "Render one frame of an animation (time = frame / fps)")
         ->check(CLI::Range(0L, static_cast<long>(cli::kMaxFrameNumber)));
-    app.add_option("--fps", o.fps, "Frames per second for --frame/--frames (default 24)")->check(kPositiveSeconds);
-    app.add_flag("--same-seed", o.same_seed, "Every frame with --seed itself, not a seed derived from the frame");
     app.add_flag("--skip-existing", o.skip_existing,
-                 "Leave outputs that are complete (readable, at their target spp) alone; render the others");
+                 "Finish outputs: leave those that hold this render alone, continue those that stopped short, "
+                 "render the others again");
     app.add_flag("--claim", o.claim,
                  "Claim each frame with OUT.claim before rendering it, so machines sharing the folder split the "
                  "frames (implies --skip-existing)");
     app.add_option("--claim-stale-after", o.claim_stale_after,
                    "Seconds after which another host's claim that was not refreshed is taken over (default 600)")
-        ->check(kPositiveSeconds);
+        ->check(seconds);
+    app.add_flag("--missing", o.missing,
+                 "Render nothing: print the frames (or the output) that --skip-existing would render, one a line, "
+                 "with why on stderr");
     app.add_option("--progress-interval", o.progress_interval,
                    "Seconds between progress lines when stderr is not a terminal (default 5)")
-        ->check(kPositiveSeconds);
+        ->check(seconds);
     app.add_option("--kernel-dir", o.kernel_dir, "Development: load OpenCL kernels from this folder");
     app.add_flag("--no-cache", o.no_cache, "Do not read or write cached kernel binaries");
     app.footer(kExamples);
@@ -147,19 +93,13 @@ void check_option_combinations(const RenderOptions& o) {
     using cli::UsageError;
     if (o.list_devices) return;
     if (o.scene.empty()) throw UsageError("missing SCENE (a scene file, or - for stdin)");
-    if (o.passes) {
-        try {
-            exr::parse_passes(*o.passes);
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(std::string("--passes: ") + e.what());
-        }
-    }
+    request::check_request_options(o);
     if (o.frame && o.frames) throw UsageError("--frame N and --frames SPEC exclude each other");
     std::size_t frame_count = o.frame ? 1 : 0;
     if (o.frames) frame_count = parse_frames_option(*o.frames).size();
     if (renders_frames(o)) {
         const char* conflicting = o.time_at            ? "--time-at (the time is frame / fps)"
-                                  : !o.resume.empty() ? "--resume (render incomplete frames again)"
+                                  : !o.resume.empty() ? "--resume (--skip-existing continues every frame that stopped short)"
                                                       : nullptr;
         if (conflicting) throw UsageError(std::string("--frame/--frames take no ") + conflicting);
     } else {
@@ -168,6 +108,14 @@ void check_option_combinations(const RenderOptions& o) {
     }
     if (!o.resume.empty() && (o.skip_existing || o.claim))
         throw UsageError(std::string(o.claim ? "--claim" : "--skip-existing") + " and --resume exclude each other");
+    if (o.missing) {
+        const char* conflicting = o.benchmark              ? "--benchmark"
+                                  : !o.resume.empty()      ? "--resume"
+                                  : o.claim                ? "--claim"
+                                  : !o.stats_json.empty() ? "--stats-json"
+                                                           : nullptr;
+        if (conflicting) throw UsageError(std::string("--missing renders nothing and takes no ") + conflicting);
+    }
     if (o.benchmark) {
         if (o.skip_existing || o.claim)
             throw UsageError("--benchmark writes no image and takes no --skip-existing or --claim");
@@ -178,15 +126,13 @@ void check_option_combinations(const RenderOptions& o) {
                                   : o.sample_range    ? "--sample-range"
                                   : o.time_limit      ? "--time"
                                   : o.half            ? "--half"
+                                  : o.compression && !renders_frames(o) ? "--compression (but --benchmark --frames takes it)"
                                                       : nullptr;
         if (conflicting)
             throw UsageError(std::string("--benchmark writes no image and takes no ") + conflicting +
                              " (use --benchmark-seconds for its length)");
         return;
     }
-    if (o.sample_range && o.spp)
-        throw UsageError("--sample-range START:COUNT already says how many samples to render; drop --spp " +
-                         std::to_string(*o.spp));
     if (o.output.empty()) throw UsageError("missing -o/--output (an EXR path, or - for stdout)");
     cli::require_exr_output_name(o.output);
     if (cli::is_stdio(o.output) && o.checkpoint)
@@ -202,6 +148,7 @@ void check_option_combinations(const RenderOptions& o) {
     }
     if (o.claim && cli::is_stdio(o.output)) throw UsageError("--claim needs an output file, not -o -");
     if (o.skip_existing && cli::is_stdio(o.output)) throw UsageError("--skip-existing needs an output file, not -o -");
+    if (o.missing && cli::is_stdio(o.output)) throw UsageError("--missing needs an output file, not -o -");
 }
 
 bool renders_frames(const RenderOptions& o) { return o.frame.has_value() || o.frames.has_value(); }

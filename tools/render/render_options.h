@@ -9,37 +9,31 @@
 #include <string>
 #include <vector>
 
+#include "orb/request/request_options.h"
+
 namespace orb::render_cli {
 
-struct RenderOptions {
+// The options that say which render an output holds (--spp, --width,
+// --passes, --fps, ...) are orb::request's, shared with orb-frames.
+struct RenderOptions : request::RequestOptions {
     std::string scene;   // path or "-"
     std::string output;  // path or "-"
     bool list_devices = false;
     std::string device;
-    std::optional<std::uint64_t> spp;
-    std::optional<std::string> sample_range;  // "START:COUNT"
     std::optional<double> time_limit;
     std::optional<double> checkpoint;
     std::string resume;
-    std::optional<std::uint64_t> seed;
-    std::optional<std::string> mode;
-    std::optional<std::string> sampler;
-    std::optional<int> max_depth;
-    std::optional<int> width;
-    std::optional<int> height;
-    bool half = false;
-    std::optional<std::string> passes;
+    std::optional<std::string> compression;
     std::string stats_json;
     bool benchmark = false;
     double benchmark_seconds = 5.0;
     std::optional<double> time_at;
-    // Animations (frame_plan.h).
+    // Animations (orb/request/request_settings.h).
     std::optional<std::string> frames;  // --frames SPEC
     std::optional<long> frame;          // --frame N
-    std::optional<double> fps;
-    bool same_seed = false;
     bool skip_existing = false;
     bool claim = false;
+    bool missing = false;  // --missing: list what would be rendered, render nothing
     double claim_stale_after = 600;   // seconds without a refresh before another host's claim is taken over
     double progress_interval = 5;     // seconds between progress lines when stderr is not a terminal
     std::string kernel_dir;

@@ -8,7 +8,8 @@ namespace orb::render_cli {
 RenderOutputs prepare_render_outputs(const RenderOptions& o) {
     // Frames, and outputs that may be left alone, are prepared one at a time
     // (render_frames.cpp); only --stats-json is prepared here for them.
-    const bool image_later = renders_frames(o) || o.skip_existing || o.claim;
+    // --missing writes nothing.
+    const bool image_later = renders_frames(o) || o.skip_existing || o.claim || o.missing;
     std::vector<cli::NamedPath> outputs;
     if (!o.output.empty() && !image_later) outputs.push_back({"-o", o.output});
     if (!o.stats_json.empty()) outputs.push_back({"--stats-json", o.stats_json});

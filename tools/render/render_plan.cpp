@@ -3,20 +3,13 @@
 #include <filesystem>
 #include <sstream>
 
-#include "frame_plan.h"
-#include "orb/cli/io.h"
-#include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
-#include "orb/exr/environment_map.h"
-#include "orb/scene/animation.h"
+#include "orb/request/scene_input.h"
 #include "orb/scene/error.h"
-#include "orb/scene/import.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::render_cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 const char* mode_name(render::IntegratorMode mode) {
     return mode == render::IntegratorMode::Direct ? "direct" : "global";
@@ -32,40 +25,6 @@ const char* sampler_name(render::SamplerKind sampler) {
 
 render::SamplerKind parse_sampler(const std::string& name) {
     return name == "independent" ? render::SamplerKind::Independent : render::SamplerKind::Sobol;
-}
-
-Scene import_from(const std::string& path, std::string& label) {
-    label = cli::is_stdio(path) ? "<stdin>" : path;
-    const std::string bytes = cli::read_input(path);
-    const std::string base_dir =
-        cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
-    ImportResult imported = import_scene(bytes, label, base_dir);
-    for (const std::string& message : imported.warnings) cli::warning(message);
-    for (const std::string& message : imported.notices) cli::warning(message);
-    // The map's texels join the scene before it is hashed (they are part of its identity) and rendered.
-    exr::load_environment_map(imported.scene, base_dir, label);
-    if (!scene_has_light(imported.scene))
-        cli::warning(label + ": the scene has no light (no sphere emits and there is no environment); it renders black");
-    return std::move(imported.scene);
-}
-
-// Posing multiplies scales and adds offsets, so an animated scene within the
-// limits at rest can leave them at some moment: check what the device gets.
-Scene pose(const Scene& imported, double seconds, const std::string& label) {
-    Scene posed = scene_at_time(imported, seconds);
-    if (!imported.animation.empty()) {
-        std::ostringstream at;
-        at << label << " at " << seconds << " s";
-        validate_scene(posed, at.str());
-    }
-    return posed;
-}
-
-// The same for a scene the caller gives up: one without animation is its own
-// pose, moved rather than copied (ten million spheres are a gigabyte).
-Scene pose(Scene&& imported, double seconds, const std::string& label) {
-    if (imported.animation.empty()) return std::move(imported);
-    return pose(static_cast<const Scene&>(imported), seconds, label);
 }
 
 // A setting the resumed file fixes may be repeated on the command line, but
@@ -95,7 +54,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 
     require_same(o.time_at, m.scene_time, "--time-at", "orb:sceneTime", path);
     plan.scene_time = m.scene_time;
-    plan.scene = pose(imported, plan.scene_time, plan.scene_label);
+    plan.scene = request::pose_scene(imported, plan.scene_time, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     if (plan.scene_hash != m.scene_hash)
         throw InputError(path + ": was rendered from a different scene (orb:sceneHash " + m.scene_hash + ", from " +
@@ -136,53 +95,56 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 
 RenderPlan make_render_plan(const RenderOptions& o) {
     RenderPlan plan;
-    Scene imported = import_from(o.scene, plan.scene_label);
+    Scene imported = request::read_scene(o.scene, plan.scene_label);
 
     plan.config.device = o.device;
     plan.config.kernel_dir = o.kernel_dir;
     plan.config.use_binary_cache = !o.no_cache;
     plan.half = o.half;
+    if (o.compression) plan.compression = exr::parse_compression(*o.compression);
 
     if (!o.resume.empty()) {
         apply_resume(o, imported, plan);
         return plan;
     }
     // The render block (size, spp, depth) is not animated: any pose has the rest pose's.
-    const RenderSettings& settings = imported.render;
-    plan.config.width = o.width.value_or(settings.width);
-    plan.config.height = o.height.value_or(settings.height);
-    plan.config.seed = o.seed.value_or(0);
-    plan.config.mode = parse_mode(o.mode.value_or("global"));
-    plan.config.sampler = parse_sampler(o.sampler.value_or("sobol"));
-    plan.config.max_depth = o.max_depth.value_or(settings.max_depth);
-    plan.target_spp = o.spp ? *o.spp : static_cast<std::uint64_t>(settings.spp);
-    if (o.sample_range) {
-        const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
-        plan.first_sample = slice.first;
-        plan.target_spp = slice.count;
-    }
-    set_passes(plan, o.passes ? exr::parse_passes(*o.passes) : exr::all_passes());
+    const request::RequestSettings& s = plan.settings = request::resolve_request(o, &imported.render);
+    plan.config.width = *s.width;
+    plan.config.height = *s.height;
+    plan.config.seed = s.seed;
+    plan.config.mode = parse_mode(s.mode);
+    plan.config.sampler = parse_sampler(s.sampler);
+    plan.config.max_depth = *s.max_depth;
+    plan.target_spp = *s.spp;
+    plan.first_sample = s.first_sample;
+    set_passes(plan, s.passes);
     if (renders_frames(o)) {
         plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
-        plan.fps = o.fps.value_or(kDefaultFps);
-        plan.same_seed = o.same_seed;
-        plan.base_seed = plan.config.seed;
         plan.imported = std::move(imported);
-        pose_frame(plan, plan.frames.front());
+        // Posed lazily: a run that finds every frame finished poses none.
         return plan;
     }
     plan.scene_time = o.time_at.value_or(0.0);
-    plan.scene = pose(std::move(imported), plan.scene_time, plan.scene_label);
+    plan.scene = request::pose_scene(std::move(imported), plan.scene_time, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     return plan;
 }
 
 void pose_frame(RenderPlan& plan, long frame) {
-    plan.scene_time = frame_time(frame, plan.fps);
-    plan.scene = pose(plan.imported, plan.scene_time, plan.scene_label);
+    plan.scene_time = request::frame_time(frame, plan.settings.fps);
+    plan.scene = request::pose_scene(plan.imported, plan.scene_time, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
-    plan.config.seed = plan.same_seed ? plan.base_seed : frame_seed(plan.base_seed, frame);
-    plan.frame = exr::FrameInfo{frame, plan.fps};
+    plan.config.seed = plan.settings.seed_of(frame);
+    plan.frame = exr::FrameInfo{frame, plan.settings.fps};
+}
+
+exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame) {
+    exr::RenderRequest request = plan.settings.request(frame, plan.scene_time);
+    request.scene = [&plan, frame] {
+        if (frame && (!plan.frame || plan.frame->number != *frame)) pose_frame(plan, *frame);
+        return request::scene_identity(plan.scene, plan.scene_hash, plan.config.width, plan.config.height);
+    };
+    return request;
 }
 
 exr::ExrMetadata plan_metadata(const RenderPlan& plan) {

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "orb/exr/film_exr.h"
+#include "orb/exr/render_request.h"
 #include "orb/render/renderer.h"
+#include "orb/request/request_settings.h"
 #include "orb/scene/scene.h"
 #include "render_options.h"
 
@@ -21,18 +23,19 @@ struct RenderPlan {
     double read_seconds = 0;    // reading, importing, posing and hashing the scene (set by the caller that timed it)
     double scene_time = 0;
     render::RenderConfig config;
+    request::RequestSettings settings;  // the command line's settings, filled in from the scene
     std::uint64_t target_spp = 0;   // samples per pixel the film is to hold
     std::uint64_t first_sample = 0; // where a fresh render starts (--sample-range START)
     std::vector<exr::Pass> passes;
     bool half = false;
-    std::optional<exr::ExrFilm> resumed;  // the film to continue from
+    exr::ExrCompression compression = exr::ExrCompression::Zip;
+    // The film to continue from (--resume, or an output --skip-existing
+    // continues); its metadata stays once its film is on the device.
+    std::optional<exr::ExrFilm> resumed;
 
-    // Animations (--frame/--frames): the frames in order, the scene as read
-    // (posed anew for each frame by pose_frame), and the seed they derive from.
+    // Animations (--frame/--frames): the frames in order, and the scene as
+    // read, posed anew for each frame by pose_frame.
     std::vector<long> frames;
-    double fps = 0;
-    bool same_seed = false;
-    std::uint64_t base_seed = 0;
     Scene imported;
     std::optional<exr::FrameInfo> frame;  // the frame `scene` is posed at
 };
@@ -48,5 +51,10 @@ void pose_frame(RenderPlan& plan, long frame);
 
 // The orb:* metadata for an image of this plan (render seconds and device filled by the caller).
 exr::ExrMetadata plan_metadata(const RenderPlan& plan);
+
+// What the output of `frame` (none: the one output of a still) is asked to
+// hold. The scene's identity is computed when the judgement needs it, by
+// posing the plan at the frame (which rendering it would do anyway).
+exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame);
 
 }  // namespace orb::render_cli

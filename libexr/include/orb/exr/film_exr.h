@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "orb/exr/camera_matrices.h"
@@ -48,7 +49,14 @@ struct ExrMetadata {
     std::optional<FrameInfo> frame;  // orb:frame and orb:fps, present only for frames of an animation
 };
 
-enum class ExrCompression { None, Zip, Piz };
+// Only lossless compressions: a resumed or merged render rebuilds the
+// film's sums from the stored values, which must come back as written.
+enum class ExrCompression { None, Rle, Zips, Zip, Piz };
+
+const std::vector<std::string>& compression_names();  // "zip", "zips", "piz", "rle", "none"
+const char* compression_name(ExrCompression compression);
+// Throws std::invalid_argument naming the choices.
+ExrCompression parse_compression(const std::string& name);
 
 struct ExrWriteOptions {
     bool half = false;  // HALF for colour layers; Z, id and orb.* stay FLOAT
@@ -56,9 +64,28 @@ struct ExrWriteOptions {
     ExrCompression compression = ExrCompression::Zip;
 };
 
+// Memory an encoder keeps from one image to the next: a frame loop that
+// encodes 1920x1080 frames would otherwise fault in tens of fresh megabytes
+// a frame (about as long as encoding them). Not shared between threads.
+class ExrEncoding {
+public:
+    std::string_view bytes() const { return {bytes_.data(), size_}; }  // the last file encoded
+
+private:
+    friend class ExrEncoder;
+    std::vector<float> planes_;         // the stored values, one plane after another
+    std::vector<std::uint16_t> halfs_;  // their HALF copies under --half
+    std::string bytes_;                 // capacity kept; only the first size_ bytes are the file
+    std::size_t size_ = 0;
+};
+
 // The film as the bytes of an EXR file, encoded in memory so that the caller
-// writes them safely (tools use orb::cli::OutputFile). Throws
-// std::invalid_argument for an empty film.
+// writes them safely (tools use orb::cli::OutputFile), into `into` (its
+// bytes() until the next call). Throws std::invalid_argument for an empty
+// film, std::runtime_error if OpenEXR fails.
+void encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+                     ExrEncoding& into);
+// The same into fresh memory, for a single image.
 std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options);
 
 // Writes `path` directly, for tests and simple callers. Throws
@@ -84,6 +111,7 @@ struct ExrFilmSummary {
     render::SampleRanges sample_ranges;   // orb:sampleRanges
     ExrMetadata metadata;
     std::vector<Pass> passes;
+    bool half = false;  // some channel of `passes` is stored as HALF (not resumable within float rounding)
 };
 
 // Throws orb::InputError as read_film_exr() does, "truncated" included.

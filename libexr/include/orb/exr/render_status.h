@@ -1,10 +1,13 @@
-// Whether an EXR that orb-render wrote is a finished render: the one
-// definition that orb-render --skip-existing, orb-frames --missing and
-// orb-farm share.
+// What an EXR at a path is: missing, unreadable, or an orb-render image
+// whose header says what it holds. Whether that is the render a command asks
+// for is render_request.h's judge_output, which reads the file through this.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+
+#include "orb/exr/film_exr.h"
 
 namespace orb::exr {
 
@@ -29,6 +32,7 @@ struct RenderStatus {
     std::uint64_t target_spp = 0;   // orb:targetSpp
     std::string sample_ranges;      // orb:sampleRanges ("0:256", "256:256"); "0:spp" for film format 1
     int width = 0, height = 0;
+    std::optional<ExrFilmSummary> summary;  // everything the header says, when readable
 };
 
 // Never throws for a bad file; `reason` says what is wrong.

@@ -1,0 +1,214 @@
+// What --skip-existing (and --claim, and --missing) make of the outputs that
+// are already there, on the repository's glTF animation: a finished frame is
+// exactly the render asked for; the same render stopped short is continued
+// from its samples to the image an uninterrupted render makes; anything else
+// is rendered again, with one line saying why.
+#include <signal.h>
+
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_fixture.h"
+#include "orb/exr/film_exr.h"
+
+using namespace orb::test;
+using orb::exr::read_film_exr;
+using orb::exr::testing::read_raw_exr;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBounce = std::string(ORB_SCENES_DIR) + "/bounce.gltf";
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+std::string frame_file(const std::string& folder, int frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/b.%04d.exr", frame);
+    return folder + name;
+}
+
+// The lines of `text` that contain `what`.
+int count_lines(const std::string& text, const std::string& what) {
+    std::istringstream in(text);
+    int n = 0;
+    for (std::string line; std::getline(in, line);) n += line.find(what) != std::string::npos;
+    return n;
+}
+
+class RenderFinish : public RenderCli {
+protected:
+    void SetUp() override {
+        RenderCli::SetUp();
+        fs::create_directories(path("shots"));
+        fs::create_directories(path("reference"));
+    }
+    // bounce.gltf at 32x24, frames `frames`, into shots/ unless told otherwise.
+    ProcessResult frames(const std::string& frames, const std::vector<std::string>& extra,
+                         const std::string& folder = "shots") const {
+        return render(with({kBounce, "--frames", frames, "--width", "32", "--height", "24", "-o",
+                            path(folder + "/b.%04d.exr")},
+                           extra));
+    }
+};
+
+}  // namespace
+
+TEST_F(RenderFinish, APreviewThenAFinalRenderInTheSameFolder) {
+    // A preview at a quarter of the size and few samples.
+    ASSERT_EQ(render({kBounce, "--frames", "1-3", "--width", "16", "--height", "12", "--spp", "2", "-o",
+                      path("shots/b.%04d.exr")})
+                  .exit_code,
+              0);
+    const auto final_run = frames("1-3", {"--spp", "6", "--skip-existing"});
+    ASSERT_EQ(final_run.exit_code, 0) << final_run.err;
+    EXPECT_EQ(count_lines(final_run.err, ": rendered at 16x12, 32x24 asked: rendering again"), 3) << final_run.err;
+    for (int frame = 1; frame <= 3; ++frame) {
+        const auto file = read_film_exr(frame_file(path("shots"), frame));
+        EXPECT_EQ(file.film.width, 32);
+        EXPECT_EQ(file.film.sample_ranges.format(), "0:6");
+    }
+
+    // A preview at the final size with fewer samples is the start of the final render: continued.
+    ASSERT_EQ(frames("4-5", {"--spp", "2"}).exit_code, 0);
+    const auto more = frames("4-5", {"--spp", "6", "--skip-existing"});
+    ASSERT_EQ(more.exit_code, 0) << more.err;
+    EXPECT_EQ(count_lines(more.err, ": holds 2 of 6 spp: continuing it"), 2) << more.err;
+    ASSERT_EQ(frames("4-5", {"--spp", "6"}, "reference").exit_code, 0);
+    for (int frame = 4; frame <= 5; ++frame)
+        expect_same_within_float_rounding(read_raw_exr(frame_file(path("shots"), frame)),
+                                          read_raw_exr(frame_file(path("reference"), frame)));
+
+    // Other layers, seed, mode or sampler: rendered again, each saying why.
+    const struct {
+        std::vector<std::string> options;
+        std::string why;
+    } changes[] = {{{"--passes", "beauty,albedo"}, "holds the layers 'beauty', 'beauty,albedo' asked"},
+                   {{"--seed", "9"}, "rendered with another seed (orb:seed "},
+                   {{"--mode", "direct"}, "rendered with --mode global, direct asked"},
+                   {{"--sampler", "independent"}, "rendered with --sampler sobol, independent asked"},
+                   {{"--max-depth", "3"}, "rendered with --max-depth 6, 3 asked"},
+                   {{"--fps", "30"}, "rendered at scene time 0.0416667 s, 0.0333333 s asked"},
+                   {{"--half"}, "stored as FLOAT, HALF (--half) asked"}};
+    for (const auto& change : changes) {
+        ASSERT_EQ(frames("1", {"--spp", "2"}).exit_code, 0);
+        const auto run = frames("1", with({"--spp", "2", "--skip-existing"}, change.options));
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        EXPECT_EQ(count_lines(run.err, change.why), 1) << change.options.front() << "\n" << run.err;
+        EXPECT_EQ(count_lines(run.err, ": rendering again"), 1) << run.err;
+    }
+}
+
+TEST_F(RenderFinish, AnotherSceneOrCameraIsRenderedAgain) {
+    std::ifstream in(kBounce);
+    const nlohmann::json original = nlohmann::json::parse(in);
+    const std::string scene = path("bounce.gltf");
+    const auto render_edited = [&](const std::function<void(nlohmann::json&)>& edit, bool skip) {
+        nlohmann::json gltf = original;
+        edit(gltf);
+        std::ofstream(scene) << gltf.dump();
+        std::vector<std::string> args{scene, "--frames", "1", "--width", "16", "--height", "12", "--spp", "1", "-o",
+                                      path("shots/b.%04d.exr")};
+        if (skip) args.push_back("--skip-existing");
+        return render(args);
+    };
+    const auto nothing = [](nlohmann::json&) {};
+    ASSERT_EQ(render_edited(nothing, false).exit_code, 0);
+    EXPECT_EQ(count_lines(render_edited(nothing, true).err, "finished (1 spp); skipped"), 1);
+
+    // The mirror ball moved: the same camera, another scene.
+    const auto moved = render_edited([](nlohmann::json& g) { g["nodes"][2]["translation"][0] = 0.5; }, true);
+    EXPECT_EQ(count_lines(moved.err, ": rendered from another scene (orb:sceneHash "), 1) << moved.err;
+    // The camera moved.
+    const auto aimed = render_edited([](nlohmann::json& g) { g["nodes"][4]["translation"][1] = 2.0; }, true);
+    EXPECT_EQ(count_lines(aimed.err, ": rendered from another camera"), 1) << aimed.err;
+}
+
+TEST_F(RenderFinish, FramesStoppedByTimeOrSigtermAreContinuedToTheUninterruptedImage) {
+    // 32x24 at 3000 spp takes about a second a frame on two cores, so the
+    // signal lands while frame 1 or 2 renders.
+    const std::vector<std::string> settings{"--spp", "3000", "--seed", "5"};
+    Child child(with({render_exe(), kBounce, "--frames", "1-2", "--width", "32", "--height", "24", "-o",
+                      path("shots/b.%04d.exr"), "--checkpoint", "0.05"},
+                     settings),
+                path("stopped.txt"));
+    ASSERT_TRUE(eventually([&] { return fs::exists(path("shots/b.0001.exr")); }, 60)) << read_text(path("stopped.txt"));
+    child.send_signal(SIGTERM);
+    const auto stopped = child.wait(60);
+    ASSERT_EQ(stopped.exit_code, 143) << stopped.err;
+    // Frame 3 stops at its time limit instead.
+    ASSERT_EQ(frames("3", with({"--time", "0.2"}, settings)).exit_code, 0);
+    ASSERT_LT(read_film_exr(path("shots/b.0003.exr")).film.samples_per_pixel, 3000u);
+
+    const auto continued = frames("1-3", with({"--skip-existing"}, settings));
+    ASSERT_EQ(continued.exit_code, 0) << continued.err;
+    EXPECT_GE(count_lines(continued.err, " of 3000 spp: continuing it"), 2) << continued.err;
+    ASSERT_EQ(frames("1-3", settings, "reference").exit_code, 0);
+    for (int frame = 1; frame <= 3; ++frame) {
+        const auto file = read_film_exr(frame_file(path("shots"), frame));
+        EXPECT_EQ(file.film.sample_ranges.format(), "0:3000") << frame;
+        expect_same_within_float_rounding(read_raw_exr(frame_file(path("shots"), frame)),
+                                          read_raw_exr(frame_file(path("reference"), frame)));
+    }
+}
+
+TEST_F(RenderFinish, ASliceIsContinuedOnlyToItsOwnSamples) {
+    ASSERT_EQ(frames("1", {"--sample-range", "4:400", "--time", "0.000001"}).exit_code, 0);
+    const auto held = read_film_exr(path("shots/b.0001.exr")).film.sample_ranges;
+    ASSERT_EQ(held.first(), 4u);
+    ASSERT_LT(held.total(), 400u);
+    const auto run = frames("1", {"--sample-range", "4:400", "--skip-existing"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(count_lines(run.err, "of 4:400: continuing it"), 1) << run.err;
+    EXPECT_EQ(read_film_exr(path("shots/b.0001.exr")).film.sample_ranges.format(), "4:400");
+    ASSERT_EQ(frames("1", {"--sample-range", "4:400"}, "reference").exit_code, 0);
+    expect_same_within_float_rounding(read_raw_exr(path("shots/b.0001.exr")), read_raw_exr(path("reference/b.0001.exr")));
+
+    // Another slice of the same frame is not this one: rendered again.
+    const auto other = frames("1", {"--sample-range", "0:4", "--skip-existing"});
+    EXPECT_EQ(count_lines(other.err, "holds the samples 4:400, 0:4 asked: rendering again"), 1) << other.err;
+    // A whole frame of 4 samples holds 0:4: the slice 0:4 is finished.
+    const auto same = frames("1", {"--sample-range", "0:4", "--skip-existing"});
+    EXPECT_EQ(count_lines(same.err, "finished (4 spp); skipped"), 1) << same.err;
+}
+
+TEST_F(RenderFinish, MissingListsWhatSkipExistingRendersAndRendersNothing) {
+    ASSERT_EQ(frames("1-2", {"--spp", "4"}).exit_code, 0);
+    ASSERT_EQ(render({kBounce, "--frame", "3", "--width", "16", "--height", "24", "--spp", "4", "-o",
+                      path("shots/b.%04d.exr")})
+                  .exit_code,
+              0);
+    ASSERT_EQ(frames("4", {"--spp", "2"}).exit_code, 0);
+    std::ofstream(path("shots/b.0005.exr")) << "not an EXR";
+    const auto before = fs::last_write_time(path("shots/b.0004.exr"));
+    const auto missing = frames("1-6", {"--spp", "4", "--missing"});
+    ASSERT_EQ(missing.exit_code, 0) << missing.err;
+    EXPECT_EQ(missing.out, "3\n4\n5\n6\n");
+    EXPECT_EQ(count_lines(missing.err, "frame 3: " + path("shots/b.0003.exr") + ": rendered at 16x24, 32x24 asked"), 1)
+        << missing.err;
+    EXPECT_EQ(count_lines(missing.err, "frame 4: " + path("shots/b.0004.exr") + ": holds 2 of 4 spp"), 1) << missing.err;
+    EXPECT_EQ(count_lines(missing.err, "frame 5: " + path("shots/b.0005.exr") + ": unreadable"), 1) << missing.err;
+    EXPECT_EQ(missing.err.find("frame 6"), std::string::npos) << missing.err;  // absent: no note
+    EXPECT_EQ(missing.err.find("device"), std::string::npos) << missing.err;   // no OpenCL
+    EXPECT_EQ(fs::last_write_time(path("shots/b.0004.exr")), before);
+
+    const auto rendered = frames("1-6", {"--spp", "4", "--skip-existing"});
+    ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+    std::set<int> done;
+    for (int frame = 1; frame <= 6; ++frame)
+        if (count_lines(rendered.err, "frame " + std::to_string(frame) + ": done")) done.insert(frame);
+    EXPECT_EQ(done, (std::set<int>{3, 4, 5, 6})) << rendered.err;
+    EXPECT_EQ(frames("1-6", {"--spp", "4", "--missing"}).out, "");
+
+    // Usage: --missing writes nothing, so it takes no -o - and no --resume.
+    EXPECT_EQ(render({kBounce, "--frame", "1", "-o", "-", "--missing"}).exit_code, 2);
+    EXPECT_EQ(frames("1", {"--missing", "--claim"}).exit_code, 2);
+}

@@ -1,0 +1,34 @@
+// orb-frames --missing: each frame's file judged against the render that
+// orb-render would make with the same options (orb::exr::judge_output, the
+// definition orb-render --skip-existing uses), reading headers only.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "orb/exr/render_request.h"
+#include "orb/request/request_options.h"
+#include "orb/request/request_settings.h"
+#include "orb/scene/scene.h"
+
+namespace orb::frames {
+
+class MissingFrames {
+public:
+    // Reads `scene_path` as orb-render does when it is not empty (throws
+    // orb::InputError for a bad scene); without it the scene, its camera and
+    // what its render block would fill in are not compared.
+    MissingFrames(const std::string& scene_path, const request::RequestOptions& options);
+
+    exr::OutputJudgement judge(const std::string& path, long frame);
+
+private:
+    exr::SceneIdentity identity_at(long frame);
+
+    std::optional<Scene> scene_;
+    std::string label_;
+    request::RequestSettings settings_;
+    std::optional<exr::SceneIdentity> still_identity_;  // a scene without animation is the same at every frame
+};
+
+}  // namespace orb::frames

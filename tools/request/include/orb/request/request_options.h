@@ -1,0 +1,37 @@
+// The options that say which render an output holds, as orb-render and
+// orb-frames --missing take them: the same names, checks and help texts.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace orb::request {
+
+struct RequestOptions {
+    std::optional<std::uint64_t> spp;
+    std::optional<std::string> sample_range;  // "START:COUNT"
+    std::optional<std::uint64_t> seed;
+    std::optional<std::string> mode;
+    std::optional<std::string> sampler;
+    std::optional<int> max_depth;
+    std::optional<int> width;
+    std::optional<int> height;
+    std::optional<std::string> passes;
+    bool half = false;
+    std::optional<double> fps;
+    bool same_seed = false;
+};
+
+void add_request_options(CLI::App& app, RequestOptions& options);
+
+// Combinations CLI11 cannot express (--passes' names, --sample-range with
+// --spp); throws orb::cli::UsageError.
+void check_request_options(const RequestOptions& options);
+
+// SECONDS > 0, finite (also --fps).
+const CLI::Validator& positive_number();
+
+}  // namespace orb::request

@@ -1,0 +1,59 @@
+// What orb-render renders for a command line: each setting the command line
+// gives, else the scene's render block (size, spp, depth), else Orb's
+// default; and from it the request for each output (render_request.h).
+// orb-render renders with these settings and orb-frames --missing judges
+// with them, so the same options mean the same render in both.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "orb/exr/render_request.h"
+#include "orb/request/request_options.h"
+#include "orb/scene/scene.h"
+
+namespace orb::request {
+
+// Neither glTF (keyframe times in seconds) nor Orb's scene format records a
+// frame rate, so without --fps frames are 1/24 s apart.
+inline constexpr double kDefaultFps = 24.0;
+
+// The layers written when --passes is not given: the beauty image alone, as
+// production renderers write by default; the others are asked for by name.
+const std::vector<exr::Pass>& default_passes();
+
+// The scene time of a frame: frame / fps seconds.
+double frame_time(long frame, double fps);
+
+// The seed of a frame, so that noise does not stand still on screen:
+// SplitMix64's finaliser of (seed XOR the finaliser of frame + 1). The same
+// for --frame N and frame N of --frames.
+std::uint64_t frame_seed(std::uint64_t seed, long frame);
+
+struct RequestSettings {
+    // From the command line, else the scene's render block; empty only when
+    // neither is known (orb-frames without --scene).
+    std::optional<int> width, height, max_depth;
+    std::optional<std::uint64_t> spp;  // samples asked for: --spp, a slice's COUNT, else render.spp
+    bool slice = false;                // --sample-range: exactly [first_sample, first_sample + spp)
+    std::uint64_t first_sample = 0;
+    std::uint64_t seed = 0;            // --seed, the base of every frame's own seed
+    std::string mode = "global";
+    std::string sampler = "sobol";
+    std::vector<exr::Pass> passes = default_passes();
+    bool half = false;
+    double fps = kDefaultFps;
+    bool same_seed = false;
+
+    std::uint64_t seed_of(std::optional<long> frame) const;  // a frame's seed, or --seed for a still
+    // The request for one output: a frame of an animation, or a still at
+    // `scene_time`. The caller adds the posed scene's identity.
+    exr::RenderRequest request(std::optional<long> frame, double scene_time = 0) const;
+};
+
+// `scene_render` is the scene's render block, or null when the scene is not read.
+RequestSettings resolve_request(const RequestOptions& options, const RenderSettings* scene_render);
+
+}  // namespace orb::request

@@ -1,0 +1,28 @@
+// The scene as orb-render reads it (any format orb-import reads, its
+// environment map loaded, import warnings printed) and poses it at a time,
+// and what an output records of it. orb-frames --missing --scene reads it
+// the same way, so both hash the same scene.
+#pragma once
+
+#include <string>
+
+#include "orb/exr/render_request.h"
+#include "orb/scene/scene.h"
+
+namespace orb::request {
+
+// Reads and imports `path` ("-" for stdin); `label` becomes the path, or
+// <stdin>. Throws orb::InputError for bad input.
+Scene read_scene(const std::string& path, std::string& label);
+
+// The scene at `seconds`, checked against the scene limits again when it is
+// animated (posing multiplies scales and adds offsets). Throws orb::InputError.
+Scene pose_scene(const Scene& imported, double seconds, const std::string& label);
+// The same for a scene the caller gives up: one without animation is its
+// own pose, moved rather than copied (ten million spheres are a gigabyte).
+Scene pose_scene(Scene&& imported, double seconds, const std::string& label);
+
+// orb:sceneHash and the camera matrices of a posed scene at an image size.
+exr::SceneIdentity scene_identity(const Scene& posed, const std::string& hash, int width, int height);
+
+}  // namespace orb::request

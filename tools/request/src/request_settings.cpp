@@ -1,0 +1,78 @@
+#include "orb/request/request_settings.h"
+
+#include "orb/render/sample_ranges.h"
+
+namespace orb::request {
+namespace {
+
+// SplitMix64's output function (Steele, Lea, Flood 2014): a bijection of
+// 64-bit words that mixes every input bit into every output bit.
+std::uint64_t mix64(std::uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+}  // namespace
+
+const std::vector<exr::Pass>& default_passes() {
+    static const std::vector<exr::Pass> passes{exr::Pass::Beauty};
+    return passes;
+}
+
+double frame_time(long frame, double fps) { return static_cast<double>(frame) / fps; }
+
+std::uint64_t frame_seed(std::uint64_t seed, long frame) {
+    return mix64(seed ^ mix64(static_cast<std::uint64_t>(frame) + 1));
+}
+
+std::uint64_t RequestSettings::seed_of(std::optional<long> frame) const {
+    return frame && !same_seed ? frame_seed(seed, *frame) : seed;
+}
+
+exr::RenderRequest RequestSettings::request(std::optional<long> frame, double scene_time) const {
+    exr::RenderRequest r;
+    r.scene_time = frame ? frame_time(*frame, fps) : scene_time;
+    r.width = width;
+    r.height = height;
+    r.mode = mode;
+    r.sampler = sampler;
+    r.max_depth = max_depth;
+    r.seed = seed_of(frame);
+    r.passes = passes;
+    r.half = half;
+    r.slice = slice;
+    r.first_sample = first_sample;
+    r.spp = spp;
+    return r;
+}
+
+RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* scene) {
+    RequestSettings s;
+    const auto from_scene = [&](const std::optional<int>& given, int RenderSettings::*field) -> std::optional<int> {
+        if (given) return given;
+        if (scene) return (*scene).*field;
+        return std::nullopt;
+    };
+    s.width = from_scene(o.width, &RenderSettings::width);
+    s.height = from_scene(o.height, &RenderSettings::height);
+    s.max_depth = from_scene(o.max_depth, &RenderSettings::max_depth);
+    if (o.spp) s.spp = *o.spp;
+    else if (scene) s.spp = static_cast<std::uint64_t>(scene->spp);
+    if (o.sample_range) {
+        const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
+        s.slice = true;
+        s.first_sample = slice.first;
+        s.spp = slice.count;
+    }
+    s.seed = o.seed.value_or(0);
+    s.mode = o.mode.value_or("global");
+    s.sampler = o.sampler.value_or("sobol");
+    if (o.passes) s.passes = exr::parse_passes(*o.passes);
+    s.half = o.half;
+    s.fps = o.fps.value_or(kDefaultFps);
+    s.same_seed = o.same_seed;
+    return s;
+}
+
+}  // namespace orb::request

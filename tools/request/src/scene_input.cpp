@@ -1,0 +1,52 @@
+#include "orb/request/scene_input.h"
+
+#include <filesystem>
+#include <sstream>
+
+#include "orb/cli/io.h"
+#include "orb/cli/messages.h"
+#include "orb/exr/camera_matrices.h"
+#include "orb/exr/environment_map.h"
+#include "orb/scene/animation.h"
+#include "orb/scene/import.h"
+#include "orb/scene/scene_json.h"
+
+namespace orb::request {
+
+namespace fs = std::filesystem;
+
+Scene read_scene(const std::string& path, std::string& label) {
+    label = cli::is_stdio(path) ? "<stdin>" : path;
+    const std::string bytes = cli::read_input(path);
+    const std::string base_dir =
+        cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
+    ImportResult imported = import_scene(bytes, label, base_dir);
+    for (const std::string& message : imported.warnings) cli::warning(message);
+    for (const std::string& message : imported.notices) cli::warning(message);
+    // The map's texels join the scene before it is hashed (they are part of its identity) and rendered.
+    exr::load_environment_map(imported.scene, base_dir, label);
+    if (!scene_has_light(imported.scene))
+        cli::warning(label + ": the scene has no light (no sphere emits and there is no environment); it renders black");
+    return std::move(imported.scene);
+}
+
+Scene pose_scene(const Scene& imported, double seconds, const std::string& label) {
+    Scene posed = scene_at_time(imported, seconds);
+    if (!imported.animation.empty()) {
+        std::ostringstream at;
+        at << label << " at " << seconds << " s";
+        validate_scene(posed, at.str());
+    }
+    return posed;
+}
+
+Scene pose_scene(Scene&& imported, double seconds, const std::string& label) {
+    if (imported.animation.empty()) return std::move(imported);
+    return pose_scene(static_cast<const Scene&>(imported), seconds, label);
+}
+
+exr::SceneIdentity scene_identity(const Scene& posed, const std::string& hash, int width, int height) {
+    return {hash, exr::world_to_camera(posed.camera), exr::world_to_ndc(posed.camera, width, height)};
+}
+
+}  // namespace orb::request
