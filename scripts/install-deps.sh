@@ -9,7 +9,7 @@ packages=(
   # libraries Orb builds against
   libtinygltf-dev libstb-dev nlohmann-json3-dev libcli11-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
-  libopenexr-dev libopenimageio-dev libopencolorio-dev
+  libopenexr-dev libdeflate-dev libopenimageio-dev libopencolorio-dev
   # tests: GoogleTest, schema validation, reference image tools
   libgtest-dev python3-jsonschema openimageio-tools opencolorio-tools
   # tests: orb-farm on a one-node Slurm cluster started in a temporary folder

@@ -13,10 +13,13 @@ using film::StoredAs;
 using Sums = std::vector<float>;
 using Planes = std::map<std::string, std::vector<float>>;
 
+// Each of these fills pixels [first, end) of its output planes.
+
 // Means are computed in double and rounded once, so mean * n gives the sum
 // back within a float rounding or two.
-void mean_channel(const Sums& sums, int components, int component, double n, std::span<float> out) {
-    for (std::size_t i = 0; i < out.size(); ++i)
+void mean_channel(const Sums& sums, int components, int component, double n, std::span<float> out, std::size_t first,
+                  std::size_t end) {
+    for (std::size_t i = first; i < end; ++i)
         out[i] = static_cast<float>(static_cast<double>(sums[i * components + component]) / n);
 }
 
@@ -24,13 +27,13 @@ void mean_channel(const Sums& sums, int components, int component, double n, std
 // (sum_sq/n - mean^2) * n/(n-1) / n. Zero with fewer than two samples,
 // where it is unknown (and where sum_sq = mean^2 recovers exactly).
 void variance_channel(const Sums& sums, const Sums& sums_sq, int components, int component, std::uint64_t n,
-                      std::span<float> out) {
+                      std::span<float> out, std::size_t first, std::size_t end) {
     if (n < 2) {
-        std::fill(out.begin(), out.end(), 0.0f);
+        std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(end), 0.0f);
         return;
     }
     const double nd = static_cast<double>(n);
-    for (std::size_t i = 0; i < out.size(); ++i) {
+    for (std::size_t i = first; i < end; ++i) {
         const double mean = static_cast<double>(sums[i * components + component]) / nd;
         const double mean_sq = static_cast<double>(sums_sq[i * components + component]) / nd;
         out[i] = static_cast<float>(std::max(0.0, mean_sq - mean * mean) / (nd - 1.0));
@@ -39,9 +42,9 @@ void variance_channel(const Sums& sums, const Sums& sums_sq, int components, int
 
 // The mean normalised (0 where it is 0), then its length: planes
 // out[0 .. components-1] and out[components].
-void unit_vector_planes(const Sums& sums, int components, double n, const std::vector<std::span<float>>& out) {
-    const std::size_t pixels = sums.size() / components;
-    for (std::size_t i = 0; i < pixels; ++i) {
+void unit_vector_planes(const Sums& sums, int components, double n, std::span<const Plane> out, std::size_t first,
+                        std::size_t end) {
+    for (std::size_t i = first; i < end; ++i) {
         double mean[3] = {0, 0, 0};
         double length_sq = 0;
         for (int c = 0; c < components; ++c) {
@@ -50,13 +53,14 @@ void unit_vector_planes(const Sums& sums, int components, double n, const std::v
         }
         const double length = std::sqrt(length_sq);
         const double scale = length > 0 ? 1.0 / length : 0.0;
-        for (int c = 0; c < components; ++c) out[c][i] = static_cast<float>(mean[c] * scale);
-        out[components][i] = static_cast<float>(length);
+        for (int c = 0; c < components; ++c) out[c].values[i] = static_cast<float>(mean[c] * scale);
+        out[components].values[i] = static_cast<float>(length);
     }
 }
 
-void component_values(const Sums& values, int components, int component, std::span<float> out) {
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = values[i * components + component];
+void component_values(const Sums& values, int components, int component, std::span<float> out, std::size_t first,
+                      std::size_t end) {
+    for (std::size_t i = first; i < end; ++i) out[i] = values[i * components + component];
 }
 
 const std::vector<float>& plane(const Planes& planes, const std::string& name) {
@@ -116,46 +120,58 @@ std::size_t plane_count(const std::vector<Pass>& passes) {
     return count;
 }
 
-std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes,
-                                  std::vector<float>& storage) {
-    if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
-    const double n = static_cast<double>(film.samples_per_pixel);
+std::vector<Plane> plane_layout(const render::Film& film, const std::vector<Pass>& passes,
+                                std::vector<float>& storage) {
     const std::size_t pixels = static_cast<std::size_t>(film.width) * static_cast<std::size_t>(film.height);
     if (storage.size() < plane_count(passes) * pixels) storage.resize(plane_count(passes) * pixels);
     std::vector<Plane> planes;
-    const auto next_plane = [&](const char* name, bool always_float) {
-        const std::span<float> values(storage.data() + planes.size() * pixels, pixels);
-        planes.push_back({name, always_float, values});
-        return values;
-    };
+    for (Pass pass : passes)
+        for (const ChannelInfo* channel : pass_film_channels(pass))
+            for (int c = 0; c < channel->exr_name_count; ++c) {
+                // Values kept as they are (and the unit vector's length) stay FLOAT under --half.
+                const bool always_float = channel->stored_as == StoredAs::Value ||
+                                          (channel->stored_as == StoredAs::UnitVector && c == channel->components);
+                planes.push_back({channel->exr_names[c], always_float,
+                                  std::span<float>(storage.data() + planes.size() * pixels, pixels)});
+            }
+    return planes;
+}
+
+void fill_planes(const render::Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
+                 std::size_t first, std::size_t end) {
+    if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
+    const double n = static_cast<double>(film.samples_per_pixel);
+    std::size_t next = 0;  // the planes come in plane_layout's order
     for (Pass pass : passes) {
         for (const ChannelInfo* channel : pass_film_channels(pass)) {
             const Sums& sums = film.channel(channel->channel);
             const int components = channel->components;
             switch (channel->stored_as) {
                 case StoredAs::Mean:
-                    for (int c = 0; c < components; ++c)
-                        mean_channel(sums, components, c, n, next_plane(channel->exr_names[c], false));
+                    for (int c = 0; c < components; ++c) mean_channel(sums, components, c, n, planes[next++].values, first, end);
                     break;
-                case StoredAs::UnitVector: {
-                    std::vector<std::span<float>> out;
-                    for (int c = 0; c <= components; ++c)
-                        out.push_back(next_plane(channel->exr_names[c], c == components));
-                    unit_vector_planes(sums, components, n, out);
+                case StoredAs::UnitVector:
+                    unit_vector_planes(sums, components, n, std::span(planes).subspan(next, components + 1), first, end);
+                    next += static_cast<std::size_t>(components) + 1;
                     break;
-                }
                 case StoredAs::VarianceOfMean:
                     for (int c = 0; c < components; ++c)
                         variance_channel(film.channel(channel->paired), sums, components, c, film.samples_per_pixel,
-                                         next_plane(channel->exr_names[c], false));
+                                         planes[next++].values, first, end);
                     break;
                 case StoredAs::Value:
-                    for (int c = 0; c < components; ++c)
-                        component_values(sums, components, c, next_plane(channel->exr_names[c], true));
+                    for (int c = 0; c < components; ++c) component_values(sums, components, c, planes[next++].values, first, end);
                     break;
             }
         }
     }
+}
+
+std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes,
+                                  std::vector<float>& storage) {
+    if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
+    std::vector<Plane> planes = plane_layout(film, passes, storage);
+    fill_planes(film, passes, planes, 0, static_cast<std::size_t>(film.width) * static_cast<std::size_t>(film.height));
     return planes;
 }
 

@@ -23,9 +23,18 @@ struct Plane {
 // How many planes film_to_planes makes for `passes`.
 std::size_t plane_count(const std::vector<Pass>& passes);
 
-// The channels of `passes`, plus their resume helpers, in a fixed order,
-// stored one after another in `storage` (resized to fit; a buffer reused
-// frame after frame costs no fresh pages).
+// The planes of `passes` (their channels plus resume helpers) in a fixed
+// order, laid out one after another in `storage` (resized to fit; a buffer
+// reused frame after frame costs no fresh pages); their values not yet set.
+std::vector<Plane> plane_layout(const render::Film& film, const std::vector<Pass>& passes,
+                                std::vector<float>& storage);
+
+// Sets pixels [first, end) (row-major indices) of `planes`, as laid out for
+// `passes`, from the film's sums: ranges can be filled on several threads.
+void fill_planes(const render::Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
+                 std::size_t first, std::size_t end);
+
+// Both, for every pixel.
 std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes,
                                   std::vector<float>& storage);
 

@@ -5,7 +5,7 @@
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
-#include <OpenEXR/ImfStandardAttributes.h>
+#include <OpenEXR/ImfMatrixAttribute.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
 
@@ -17,8 +17,10 @@
 #include <fstream>
 #include <stdexcept>
 #include <thread>
+#include <variant>
 
-#include "exr_attributes.h"
+#include "exr_header_attributes.h"
+#include "exr_scanline_writer.h"
 #include "film_channels.h"
 #include "orb/exr/film_exr.h"
 
@@ -53,37 +55,19 @@ constexpr NamedCompression kCompressions[] = {{ExrCompression::Zip, "zip"},
                                                {ExrCompression::Rle, "rle"},
                                                {ExrCompression::None, "none"}};
 
-int checked_int(std::uint64_t value, const char* what) {
-    if (value > static_cast<std::uint64_t>(INT_MAX))
-        throw std::invalid_argument(std::string(what) + " does not fit the EXR int attribute");
-    return static_cast<int>(value);
-}
 
-void add_metadata(Imf::Header& header, const render::Film& film, const ExrMetadata& m,
-                  const std::vector<Pass>& passes) {
-    header.insert(attr::kFilmFormat, Imf::IntAttribute(kFilmFormatVersion));
-    header.insert(attr::kSpp, Imf::IntAttribute(checked_int(film.samples_per_pixel, "orb:spp")));
-    header.insert(attr::kSampleRanges, Imf::StringAttribute(film.held_ranges().format()));
-    header.insert(attr::kTargetSpp, Imf::IntAttribute(checked_int(m.target_spp, "orb:targetSpp")));
-    header.insert(attr::kSeed, Imf::StringAttribute(std::to_string(m.seed)));
-    header.insert(attr::kMaxDepth, Imf::IntAttribute(m.max_depth));
-    header.insert(attr::kMode, Imf::StringAttribute(m.mode));
-    header.insert(attr::kSampler, Imf::StringAttribute(m.sampler));
-    header.insert(attr::kDevice, Imf::StringAttribute(m.device));
-    header.insert(attr::kRenderSeconds, Imf::DoubleAttribute(m.render_seconds));
-    header.insert(attr::kSceneFile, Imf::StringAttribute(m.scene_file));
-    header.insert(attr::kSceneHash, Imf::StringAttribute(m.scene_hash));
-    header.insert(attr::kSceneTime, Imf::DoubleAttribute(m.scene_time));
-    header.insert(attr::kVersion, Imf::StringAttribute(m.version));
-    header.insert(attr::kPasses, Imf::StringAttribute(format_passes(passes)));
-    if (m.frame) {
-        if (m.frame->number < INT_MIN || m.frame->number > INT_MAX)
-            throw std::invalid_argument("orb:frame does not fit the EXR int attribute");
-        header.insert(attr::kFrame, Imf::IntAttribute(static_cast<int>(m.frame->number)));
-        header.insert(attr::kFps, Imf::DoubleAttribute(m.frame->fps));
+void add_attributes(Imf::Header& header, const std::vector<detail::HeaderAttribute>& attributes) {
+    for (const detail::HeaderAttribute& a : attributes) {
+        if (const int* value = std::get_if<int>(&a.value)) {
+            header.insert(a.name, Imf::IntAttribute(*value));
+        } else if (const double* value = std::get_if<double>(&a.value)) {
+            header.insert(a.name, Imf::DoubleAttribute(*value));
+        } else if (const std::string* value = std::get_if<std::string>(&a.value)) {
+            header.insert(a.name, Imf::StringAttribute(*value));
+        } else {
+            header.insert(a.name, Imf::M44fAttribute(to_imath(std::get<Matrix44>(a.value))));
+        }
     }
-    Imf::addWorldToCamera(header, to_imath(m.world_to_camera));
-    Imf::addWorldToNDC(header, to_imath(m.world_to_ndc));
 }
 
 // OpenEXR's output stream over a string that is kept from file to file:
@@ -145,6 +129,17 @@ ExrCompression parse_compression(const std::string& name) {
     throw std::invalid_argument("unknown EXR compression '" + name + "' (expected " + choices + ")");
 }
 
+struct ExrEncoding::Buffers {
+    std::vector<float> planes;         // the stored values, one plane after another
+    std::vector<Imath::half> halfs;    // their HALF copies under --half (OpenEXR's C++ writer)
+    detail::ScanlineBuffers scanlines;  // the blocks of the scanline writer
+};
+
+ExrEncoding::ExrEncoding() : buffers_(std::make_unique<Buffers>()) {}
+ExrEncoding::~ExrEncoding() = default;
+ExrEncoding::ExrEncoding(ExrEncoding&&) noexcept = default;
+ExrEncoding& ExrEncoding::operator=(ExrEncoding&&) noexcept = default;
+
 // Fills an ExrEncoding (a class so that ExrEncoding can name it a friend).
 class ExrEncoder {
 public:
@@ -156,29 +151,33 @@ void ExrEncoder::encode(const render::Film& film, const ExrMetadata& metadata, c
                         ExrEncoding& into) {
     if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("cannot write an empty film");
     if (options.passes.empty()) throw std::invalid_argument("no passes to write");
+    if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
+    ExrEncoding::Buffers& buffers = *into.buffers_;
+    const std::vector<detail::HeaderAttribute> attributes = detail::header_attributes(film, metadata, options.passes);
+    const std::vector<detail::Plane> planes = detail::plane_layout(film, options.passes, buffers.planes);
+    if (detail::scanline_writer_handles(options.compression)) {
+        detail::write_scanline_exr(film, options.passes, planes, options.half, options.compression, attributes,
+                                   buffers.scanlines, into.bytes_, into.size_);
+        return;
+    }
+
+    // RLE and PIZ through OpenEXR's C++ writer, which compresses blocks on its thread pool.
     use_all_cores_for_compression();
-
-    const std::vector<detail::Plane> planes = detail::film_to_planes(film, options.passes, into.planes_);
-
+    const auto width = static_cast<std::size_t>(film.width);
+    const std::size_t pixels = width * static_cast<std::size_t>(film.height);
+    detail::fill_planes(film, options.passes, planes, 0, pixels);
     Imf::Header header(film.width, film.height);
     header.compression() = to_imf(options.compression);
-    // Noisy float mantissas barely compress harder at higher levels, and a
-    // checkpoint written while rendering must be quick: the fastest level.
-    header.zipCompressionLevel() = 1;
-    add_metadata(header, film, metadata, options.passes);
+    add_attributes(header, attributes);
 
     // OpenEXR's writer does not convert pixel types, so HALF channels get
     // rounded copies, one plane after another like the float planes.
     Imf::FrameBuffer frame;
-    const auto width = static_cast<std::size_t>(film.width);
-    const std::size_t pixels = width * static_cast<std::size_t>(film.height);
-    if (options.half && into.halfs_.size() < planes.size() * pixels) into.halfs_.resize(planes.size() * pixels);
-    static_assert(sizeof(Imath::half) == sizeof(std::uint16_t));
-    auto* halfs = reinterpret_cast<Imath::half*>(into.halfs_.data());
+    if (options.half && buffers.halfs.size() < planes.size() * pixels) buffers.halfs.resize(planes.size() * pixels);
     for (std::size_t p = 0; p < planes.size(); ++p) {
         const detail::Plane& plane = planes[p];
         if (options.half && !plane.always_float) {
-            Imath::half* copy = halfs + p * pixels;
+            Imath::half* copy = buffers.halfs.data() + p * pixels;
             std::copy(plane.values.begin(), plane.values.end(), copy);
             header.channels().insert(plane.name, Imf::Channel(Imf::HALF));
             frame.insert(plane.name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(copy), sizeof(Imath::half),

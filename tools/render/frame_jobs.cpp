@@ -29,10 +29,24 @@ void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& r
         // during the kernel build, there is nothing to save.
         install_interrupt_handlers();
     } else {
-        renderer->set_scene(plan.scene);
+        if (plan.scene_changed) renderer->set_scene(plan.scene);
         renderer->set_seed(plan.config.seed);
     }
+    plan.scene_changed = false;
     renderer->clear(plan.first_sample);
+}
+
+void PosePrefetch::start(const RenderPlan& plan, const Job& next) {
+    if (!next.frame || plan.imported.animation.empty()) return;
+    frame_ = *next.frame;
+    future_ = std::async(std::launch::async, [&plan, frame = frame_] { return pose_at(plan, frame); });
+}
+
+void PosePrefetch::use_for(RenderPlan& plan, const Job& job) {
+    if (!future_.valid()) return;
+    PosedFrame posed = future_.get();
+    if (job.frame && *job.frame == frame_ && (!plan.frame || plan.frame->number != frame_))
+        install(plan, std::move(posed));
 }
 
 }  // namespace orb::render_cli

