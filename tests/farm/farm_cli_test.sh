@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# orb-farm without a cluster: usage errors, the --dry-run script, what a
-# re-run submits, and the submission itself against fake sbatch, squeue,
-# scancel and scontrol commands that record what they were asked.
+# orb-farm without a cluster: usage errors (orb-render's own checks of the
+# options after -- among them), the --dry-run script, what a re-run submits
+# (absent, partial and other renders, stale images), the collect job, and the
+# submission itself against fake sbatch, squeue, scancel and scontrol commands
+# that record what they were asked.
 #
 #   farm_cli_test.sh BIN_DIR SCENES_DIR
 #
@@ -55,9 +57,14 @@ expect_no_file() {
     [[ ! -e $1 ]] || problem "unexpected file $1"
 }
 
-# A complete 8x6 render of the example animation at PATH with N samples.
-render_complete() {
-    "$bin/orb-render" "$scene" --width 8 --height 6 --spp "$2" -q -o "$1" || problem "could not render $1"
+# Frame F of the example animation at 8x6 with N samples, as a task of
+# `orb-farm ... --spp N` renders it (frame F has its own seed and time), to
+# shots/beauty.%04d.exr; more orb-render options may follow.
+render_frame() { # F N [OPTIONS...]
+    local frame=$1 spp=$2
+    shift 2
+    "$bin/orb-render" "$scene" --frame "$frame" --width 8 --height 6 --spp "$spp" -q -o shots/beauty.%04d.exr "$@" ||
+        problem "could not render frame $frame"
 }
 
 # Renders of one job's script: the `exec` line replaced by a print of frame and samples.
@@ -113,11 +120,36 @@ usage_case "--keep-slices takes no value" "${common[@]}" --keep-slices=yes
 usage_case "--frames needs a value" "$scene" -o b.%04d.exr --frames
 usage_case "one SCENE only" "${common[@]}" other.json
 usage_case "the scene must be a file the nodes can read, not stdin" - --frames 1 -o b.%04d.exr
+usage_case "--tonemap bmp: such images keep no record of the frame they were made from" "${common[@]}" --tonemap bmp
+# Options after -- that orb-farm gives the tasks itself, or that make no sense for a task.
+usage_case "-- --frame: orb-farm gives each orb-render task that option itself" "${common[@]}" -- --frame 3
+usage_case "-- -o: orb-farm gives each orb-render task that option itself" "${common[@]}" -- -oother.exr
+usage_case "-- --sample-range: orb-farm gives each orb-render task that option itself" "${common[@]}" -- --sample-range=0:4
+usage_case "-- --skip-existing: orb-farm gives each orb-render task that option itself" "${common[@]}" -- --skip-existing
+usage_case "-- --resume: the tasks continue partial frames and slices themselves" "${common[@]}" -- --resume x.exr
+usage_case "-- --claim: Slurm gives each frame (or slice) to one task" "${common[@]}" -- --claim
+usage_case "-- --stats-json: every task would write the same file" "${common[@]}" -- --stats-json s.json
+usage_case "-- --list-devices: renders no frames" "${common[@]}" -- --list-devices
+usage_case "-- --half with --slices 2: orb-merge sums FLOAT slices only" "${common[@]}" --slices 2 --spp 4 -- --half
+# The rest orb-render checks itself (orb-render --missing, on this host), with its own message.
+usage_case "--mode: nosuch not in {global,direct}" "${common[@]}" -- --mode nosuch
+usage_case "--mode: nosuch not in {global,direct}" "${common[@]}" --slices 2 --spp 4 --dry-run -- --mode nosuch
+usage_case "--spp: At Most 1 required but received 2" "${common[@]}" --spp 4 -- --spp 8
+usage_case "--passes: " "${common[@]}" -- --passes beauty,nosuch
+usage_case "The following argument was not expected: extra.json" "${common[@]}" -- extra.json
+checks=$((checks + 1))
+[[ ! -e shots && ! -e b.%04d.exr ]] || problem "a usage error created files: $(ls)"
 
 section "failures and help"
 run "$farm" missing.json --frames 1 -o b.%04d.exr
 expect_status 1
 expect_in "orb-farm: error: missing.json: no such readable file" err
+echo '{ "spheres": [' >broken.json
+run "$farm" broken.json --frames 1 -o b.%04d.exr --dry-run
+expect_status 1
+expect_in "orb-farm: error: $work/broken.json:2:1: invalid JSON" err
+[[ -z $out ]] || problem "a scene orb-render cannot read gave a script: $out"
+rm broken.json
 run "$farm" --help
 expect_status 0
 expect_in "Usage: orb-farm SCENE --frames LIST -o PATTERN"
@@ -147,8 +179,10 @@ expect_in "--job-name=orb-farm:beauty:collect"
 expect_in "--dependency=afterany:\$render_job_1 <<"
 expect_in "task_frames=(1 1 2 2 3 3 4 4)"
 expect_in "task_slices=(1 2 1 2 1 2 1 2)"
-expect_in "--sample-range \"\$first:\$count\" -o $work/shots/orb-farm/slices/beauty.%04d.s\${slice}of2.exr --mode direct --seed 7"
-expect_in "--collect --frames 1-4 -o $work/shots/beauty.%04d.exr --slices 2 --spp 16 --width 8 --height 6 --tonemap png"
+# The tasks continue what a killed task left partial, and skip what is finished.
+expect_in "--sample-range \"\$first:\$count\" -o $work/shots/orb-farm/slices/beauty.%04d.s\${slice}of2.exr --mode direct --seed 7 --skip-existing"
+# The collect job judges with the same scene and orb-render options.
+expect_in "--collect $scene --frames 1-4 -o $work/shots/beauty.%04d.exr --slices 2 --spp 16 --width 8 --height 6 --tonemap png -- --mode direct --seed 7"
 checks=$((checks + 1))
 [[ $(grep -c -- '--account=anim' <<<"$out") == 2 ]] || problem "--account=anim is not on both sbatch lines"
 # Only the render tasks ask for GPUs.
@@ -181,7 +215,7 @@ run "$farm" "$scene" --frames 1-9x4,2 -o shots/b.####.exr --spp 32 --fps 30 --dr
 expect_status 0
 expect_in "# 4 render task(s), frames 1-2,5,9"
 expect_in "task_frames=(1 5 9 2)"
-expect_in "--frame \"\$frame\" --fps 30 --spp 32 -o $work/shots/b.####.exr"
+expect_in "--frame \"\$frame\" --fps 30 --spp 32 -o $work/shots/b.####.exr --skip-existing"
 expect_not_in "collect"
 expect_not_in "--sample-range"
 
@@ -211,66 +245,123 @@ checks=$((checks + 1))
     problem "the three arrays do not cover the 8 tasks once each: $chunk_tasks"
 
 # ---------------------------------------------------------------------------
-section "re-run: only missing frames"
+section "re-run: only frames not finished"
 mkdir -p shots
-render_complete shots/beauty.0001.exr 4
-render_complete shots/beauty.0003.exr 4
-"$bin/orb-render" "$scene" --width 8 --height 6 --spp 100000 --time 0.05 -q -o shots/beauty.0004.exr
+render_frame 1 4
+render_frame 3 4
+render_frame 4 2 # stopped short of 4 samples, as a task killed or out of time leaves a frame
 run "$farm" "${common[@]}" --spp 4 --dry-run
 expect_status 0
 expect_in "task_frames=(2 4)"
 expect_in "--array=0-1 "
-expect_in "frame 4: $work/shots/beauty.0004.exr: stopped at" err
-# Another sample count makes every frame stale.
+expect_in "orb-farm: frame 4: $work/shots/beauty.0004.exr: holds 2 of 4 spp" err
+expect_not_in "frame 1:" err
+# Fewer samples: frame 4's 2 are enough.
+run "$farm" "${common[@]}" --spp 2 --dry-run
+expect_in "task_frames=(2)"
+# More samples: every frame is partial; its task continues it from its samples.
 run "$farm" "${common[@]}" --spp 5 --dry-run
 expect_in "task_frames=(1 2 3 4)"
-expect_in "has 4 samples per pixel, not 5" err
-# Without --spp any complete frame counts.
+expect_in "frame 1: $work/shots/beauty.0001.exr: holds 4 of 5 spp" err
+# The options after -- are part of the render asked for: another seed is another render.
+run "$farm" "${common[@]}" --spp 4 --dry-run -- --seed 9
+expect_in "task_frames=(1 2 3 4)"
+expect_in "frame 3: $work/shots/beauty.0003.exr: rendered with another seed" err
+# So are the scene's time (--fps) and the size.
+run "$farm" "${common[@]}" --spp 4 --fps 30 --dry-run
+expect_in "task_frames=(1 2 3 4)"
+expect_in "rendered at scene time" err
+run "$farm" "$scene" --frames 1-4 -o shots/beauty.%04d.exr --width 16 --height 12 --spp 4 --dry-run
+expect_in "task_frames=(1 2 3 4)"
+expect_in "frame 1: $work/shots/beauty.0001.exr: rendered at 8x6, 16x12 asked" err
+# Without --spp a frame needs the scene's own count (more than 4).
 run "$farm" "${common[@]}" --dry-run
-expect_in "task_frames=(2 4)"
+expect_in "task_frames=(1 2 3 4)"
 
-section "re-run: only missing slices"
+section "re-run: only slices not finished"
 mkdir -p shots/orb-farm/slices
-render_slice() { # PATH START:COUNT
-    "$bin/orb-render" "$scene" --width 8 --height 6 --sample-range "$2" -q -o "$1" || problem "could not render $1"
+render_slice() { # FRAME K START:COUNT
+    "$bin/orb-render" "$scene" --frame "$1" --width 8 --height 6 --sample-range "$3" -q \
+        -o "shots/orb-farm/slices/beauty.%04d.s${2}of2.exr" || problem "could not render frame $1's slice $2"
 }
-render_slice shots/orb-farm/slices/beauty.0002.s1of2.exr 0:2
-render_slice shots/orb-farm/slices/beauty.0004.s2of2.exr 0:2 # stale: slice 2 holds samples 2:2
+render_slice 2 1 0:2
+render_slice 2 2 2:1 # slice 2 (samples 2:2) stopped short: partial
+render_slice 4 2 0:2 # another render: slice 2 holds samples 2:2
 run "$farm" "${common[@]}" --spp 4 --slices 2 --dry-run
 expect_status 0
 expect_in "task_frames=(2 4 4)"
 expect_in "task_slices=(2 1 2)"
-expect_in "--collect --frames 2,4 "
-expect_in "frame 4: $work/shots/orb-farm/slices/beauty.0004.s2of2.exr: holds samples 0:2, not 2:2" err
+expect_in "--collect $scene --frames 2,4 "
+expect_in "frame 2, slice 2 of 2: $work/shots/orb-farm/slices/beauty.0002.s2of2.exr: holds the samples 2:1 of 2:2" err
+expect_in "frame 4, slice 2 of 2: $work/shots/orb-farm/slices/beauty.0004.s2of2.exr: holds the samples 0:2, 2:2 asked" err
+expect_not_in "frame 2, slice 1" err
 
-section "re-run: only missing images"
-render_complete shots/beauty.0002.exr 4
-render_complete shots/beauty.0004.exr 4
-for f in 1 3 4; do echo image >shots/beauty.000$f.png; done
+section "collect: merges finished slices into finished frames"
+render_slice 2 2 2:2
+run "$farm" --collect "$scene" --frames 2 -o shots/beauty.%04d.exr --spp 4 --slices 2 --width 8 --height 6
+expect_status 0
+expect_in "merged 1 of 1 frames" err
+expect_in "all 1 frames are finished" err
+expect_no_file shots/orb-farm/slices/beauty.0002.s1of2.exr
+# orb-merge's frame is what orb-render itself counts as finished with the same options.
+checks=$((checks + 1))
+[[ -z $("$bin/orb-render" "$scene" --frames 2 --width 8 --height 6 --spp 4 -o shots/beauty.%04d.exr --missing 2>&1) ]] ||
+    problem "orb-render does not count the merged frame 2 as finished"
+# The options after -- reach the collect job's judgement: slices of seed 7 merge into frames of seed 7.
+rm -f shots/orb-farm/slices/*
+"$bin/orb-render" "$scene" --frame 4 --width 8 --height 6 --sample-range 0:2 --seed 7 -q -o shots/orb-farm/slices/beauty.%04d.s1of2.exr
+"$bin/orb-render" "$scene" --frame 4 --width 8 --height 6 --sample-range 2:2 --seed 7 -q -o shots/orb-farm/slices/beauty.%04d.s2of2.exr
+run "$farm" --collect "$scene" --frames 4 -o shots/beauty.%04d.exr --spp 4 --slices 2 --width 8 --height 6 -- --seed 7
+expect_status 0
+expect_in "merged 1 of 1 frames" err
+run "$farm" "${common[@]}" --spp 4 --dry-run -- --seed 7
+expect_in "task_frames=(1 2 3)"
+render_frame 4 4 # back to seed 0
+
+section "re-run: images that are absent or stale"
+rm -f shots/*.png
+render_frame 2 4
+"$bin/orb-tonemap" shots/beauty.%04d.exr --frames 1,3,4 -o shots/beauty.%04d.png -q || problem "orb-tonemap failed"
 run "$farm" "${common[@]}" --spp 4 --tonemap png --dry-run
 expect_status 0
 expect_not_in "render_job"
 expect_in "collect_job=\$(sbatch"
-expect_in "--collect --frames 2 "
+expect_in "--collect $scene --frames 2 "
 expect_not_in "--dependency"
-echo image >shots/beauty.0002.png
+"$bin/orb-tonemap" shots/beauty.0002.exr -o shots/beauty.0002.png -q
 run "$farm" "${common[@]}" --spp 4 --tonemap png --dry-run
 expect_status 0
-expect_in "all 4 frames are complete, with their png images; nothing to submit" err
+expect_in "all 4 frames are finished, with their png images; nothing to submit" err
 [[ -z $out ]] || problem "a dry run with nothing to do printed a script: $out"
-rm -f shots/*.png
+# Frame 3 rendered again (more samples than asked: still finished): its image is stale.
+# Frame 4's image is damaged.
+render_frame 3 6
+echo image >shots/beauty.0004.png
+run "$farm" "${common[@]}" --spp 4 --tonemap png --dry-run
+expect_status 0
+expect_not_in "render_job"
+expect_in "--collect $scene --frames 3-4 "
+expect_in "frame 3: $work/shots/beauty.0003.png: its source $work/shots/beauty.0003.exr was rendered again" err
+expect_in "frame 4: $work/shots/beauty.0004.png: does not read whole" err
 
 # ---------------------------------------------------------------------------
-section "collect: makes images and reports what is missing"
-run "$farm" --collect --frames 1-4 -o shots/beauty.%04d.exr --spp 4 --tonemap png
+section "collect: makes stale images again and reports what is missing"
+png1_before=$(stat -c %i shots/beauty.0001.png)
+run "$farm" --collect "$scene" --frames 1-4 -o shots/beauty.%04d.exr --spp 4 --width 8 --height 6 --tonemap png
 expect_status 0
 for f in 1 2 3 4; do expect_file "shots/beauty.000$f.png"; done
-expect_in "all 4 frames are complete, with their png images" err
+expect_in "beauty.0003.png: its source $work/shots/beauty.0003.exr was rendered again" err
+expect_in "skipped 2 of 4 outputs that are current" err
+expect_in "all 4 frames are finished, with their png images" err
+checks=$((checks + 1))
+[[ $(stat -c %i shots/beauty.0001.png) == "$png1_before" ]] || problem "the current image of frame 1 was made again"
 rm shots/beauty.0003.exr
-run "$farm" --collect --frames 1-4 -o shots/beauty.%04d.exr --spp 4
+render_frame 4 1
+run "$farm" --collect "$scene" --frames 1-4 -o shots/beauty.%04d.exr --spp 4 --width 8 --height 6
 expect_status 1
-expect_in "orb-farm: error: 1 of 4 frames are not complete: 3" err
-expect_in "frame 3: $work/shots/beauty.0003.exr" err
+expect_in "orb-farm: error: 2 of 4 frames are not finished: 3-4" err
+expect_in "frame 3: $work/shots/beauty.0003.exr: not rendered" err
+expect_in "frame 4: $work/shots/beauty.0004.exr: holds 1 of 4 spp" err
 expect_in "(no task of it was submitted by orb-farm)" err
 expect_in "run the same orb-farm command again" err
 
@@ -309,6 +400,15 @@ EOF
 chmod +x "$fake"/*
 fake_path="$fake:$PATH"
 
+section "options after -- are checked before Slurm or the disk is touched"
+run env PATH="$fake_path" "$farm" "${common[@]}" --slices 2 --spp 4 --tonemap png -- --mode nosuch
+expect_status 2
+expect_in "orb-farm: error: --mode: nosuch not in {global,direct}" err
+[[ -z $out ]] || problem "stdout not empty: $out"
+expect_no_file shots
+expect_no_file "$fake/count"
+expect_no_file "$fake/squeue.calls"
+
 run env PATH="$fake_path" "$farm" "${common[@]}" --slices 2 --spp 4 --tonemap png
 expect_status 0
 expect_in "101
@@ -323,6 +423,9 @@ expect_file shots/orb-farm/logs/render-101.sh
 expect_file shots/orb-farm/logs/collect-102.sh
 checks=$((checks + 1))
 cmp -s "$fake/job-101.sh" shots/orb-farm/logs/render-101.sh || problem "the saved render script differs from the submitted one"
+checks=$((checks + 1))
+grep -q -- "--sample-range \"\$first:\$count\" -o .* --skip-existing\$" "$fake/job-101.sh" ||
+    problem "the render tasks do not pass --skip-existing: $(grep '^exec' "$fake/job-101.sh")"
 checks=$((checks + 1))
 [[ $(sed -n 3p shots/orb-farm/logs/render-101.tasks) == "101_2 2 1 $work/shots/orb-farm/logs/render-101_2.log" ]] ||
     problem "task table line 3: $(sed -n 3p shots/orb-farm/logs/render-101.tasks)"
@@ -357,7 +460,7 @@ run env PATH="$fake_path" "$farm" "${common[@]}" --spp 4 --wait --poll 1
 expect_status 1
 expect_in "waiting: 2 pending, 1 running" err
 expect_in "waiting: 1 running" err
-expect_in "orb-farm: error: 4 of 4 frames are not complete: 1-4" err
+expect_in "orb-farm: error: 4 of 4 frames are not finished: 1-4" err
 expect_in "log $work/shots/orb-farm/logs/render-107_0.log does not exist: the task never started" err
 checks=$((checks + 1))
 grep -q -- "-h -r -j 107 -o %T" "$fake/squeue.calls" || problem "--wait did not ask squeue about job 107"

@@ -298,3 +298,43 @@ TEST_F(TonemapSkip, EveryFormatWithARecordIsSkippedWhenCurrent) {
         run(kTonemap + " " + quote(frame(in, 1)) + " --skip-existing --format jpg -o " + quote(named_png));
     EXPECT_NE(as_jpeg.err.find("made as png, jpg asked"), std::string::npos) << as_jpeg.err;
 }
+
+// --missing lists what --skip-existing would make, by the same rule, and makes nothing.
+TEST_F(TonemapSkip, MissingListsWhatSkipExistingWouldMake) {
+    write_frames(4);
+    ASSERT_EQ(tonemap("-q", "1-3").exit_code, 0);  // frame 4 has no output
+    write_exr(frame(in, 2), make_multipass(16, 8));  // frame 2 rendered again
+    std::ofstream(frame(out, 3)) << "not a png";    // frame 3's output damaged
+    const auto before = outputs(3);
+    const auto r = tonemap("--missing", "1-4");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, "2\n3\n4\n");
+    EXPECT_NE(r.err.find("frame 2: " + frame(out, 2) + ": its source " + frame(in, 2) + " changed since it was made"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("frame 3: " + frame(out, 3) + ": does not read whole"), std::string::npos) << r.err;
+    EXPECT_EQ(lines_with(r.err, "frame 4"), 0) << r.err;  // absent: nothing to say
+    EXPECT_EQ(lines_with(r.err, "making it again"), 0) << r.err;
+    EXPECT_EQ(outputs(3), before);
+    EXPECT_FALSE(fs::exists(frame(out, 4)));
+    // -q keeps the list and drops the reasons; other settings make every output stale.
+    const auto quiet = tonemap("--missing -q --exposure 1", "1-4");
+    EXPECT_EQ(quiet.exit_code, 0);
+    EXPECT_EQ(quiet.out, "1\n2\n3\n4\n");
+    EXPECT_EQ(quiet.err, "");
+    // After --skip-existing has made them, nothing is missing.
+    ASSERT_EQ(tonemap("--skip-existing -q", "1-4").exit_code, 0);
+    const auto after = tonemap("--missing", "1-4");
+    EXPECT_EQ(after.exit_code, 0);
+    EXPECT_EQ(after.out, "");
+    EXPECT_EQ(after.err, "");
+    // Without --frames it names the output; -o - cannot be judged.
+    const std::string single = dir.path("single.png");
+    const auto one = run(kTonemap + " " + quote(frame(in, 1)) + " --missing -o " + quote(single));
+    EXPECT_EQ(one.exit_code, 0) << one.err;
+    EXPECT_EQ(one.out, single + "\n");
+    EXPECT_FALSE(fs::exists(single));
+    const auto to_stdout = run(kTonemap + " " + quote(frame(in, 1)) + " --missing --format png -o -");
+    EXPECT_EQ(to_stdout.exit_code, 2);
+    EXPECT_NE(to_stdout.err.find("--missing needs an output file, not -o -"), std::string::npos) << to_stdout.err;
+}

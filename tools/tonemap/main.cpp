@@ -1,6 +1,8 @@
 // orb-tonemap: scene-linear renders -> display images through OpenColorIO.
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -41,12 +43,14 @@ struct Settings {
     bool no_dither = false;
     std::string frames;
     bool skip_existing = false;
+    bool missing = false;
     bool contact_sheet = false;
     ColorOptions color;
 };
 
 struct Job {
     std::string input, output;
+    std::optional<int> frame;  // with --frames
 };
 
 std::vector<Job> plan_jobs(const Settings& s) {
@@ -58,17 +62,17 @@ std::vector<Job> plan_jobs(const Settings& s) {
             throw UsageError("--frames needs an output pattern with a frame number, e.g. -o beauty.%04d.png");
         for (int frame : orb::cli::parse_frame_spec(s.frames))
             jobs.push_back({orb::cli::expand_frame_pattern(s.inputs[0], frame),
-                            orb::cli::expand_frame_pattern(s.output, frame)});
+                            orb::cli::expand_frame_pattern(s.output, frame), frame});
         return jobs;
     }
-    if (s.inputs.size() == 1) return {{s.inputs[0], s.output}};
+    if (s.inputs.size() == 1) return {{s.inputs[0], s.output, std::nullopt}};
     std::error_code ec;
     if (!fs::is_directory(s.output, ec))
         throw UsageError("with several inputs, -o must be an existing directory (got '" + s.output + "')");
     const std::string ext = s.format.empty() ? "png" : s.format;
     for (const std::string& in : s.inputs) {
         if (in == "-") throw UsageError("'-' (stdin) cannot be one of several inputs");
-        jobs.push_back({in, (fs::path(s.output) / (fs::path(in).stem().string() + "." + ext)).string()});
+        jobs.push_back({in, (fs::path(s.output) / (fs::path(in).stem().string() + "." + ext)).string(), std::nullopt});
     }
     return jobs;
 }
@@ -133,17 +137,24 @@ DisplaySettings settings_for(const WriteOptions& options, const Settings& s, con
     return d;
 }
 
-// --skip-existing: whether the output of `job` is current (display_currency.h
-// has the rule). One line says why an existing output is made again; that
-// the input has no identity (stdin) is said once.
-bool is_current(const Job& job, const Settings& s, const ColorConfig& config, bool& said_cannot_judge) {
+// Whether the output of `job` is current (display_currency.h has the rule).
+// An output whose format cannot be written counts as absent: tonemap_one
+// reports the bad format with this output.
+DisplayImageVerdict judge(const Job& job, const Settings& s, const ColorConfig& config) {
     DisplaySettings asked;
     try {
         asked = settings_for(checked_write_options(write_options_for(job, s)), s, config);
     } catch (const std::exception&) {
-        return false;  // tonemap_one reports the bad format with this output
+        return {DisplayImageVerdict::Kind::Absent, {}};
     }
-    const DisplayImageVerdict verdict = judge_display_image(job.output, job.input, asked);
+    return judge_display_image(job.output, job.input, asked);
+}
+
+// --skip-existing: whether to leave the output of `job` alone. One line says
+// why an existing output is made again; that the input has no identity
+// (stdin) is said once.
+bool is_current(const Job& job, const Settings& s, const ColorConfig& config, bool& said_cannot_judge) {
+    const DisplayImageVerdict verdict = judge(job, s, config);
     using Kind = DisplayImageVerdict::Kind;
     switch (verdict.kind) {
         case Kind::Current:
@@ -162,6 +173,42 @@ bool is_current(const Job& job, const Settings& s, const ColorConfig& config, bo
             return false;
     }
     return false;
+}
+
+// --missing: the outputs --skip-existing would make, without making them:
+// their frame numbers (with --frames) or output paths on stdout, one a line,
+// and for each that exists one line on stderr saying why it is not current.
+int list_missing(const std::vector<Job>& jobs, const Settings& s, const ColorConfig& config) {
+    using Kind = DisplayImageVerdict::Kind;
+    std::string out;
+    bool said_cannot_judge = false;
+    for (const Job& job : jobs) {
+        const DisplayImageVerdict verdict = judge(job, s, config);
+        if (verdict.kind == Kind::Current) continue;
+        const std::string label = job.frame ? "frame " + std::to_string(*job.frame) + ": " : "";
+        switch (verdict.kind) {
+            case Kind::Stale:
+                orb::cli::info(label + job.output + ": " + verdict.reason);
+                break;
+            case Kind::Damaged:
+                orb::cli::info(label + job.output + ": does not read whole (" + verdict.reason + ")");
+                break;
+            case Kind::CannotJudge:
+                if (!said_cannot_judge) orb::cli::info("--missing: " + verdict.reason);
+                said_cannot_judge = true;
+                break;
+            case Kind::Current:
+            case Kind::Absent:
+                break;
+        }
+        out += (job.frame ? std::to_string(*job.frame) : job.output) + "\n";
+    }
+    std::fputs(out.c_str(), stdout);
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        orb::cli::error("cannot write to stdout");
+        return orb::cli::kFailure;
+    }
+    return orb::cli::kSuccess;
 }
 
 void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
@@ -226,6 +273,9 @@ int main(int argc, char** argv) {
             app.add_flag("--skip-existing", s.skip_existing,
                          "Leave outputs alone that are current: whole, made from the file now at their input path "
                          "with these settings (an output whose input is gone is kept)");
+            app.add_flag("--missing", s.missing,
+                         "Make nothing: print the frames (with --frames; else the outputs) whose output is not "
+                         "current, as --skip-existing judges it, one a line, with why on stderr");
             app.add_flag("--contact-sheet", s.contact_sheet, "Lay out all passes of the input in one labelled image");
             app.footer(
                 "Examples:\n"
@@ -237,6 +287,7 @@ int main(int argc, char** argv) {
                 "  orb-tonemap render.exr --contact-sheet -o passes.png\n"
                 "  orb-tonemap beauty.%04d.exr --frames 1-240 -o png/beauty.%04d.png\n"
                 "  orb-tonemap beauty.####.exr --frames 1-240 --skip-existing -o png/beauty.####.png\n"
+                "  orb-tonemap beauty.####.exr --frames 1-240 --missing -o png/beauty.####.png\n"
                 "  orb-tonemap a.exr b.exr c.exr -o previews/ --format jpg\n"
                 "  orb-tonemap render.exr -o - --format png > render.png\n"
                 "  orb-tonemap --list\n"
@@ -252,10 +303,12 @@ int main(int argc, char** argv) {
             if (s.output.empty()) throw UsageError("no output: give -o OUT");
             if (s.output == "-" && s.format.empty()) throw UsageError("-o - (stdout) needs --format, e.g. --format png");
             if (s.contact_sheet && s.pass != "beauty") throw UsageError("--contact-sheet shows every pass; drop --pass");
+            if (s.missing && s.output == "-") throw UsageError("--missing needs an output file, not -o -");
             const std::vector<Job> jobs = plan_jobs(s);
             check_formats(jobs, s);
             refuse_overlaps(jobs, s);
             const ColorConfig config = load_color_config(s.color);
+            if (s.missing) return list_missing(jobs, s, config);
             // Sequences: a bad frame is reported and the rest still get done.
             int failures = 0, skipped = 0;
             bool said_cannot_judge = false;
