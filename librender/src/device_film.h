@@ -1,5 +1,8 @@
 // The film's sums in device buffers: one buffer per row of the channel table
 // (ORB_FILM_CHANNELS), in its order, which is render_pass's film arguments'.
+// Only the channels the kernels compute (RenderConfig::film_channels) have
+// buffers of the film's size and travel between host and device; the others
+// stay at their clear values, which the host writes itself.
 #pragma once
 
 #include <array>
@@ -12,27 +15,43 @@ namespace orb::render {
 
 class DeviceFilm {
 public:
-    DeviceFilm(const cl::Context& context, int width, int height);
+    // `channels`: the bits (film::channel_bit) of the channels the kernels
+    // compute. The others get a placeholder of one pixel: render_pass takes
+    // an argument for every channel but never touches one it does not build.
+    DeviceFilm(const cl::Context& context, int width, int height, std::uint32_t channels = film::kAllChannels);
 
     // Every channel at its clear value (enqueued; the queue orders it before later passes).
     void clear(cl::CommandQueue& queue);
-    // Copies the sums back into `film`, reusing its memory when it has this
+    // Copies the computed channels' sums back into `film` and sets its other
+    // channels to their clear values, reusing its memory when it has this
     // size already (a frame loop then touches no fresh pages); the sample
     // count and ranges are the caller's to fill in.
     void read(cl::CommandQueue& queue, Film& film) const;
-    // Uploads `film`'s channels, which must match this size (std::invalid_argument otherwise).
+    // Uploads `film`'s computed channels, which must match this size
+    // (std::invalid_argument otherwise); its other channels are not read.
     void write(cl::CommandQueue& queue, const Film& film);
 
     static constexpr int kBufferCount = film::kChannelCount;
     const std::array<cl::Buffer, kBufferCount>& buffers() const { return buffers_; }
 
+    bool computes(film::Channel channel) const { return (channels_ & film::channel_bit(channel)) != 0; }
+
     std::uint64_t bytes() const;
 
 private:
-    std::size_t floats_in(const film::ChannelInfo& info) const;
+    std::size_t floats_in(const film::ChannelInfo& info) const;     // of the whole film
+    std::size_t buffer_floats(const film::ChannelInfo& info) const;  // of its buffer: the film's or a placeholder's
+    bool has_this_shape(const Film& film) const;
+    void enqueue_reads(cl::CommandQueue& queue, Film& film) const;  // the computed channels, into `film`
+    void clear_uncomputed(Film& film) const;
+    void check_shape(const Film& film) const;  // for write(): size and computed channels
+
+    // A channel this large is cleared by a thread of its own.
+    static constexpr std::size_t kFloatsWorthAThread = std::size_t{1} << 20;  // 4 MB
 
     int width_;
     int height_;
+    std::uint32_t channels_;
     std::array<cl::Buffer, kBufferCount> buffers_;
 };
 

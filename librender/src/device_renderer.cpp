@@ -59,7 +59,7 @@ DeviceFilm make_film(DeviceSession& session, const RenderConfig& config)
 {
     check_config(config);
     try {
-        return DeviceFilm(session.context(), config.width, config.height);
+        return DeviceFilm(session.context(), config.width, config.height, config.film_channels);
     } catch (const cl::Error& error) {
         throw std::runtime_error("allocating the film on " + session.info().name +
                                  " failed: " + describe_cl_error(error));

@@ -55,7 +55,9 @@ public:
     void set_scene(const SceneLayout& scene, const device::CameraParams& camera);
     void set_seed(std::uint64_t seed);
 
-    // Every channel at its clear value; the next slice writes the centre-ray channels.
+    // Every channel at its clear value; the next slice writes the centre-ray
+    // channels. Only the channels the kernels compute (config.film_channels)
+    // live on the device at the film's size and travel to and from it.
     void clear_film();
     // Starts rendering the samples [first_sample, first_sample + count) into
     // the film and returns; wait() blocks until they are done.

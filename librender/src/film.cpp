@@ -37,7 +37,7 @@ SampleRanges Film::held_ranges() const
     return SampleRanges(SampleRange{0, samples_per_pixel});
 }
 
-void Film::accumulate(const Film& other)
+void Film::accumulate(const Film& other, std::uint32_t channels)
 {
     if (other.width != width || other.height != height)
         throw std::invalid_argument("cannot add a " + std::to_string(other.width) + "x" + std::to_string(other.height) +
@@ -50,6 +50,7 @@ void Film::accumulate(const Film& other)
     // The same-in-every-slice channels come from the film with the lowest sample index.
     const bool take_others = samples_per_pixel == 0 || others.first() < held_ranges().first();
     for (const film::ChannelInfo& info : film::kChannels) {
+        if ((channels & film::channel_bit(info.channel)) == 0) continue;
         std::vector<float>& into = channel(info.channel);
         const std::vector<float>& from = other.channel(info.channel);
         if (into.size() != from.size())

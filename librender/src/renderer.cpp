@@ -38,6 +38,10 @@ struct Renderer::Impl {
     bool film_clear = true;                   // every device film is at its clear values (new frames skip a clear)
     AnimationTree tree;                       // the BVH, refitted from frame to frame while that pays
     double frame_render_seconds = 0;          // spent in render_samples since the scene was set
+    // Another device's film on its way into the one read_film() returns,
+    // kept so that its memory is reused read after read (read_film() is
+    // therefore not for two threads at once).
+    mutable Film device_part;
 
     std::vector<int> split(int count) const;
     void wait_all(const std::vector<std::size_t>& busy);
@@ -46,12 +50,13 @@ struct Renderer::Impl {
 std::vector<int> Renderer::Impl::split(int count) const
 {
     if (devices.size() == 1) return {count};
-    // Measured speeds once every device has been timed; equal shares before.
-    std::vector<double> weights;
-    for (const auto& device : devices) weights.push_back(device->seconds_per_sample());
-    const bool all_timed = std::all_of(weights.begin(), weights.end(), [](double s) { return s > 0; });
-    for (double& w : weights) w = all_timed ? 1.0 / w : 1.0;
-    return split_in_proportion(count, weights);
+    // Each device as fast as measured so far (in this frame or earlier ones:
+    // set_scene keeps the devices' renderers), or as its kind and size
+    // suggest until it has been timed.
+    std::vector<DeviceSpeed> speeds;
+    for (std::size_t d = 0; d < devices.size(); ++d)
+        speeds.push_back({devices[d]->seconds_per_sample(), prior_speed(infos[d])});
+    return split_pass(count, speeds);
 }
 
 void Renderer::Impl::wait_all(const std::vector<std::size_t>& busy)
@@ -211,11 +216,11 @@ void Renderer::read_film(Film& film) const
             first = false;
             continue;
         }
-        Film part;
+        Film& part = r.device_part;
         r.devices[d]->read_film(part);
         part.samples_per_pixel = r.device_ranges[d].total();
         part.sample_ranges = r.device_ranges[d];
-        film.accumulate(part);
+        film.accumulate(part, r.config.film_channels);  // the others are clear in both
     }
     if (first) film.resize(r.config.width, r.config.height);  // no samples yet: an empty film
 }

@@ -56,6 +56,24 @@ TEST(FilmTable, SumsAddAndCentreRayValuesComeFromTheLowestSamples)
     }
 }
 
+// Films of a render that computed only some channels combine those alone
+// (Renderer::read_film with several devices): the others are left as they
+// are, and may even be missing from the film added.
+TEST(FilmTable, OnlyTheChannelsAskedForCombine)
+{
+    const std::uint32_t beauty = film::channel_bit(film::Channel::radiance) | film::channel_bit(film::Channel::alpha);
+    Film sum = filled(1.0f, {0, 4});
+    Film other = filled(5.0f, {4, 2});
+    other.albedo.clear();
+    sum.accumulate(other, beauty);
+    EXPECT_EQ(sum.samples_per_pixel, 6u);
+    EXPECT_EQ(sum.sample_ranges.format(), "0:6");
+    for (const film::ChannelInfo& info : film::kChannels) {
+        const float expected = (beauty & film::channel_bit(info.channel)) != 0 ? 6.0f : 1.0f;
+        for (float v : sum.channel(info.channel)) ASSERT_EQ(v, expected) << info.name;
+    }
+}
+
 TEST(FilmTable, FilmsOfOverlappingSamplesOrAnotherSizeAreRefused)
 {
     Film sum = filled(1.0f, {0, 4});

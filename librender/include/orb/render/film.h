@@ -44,7 +44,11 @@ struct Film {
     // rule (sums add; a Same channel keeps the value of the film holding the
     // lowest sample index). Throws std::invalid_argument for another size or
     // for sample ranges that overlap (their samples would count twice).
-    void accumulate(const Film& other);
+    // Only the channels in `channels` (bits of film::channel_bit) are
+    // combined; the others are left as they are and not looked at in
+    // `other`, which is their combination when both films hold them at
+    // their clear values (channels that a render did not compute).
+    void accumulate(const Film& other, std::uint32_t channels = film::kAllChannels);
 };
 
 }  // namespace orb::render

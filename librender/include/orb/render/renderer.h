@@ -88,7 +88,11 @@ public:
     // Adds `samples` samples per pixel, continuing from next_sample().
     void render_pass(int samples) override;
     // Adds exactly the samples [first_sample, first_sample + count), split
-    // over the devices in proportion to their measured speed. Throws
+    // over the devices in contiguous slices so that the pass is expected to
+    // end as early as it can (sample_split.h): a device gets none unless its
+    // share ends the pass at least 5% sooner than the others would alone.
+    // Speeds are measured pass by pass and kept across frames; a device not
+    // yet timed is judged by its kind and compute units. Throws
     // std::invalid_argument if the film already holds any of them.
     void render_samples(std::uint64_t first_sample, int count);
 
@@ -96,16 +100,20 @@ public:
     std::uint64_t pixel_count() const override;
     std::uint64_t next_sample() const;
     const SampleRanges& sample_ranges() const;
-    // The samples each device has rendered into the film, in devices() order.
+    // The samples each device has rendered into the film, in devices() order
+    // (empty for a device too slow to shorten any pass by 5%: not used).
     const std::vector<SampleRanges>& device_sample_ranges() const;
 
     // The film: every device's sums added, with the sample count and ranges.
+    // Only the channels of config().film_channels come from the devices; the
+    // others hold their clear values.
     Film read_film() const;
     // The same into `film`, reusing its memory when it has this size (frame
-    // after frame, a reused film costs no fresh pages).
+    // after frame, a reused film costs no fresh pages). One thread at a time.
     void read_film(Film& film) const;
     // Continue from these sums: render_pass() then follows the film's
-    // highest sample index. The film must have this renderer's size.
+    // highest sample index. The film must have this renderer's size; only
+    // its channels of config().film_channels are uploaded.
     void load_film(const Film& film);
 
     std::uint64_t device_memory_bytes() const;  // buffers allocated, over all devices
