@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
-#include <system_error>
-#include <thread>
 
 namespace orb::render {
 
@@ -40,20 +38,41 @@ bool DeviceFilm::has_this_shape(const Film& film) const
 {
     if (film.width != width_ || film.height != height_) return false;
     for (const film::ChannelInfo& info : film::kChannels)
-        if (film.channel(info.channel).size() != floats_in(info)) return false;
+        if (film.channel(info.channel).size() != (computes(info.channel) ? floats_in(info) : 0)) return false;
     return true;
 }
 
 void DeviceFilm::read(cl::CommandQueue& queue, Film& film) const
 {
-    // A film of another shape is made anew, every channel at its clear value.
-    const bool reused = has_this_shape(film);
-    if (!reused) film.resize(width_, height_);
+    // The computed channels only; a film of another shape is made anew.
+    if (!has_this_shape(film)) film.resize(width_, height_, channels_);
     enqueue_reads(queue, film);
-    // A reused film may hold an earlier frame in the channels that are not
-    // read back: cleared on the host while the others travel.
-    if (reused) clear_uncomputed(film);
     queue.finish();
+}
+
+std::vector<cl::Event> DeviceFilm::read_later(cl::CommandQueue& queue, cl::CommandQueue& transfer, Film& film)
+{
+    if (!has_this_shape(film)) film.resize(width_, height_, channels_);
+    // The staging buffers are read by the last read_later's transfers: those
+    // end long before a frame later, but must have ended.
+    if (!staging_reads_.empty()) cl::Event::waitForEvents(staging_reads_);
+    staging_reads_.clear();
+    for (const film::ChannelInfo& info : film::kChannels) {
+        if (!computes(info.channel)) continue;
+        const int index = static_cast<int>(info.channel);
+        const std::size_t bytes = floats_in(info) * sizeof(float);
+        if (!staging_[index]()) staging_[index] = cl::Buffer(queue.getInfo<CL_QUEUE_CONTEXT>(), CL_MEM_READ_WRITE, bytes);
+        cl::Event copied;
+        queue.enqueueCopyBuffer(buffers_[index], staging_[index], 0, 0, bytes, nullptr, &copied);
+        const std::vector<cl::Event> after{copied};
+        cl::Event read;
+        transfer.enqueueReadBuffer(staging_[index], CL_FALSE, 0, bytes, film.channel(info.channel).data(), &after, &read);
+        staging_reads_.push_back(read);
+    }
+    // Both queues start now (a queue may hold its commands back until flushed).
+    queue.flush();
+    transfer.flush();
+    return staging_reads_;
 }
 
 void DeviceFilm::enqueue_reads(cl::CommandQueue& queue, Film& film) const
@@ -63,29 +82,6 @@ void DeviceFilm::enqueue_reads(cl::CommandQueue& queue, Film& film) const
         std::vector<float>& values = film.channel(info.channel);
         queue.enqueueReadBuffer(buffers_[static_cast<int>(info.channel)], CL_FALSE, 0, values.size() * sizeof(float),
                                 values.data());
-    }
-}
-
-void DeviceFilm::clear_uncomputed(Film& film) const
-{
-    // At 1920x1080 the channels a beauty-only run leaves out are 166 MB,
-    // which one core takes 15-20 ms to write (a 16-core Xeon) while an H100
-    // sends the computed 33 MB in 3 ms: large channels are written each by a
-    // thread of its own (memory bandwidth grows with the cores writing).
-    std::vector<std::jthread> writers;
-    for (const film::ChannelInfo& info : film::kChannels) {
-        if (computes(info.channel)) continue;
-        std::vector<float>& values = film.channel(info.channel);
-        const auto write = [&values, clear = info.clear] { std::fill(values.begin(), values.end(), clear); };
-        if (values.size() < kFloatsWorthAThread) {
-            write();
-            continue;
-        }
-        try {
-            writers.emplace_back(write);
-        } catch (const std::system_error&) {
-            write();  // no thread to be had: this one writes it
-        }
     }
 }
 
@@ -117,7 +113,10 @@ void DeviceFilm::write(cl::CommandQueue& queue, const Film& film)
 std::uint64_t DeviceFilm::bytes() const
 {
     std::uint64_t total = 0;
-    for (const film::ChannelInfo& info : film::kChannels) total += buffer_floats(info) * sizeof(float);
+    for (const film::ChannelInfo& info : film::kChannels) {
+        total += buffer_floats(info) * sizeof(float);
+        if (staging_[static_cast<int>(info.channel)]()) total += floats_in(info) * sizeof(float);
+    }
     return total;
 }
 

@@ -1,12 +1,13 @@
 // The film's sums in device buffers: one buffer per row of the channel table
 // (ORB_FILM_CHANNELS), in its order, which is render_pass's film arguments'.
 // Only the channels the kernels compute (RenderConfig::film_channels) have
-// buffers of the film's size and travel between host and device; the others
-// stay at their clear values, which the host writes itself.
+// buffers of the film's size and travel between host and device; on the
+// host the others are empty (Film::resize with the channel mask).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "opencl.h"
 #include "orb/render/film.h"
@@ -22,11 +23,18 @@ public:
 
     // Every channel at its clear value (enqueued; the queue orders it before later passes).
     void clear(cl::CommandQueue& queue);
-    // Copies the computed channels' sums back into `film` and sets its other
-    // channels to their clear values, reusing its memory when it has this
-    // size already (a frame loop then touches no fresh pages); the sample
-    // count and ranges are the caller's to fill in.
+    // Copies the computed channels' sums back into `film`, whose other
+    // channels are empty, reusing its memory when it has this shape already
+    // (a frame loop then touches no fresh pages); the sample count and
+    // ranges are the caller's to fill in.
     void read(cl::CommandQueue& queue, Film& film) const;
+    // The same without stopping the device: on `queue` (after the passes
+    // enqueued before, before any clear or pass enqueued after) the computed
+    // channels are copied into staging buffers on the device, which
+    // `transfer` then reads into `film` while `queue` goes on. `film` is
+    // shaped at once; its values are there when every returned event has
+    // completed, and its memory must stay where it is until then.
+    std::vector<cl::Event> read_later(cl::CommandQueue& queue, cl::CommandQueue& transfer, Film& film);
     // Uploads `film`'s computed channels, which must match this size
     // (std::invalid_argument otherwise); its other channels are not read.
     void write(cl::CommandQueue& queue, const Film& film);
@@ -43,16 +51,14 @@ private:
     std::size_t buffer_floats(const film::ChannelInfo& info) const;  // of its buffer: the film's or a placeholder's
     bool has_this_shape(const Film& film) const;
     void enqueue_reads(cl::CommandQueue& queue, Film& film) const;  // the computed channels, into `film`
-    void clear_uncomputed(Film& film) const;
     void check_shape(const Film& film) const;  // for write(): size and computed channels
-
-    // A channel this large is cleared by a thread of its own.
-    static constexpr std::size_t kFloatsWorthAThread = std::size_t{1} << 20;  // 4 MB
 
     int width_;
     int height_;
     std::uint32_t channels_;
     std::array<cl::Buffer, kBufferCount> buffers_;
+    std::array<cl::Buffer, kBufferCount> staging_;  // read_later's copies (computed channels), made on first use
+    std::vector<cl::Event> staging_reads_;          // the last reads out of them
 };
 
 }  // namespace orb::render

@@ -289,6 +289,15 @@ void DeviceRenderer::read_film(Film& film)
     }
 }
 
+std::vector<cl::Event> DeviceRenderer::read_film_later(Film& film)
+{
+    try {
+        return film_.read_later(session_->queue(), session_->transfer_queue(), film);
+    } catch (const cl::Error& error) {
+        fail(error, "reading the film back");
+    }
+}
+
 void DeviceRenderer::load_film(const Film& film)
 {
     try {

@@ -47,6 +47,13 @@ const cl::Program& DeviceSession::program(const std::string& build_options)
     return programs_.emplace(build_options, std::move(built)).first->second;
 }
 
+cl::CommandQueue& DeviceSession::transfer_queue()
+{
+    const std::lock_guard<std::mutex> lock(transfer_mutex_);
+    if (!transfer_queue_()) transfer_queue_ = cl::CommandQueue(context_, device_);
+    return transfer_queue_;
+}
+
 int DeviceSession::programs_built() const
 {
     const std::lock_guard<std::mutex> lock(programs_mutex_);

@@ -40,6 +40,10 @@ public:
     const cl::Device& device() const { return device_; }
     const cl::Context& context() const { return context_; }
     cl::CommandQueue& queue() { return queue_; }
+    // A second queue for reading films back while the first renders the
+    // next frame (devices with copy engines run both at once). Made on
+    // first use.
+    cl::CommandQueue& transfer_queue();
 
     // The program built from the kernels with these compiler options; built
     // on the first request, then the same one. Throws std::runtime_error with
@@ -55,6 +59,8 @@ private:
     cl::Device device_;
     cl::Context context_;
     cl::CommandQueue queue_;
+    std::mutex transfer_mutex_;
+    cl::CommandQueue transfer_queue_;
     std::string source_;  // read once: the kernels do not change while the process runs
     mutable std::mutex programs_mutex_;
     std::map<std::string, cl::Program> programs_;

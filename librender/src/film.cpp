@@ -20,15 +20,21 @@ static_assert(std::size(kMembers) == film::kChannels.size());
 std::vector<float>& Film::channel(film::Channel c) { return this->*kMembers[static_cast<int>(c)]; }
 const std::vector<float>& Film::channel(film::Channel c) const { return this->*kMembers[static_cast<int>(c)]; }
 
-void Film::resize(int w, int h)
+void Film::resize(int w, int h, std::uint32_t channels)
 {
     if (w < 0 || h < 0) throw std::invalid_argument("film size must not be negative");
     width = w;
     height = h;
     samples_per_pixel = 0;
     sample_ranges = {};
-    for (const film::ChannelInfo& info : film::kChannels)
-        channel(info.channel).assign(pixel_count() * static_cast<std::size_t>(info.components), info.clear);
+    for (const film::ChannelInfo& info : film::kChannels) {
+        std::vector<float>& values = channel(info.channel);
+        if ((channels & film::channel_bit(info.channel)) == 0) {
+            std::vector<float>().swap(values);  // its memory given back
+            continue;
+        }
+        values.assign(pixel_count() * static_cast<std::size_t>(info.components), info.clear);
+    }
 }
 
 SampleRanges Film::held_ranges() const

@@ -85,8 +85,8 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
             }
             render_phase.add(seconds_since(t));
             t = Clock::now();
-            FinalImage image{writer.take_spare_film(), plan_metadata(plan), write_options};
-            renderer->read_film(image.film);
+            FinalImage image{writer.take_spare_film(), plan_metadata(plan), write_options, std::nullopt};
+            image.arriving = renderer->read_film_later(image.film);
             read.add(seconds_since(t));
             const double waited_before = writer.seconds_waited();
             writer.submit({std::move(image), cli::OutputFile(folder + "/frame" + std::to_string(i) + ".exr", "-o"),
@@ -100,7 +100,7 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
         const std::size_t alone = std::min<std::size_t>(jobs.size(), 4);
         exr::ExrEncoding encoding;
         for (std::size_t i = 0; i < alone; ++i) {
-            FinalImage image{renderer->read_film(), plan_metadata(plan), write_options};
+            FinalImage image{renderer->read_film(), plan_metadata(plan), write_options, std::nullopt};
             Clock::time_point t = Clock::now();
             image.encode(encoding);
             encode.add(seconds_since(t));

@@ -19,9 +19,12 @@ public:
         options_.compression = plan.compression;
     }
 
-    FinalImage image(double seconds_this_run, render::Film reuse = {}) {
-        FinalImage image{std::move(reuse), metadata_, options_};
-        renderer_.read_film(image.film);
+    FinalImage image(double seconds_this_run, render::Film reuse = {}, bool read_later = false) {
+        FinalImage image{std::move(reuse), metadata_, options_, std::nullopt};
+        if (read_later)
+            image.arriving = renderer_.read_film_later(image.film);
+        else
+            renderer_.read_film(image.film);
         image.metadata.render_seconds = previous_seconds_ + seconds_this_run;
         return image;
     }
@@ -63,7 +66,8 @@ const char* stop_reason_name(render::StopReason reason) {
 }
 
 FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, const RenderOptions& options,
-                        cli::OutputFile& image, const std::string& label, FrameClaim* claim, render::Film reuse) {
+                        cli::OutputFile& image, const std::string& label, FrameClaim* claim, render::Film reuse,
+                        bool read_later) {
     const std::uint64_t start_spp = renderer.samples_per_pixel();
     ImageWriter writer(plan, image, renderer);
     ProgressReporter progress(cli::quiet(), static_cast<double>(renderer.pixel_count()),
@@ -94,7 +98,7 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     outcome.reason = render::render_progressively(renderer, limits, callbacks, interrupt_requested(), &final_state);
     progress.finish(final_state);
     if (renderer.samples_per_pixel() == 0) return outcome;
-    outcome.image = writer.image(final_state.elapsed_seconds, std::move(reuse));
+    outcome.image = writer.image(final_state.elapsed_seconds, std::move(reuse), read_later);
     outcome.rendered = true;
 
     outcome.stats = renderer_stats(renderer);

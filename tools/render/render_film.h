@@ -3,6 +3,7 @@
 // and by every frame of an animation.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "frame_claim.h"
@@ -25,13 +26,27 @@ std::string devices_line(const render::Renderer& renderer);
 const char* stop_reason_name(render::StopReason reason);
 std::string kernel_builds_text(int builds);  // "1 kernel build", "2 kernel builds"
 
-// The final image of a render, ready to be encoded and written.
+// The final image of a render, ready to be encoded and written once its
+// film has arrived (a frame's film travels back while the next frame renders).
 struct FinalImage {
     render::Film film;
     exr::ExrMetadata metadata;
     exr::ExrWriteOptions options;
-    std::string encode() const { return exr::encode_film_exr(film, metadata, options); }
-    void encode(exr::ExrEncoding& into) const { exr::encode_film_exr(film, metadata, options, into); }
+    std::optional<render::PendingFilm> arriving;  // set while the film is on its way
+
+    // Waits for the film, if it is still on its way.
+    void wait_for_film() {
+        if (arriving) arriving->wait(film);
+        arriving.reset();
+    }
+    std::string encode() {
+        wait_for_film();
+        return exr::encode_film_exr(film, metadata, options);
+    }
+    void encode(exr::ExrEncoding& into) {
+        wait_for_film();
+        exr::encode_film_exr(film, metadata, options, into);
+    }
 };
 
 struct FilmOutcome {
@@ -44,11 +59,13 @@ struct FilmOutcome {
 // Renders `plan` to its target on `renderer` (its scene, seed and film set
 // up by the caller), writing checkpoints to `image`, and returns the final
 // image for the caller to write, read into `reuse` (whose memory a frame
-// loop hands back frame after frame). `label` starts the progress lines; a
+// loop hands back frame after frame). With `read_later` the image's film is
+// still on its way when this returns (FinalImage::wait_for_film), so the
+// renderer can go on to the next frame. `label` starts the progress lines; a
 // `claim` is refreshed while rendering.
 FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, const RenderOptions& options,
                         cli::OutputFile& image, const std::string& label, FrameClaim* claim,
-                        render::Film reuse = {});
+                        render::Film reuse = {}, bool read_later = false);
 
 // "64 spp (samples 64:64) in 2.1 s (1.3 Msamples/s) -> out.exr"
 std::string film_summary(const FilmOutcome& outcome, const render::Renderer& renderer, const cli::OutputFile& image);

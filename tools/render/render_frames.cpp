@@ -171,7 +171,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
             ++continued;
         if (index + 1 < jobs.size()) prefetch.start(plan, jobs[index + 1]);
         FilmOutcome outcome = render_film(*renderer, plan, options, image, label, claim ? &*claim : nullptr,
-                                          writer.take_spare_film());
+                                          writer.take_spare_film(), /*read_later=*/true);
         if (!outcome.rendered) {
             writer.finish();
             cli::error(label + "interrupted before the first pass finished; no image written");

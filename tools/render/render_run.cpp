@@ -59,7 +59,7 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
     // the kernel build, there is nothing to save and they end it at once.
     install_interrupt_handlers();
 
-    const FilmOutcome outcome = render_film(renderer, plan, options, *outputs.image, "", nullptr);
+    FilmOutcome outcome = render_film(renderer, plan, options, *outputs.image, "", nullptr);
     if (!outcome.rendered) {
         cli::error("interrupted before the first pass finished; no image written");
         return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;

@@ -47,6 +47,26 @@ struct RenderConfig {
     std::uint32_t film_channels = film::kAllChannels;
 };
 
+// A film on its way back from the devices (Renderer::read_film_later).
+class PendingFilm {
+public:
+    PendingFilm();
+    ~PendingFilm();  // waits for the transfers still under way (their memory is the caller's)
+    PendingFilm(PendingFilm&&) noexcept;
+    PendingFilm& operator=(PendingFilm&&) noexcept;
+
+    // Blocks until the sums are in `film` (the film read_film_later was
+    // given, or that film moved: its memory is what the devices write into),
+    // then gives it its sample count and ranges and adds the other devices'
+    // parts. Throws std::runtime_error if a transfer failed.
+    void wait(Film& film);
+
+private:
+    friend class Renderer;
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
 class Renderer final : public PassRenderer {
 public:
     // Chooses the device(s), builds (or loads cached) kernels, uploads the
@@ -111,6 +131,12 @@ public:
     // The same into `film`, reusing its memory when it has this size (frame
     // after frame, a reused film costs no fresh pages). One thread at a time.
     void read_film(Film& film) const;
+    // The film as read_film() gives it, without waiting for it: each device
+    // copies its film on the device and sends the copy on a queue of its
+    // own, so the transfer overlaps whatever is rendered next (the next
+    // frame). `film`'s memory (its channels' buffers; the Film object may
+    // be moved) must not be touched until PendingFilm::wait.
+    PendingFilm read_film_later(Film& film) const;
     // Continue from these sums: render_pass() then follows the film's
     // highest sample index. The film must have this renderer's size; only
     // its channels of config().film_channels are uploaded.
