@@ -50,29 +50,36 @@ void DeviceFilm::read(cl::CommandQueue& queue, Film& film) const
     queue.finish();
 }
 
-std::vector<cl::Event> DeviceFilm::read_later(cl::CommandQueue& queue, cl::CommandQueue& transfer, Film& film)
+FilmArrival DeviceFilm::read_later(cl::CommandQueue& queue, cl::CommandQueue& transfer)
 {
-    if (!has_this_shape(film)) film.resize(width_, height_, channels_);
     // The staging buffers are read by the last read_later's transfers: those
     // end long before a frame later, but must have ended.
     if (!staging_reads_.empty()) cl::Event::waitForEvents(staging_reads_);
     staging_reads_.clear();
+    const cl::Context context = queue.getInfo<CL_QUEUE_CONTEXT>();
+    if (!pinned_) {
+        std::array<std::size_t, film::kChannelCount> bytes{};
+        for (const film::ChannelInfo& info : film::kChannels)
+            if (computes(info.channel)) bytes[static_cast<int>(info.channel)] = floats_in(info) * sizeof(float);
+        pinned_ = std::make_shared<PinnedPool>(context, bytes);
+    }
+    std::shared_ptr<PinnedChannels> landing = pinned_->take(transfer);
     for (const film::ChannelInfo& info : film::kChannels) {
         if (!computes(info.channel)) continue;
         const int index = static_cast<int>(info.channel);
         const std::size_t bytes = floats_in(info) * sizeof(float);
-        if (!staging_[index]()) staging_[index] = cl::Buffer(queue.getInfo<CL_QUEUE_CONTEXT>(), CL_MEM_READ_WRITE, bytes);
+        if (!staging_[index]()) staging_[index] = cl::Buffer(context, CL_MEM_READ_WRITE, bytes);
         cl::Event copied;
         queue.enqueueCopyBuffer(buffers_[index], staging_[index], 0, 0, bytes, nullptr, &copied);
         const std::vector<cl::Event> after{copied};
         cl::Event read;
-        transfer.enqueueReadBuffer(staging_[index], CL_FALSE, 0, bytes, film.channel(info.channel).data(), &after, &read);
+        transfer.enqueueReadBuffer(staging_[index], CL_FALSE, 0, bytes, landing->mapped[index], &after, &read);
         staging_reads_.push_back(read);
     }
     // Both queues start now (a queue may hold its commands back until flushed).
     queue.flush();
     transfer.flush();
-    return staging_reads_;
+    return FilmArrival(staging_reads_, std::move(landing), width_, height_, channels_);
 }
 
 void DeviceFilm::enqueue_reads(cl::CommandQueue& queue, Film& film) const

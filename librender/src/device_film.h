@@ -7,8 +7,10 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "film_arrival.h"
 #include "opencl.h"
 #include "orb/render/film.h"
 
@@ -31,10 +33,9 @@ public:
     // The same without stopping the device: on `queue` (after the passes
     // enqueued before, before any clear or pass enqueued after) the computed
     // channels are copied into staging buffers on the device, which
-    // `transfer` then reads into `film` while `queue` goes on. `film` is
-    // shaped at once; its values are there when every returned event has
-    // completed, and its memory must stay where it is until then.
-    std::vector<cl::Event> read_later(cl::CommandQueue& queue, cl::CommandQueue& transfer, Film& film);
+    // `transfer` then sends into pinned host memory while `queue` goes on
+    // (film_arrival.h).
+    FilmArrival read_later(cl::CommandQueue& queue, cl::CommandQueue& transfer);
     // Uploads `film`'s computed channels, which must match this size
     // (std::invalid_argument otherwise); its other channels are not read.
     void write(cl::CommandQueue& queue, const Film& film);
@@ -59,6 +60,7 @@ private:
     std::array<cl::Buffer, kBufferCount> buffers_;
     std::array<cl::Buffer, kBufferCount> staging_;  // read_later's copies (computed channels), made on first use
     std::vector<cl::Event> staging_reads_;          // the last reads out of them
+    std::shared_ptr<PinnedPool> pinned_;            // where those reads land, made on first use
 };
 
 }  // namespace orb::render

@@ -160,7 +160,7 @@ void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraPar
             kernel_prepared_ = false;
             choose_work_sizes();
         }
-        scene_buffers_ = upload_scene(session_->context(), scene.tables);
+        upload_scene(session_->context(), session_->queue(), scene.tables, scene_buffers_);
         scene_bytes_ = scene_table_bytes(scene.tables);
         bind_buffers(kernel_, film_, scene_buffers_);
     } catch (const cl::Error& error) {
@@ -289,10 +289,10 @@ void DeviceRenderer::read_film(Film& film)
     }
 }
 
-std::vector<cl::Event> DeviceRenderer::read_film_later(Film& film)
+FilmArrival DeviceRenderer::read_film_later()
 {
     try {
-        return film_.read_later(session_->queue(), session_->transfer_queue(), film);
+        return film_.read_later(session_->queue(), session_->transfer_queue());
     } catch (const cl::Error& error) {
         fail(error, "reading the film back");
     }

@@ -65,9 +65,8 @@ public:
     void wait();
 
     void read_film(Film& film);    // the sums, into `film` (its memory reused); samples and ranges are the caller's
-    // The same while the device goes on (DeviceFilm::read_later): the sums
-    // are in `film` once the returned events complete.
-    std::vector<cl::Event> read_film_later(Film& film);
+    // The same while the device goes on (DeviceFilm::read_later).
+    FilmArrival read_film_later();
     void load_film(const Film& film);  // sums to continue from (centre-ray channels included when it holds samples)
 
     // Samples per pixel a pass should take to last the pass length aimed at

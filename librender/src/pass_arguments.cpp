@@ -53,6 +53,32 @@ SceneBuffers upload_scene(const cl::Context& context, const SceneTables& tables)
     return buffers;
 }
 
+namespace {
+
+template <typename T>
+void update_buffer(const cl::Context& context, cl::CommandQueue& queue, const std::vector<T>& records, cl::Buffer& buffer)
+{
+    if (!buffer() || buffer.getInfo<CL_MEM_SIZE>() != buffer_bytes(records)) {
+        buffer = read_only_buffer(context, records);
+        return;
+    }
+    if (!records.empty()) queue.enqueueWriteBuffer(buffer, CL_FALSE, 0, buffer_bytes(records), records.data());
+}
+
+}  // namespace
+
+void upload_scene(const cl::Context& context, cl::CommandQueue& queue, const SceneTables& tables, SceneBuffers& buffers)
+{
+#define ORB_UPDATE_FILM(...)
+#define ORB_UPDATE_TABLE(type, name) update_buffer(context, queue, tables.name, buffers.name);
+#define ORB_UPDATE_PARAMS(type, name)
+    ORB_RENDER_PASS_ARGUMENTS(ORB_UPDATE_FILM, ORB_UPDATE_TABLE, ORB_UPDATE_PARAMS)
+#undef ORB_UPDATE_FILM
+#undef ORB_UPDATE_TABLE
+#undef ORB_UPDATE_PARAMS
+    queue.finish();  // the records are the caller's: copied before it goes on
+}
+
 void bind_buffers(cl::Kernel& kernel, const DeviceFilm& film, const SceneBuffers& scene, cl_uint trailing_args)
 {
     const cl_uint kernel_args = kernel.getInfo<CL_KERNEL_NUM_ARGS>();

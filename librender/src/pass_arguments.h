@@ -65,6 +65,13 @@ std::uint64_t scene_table_bytes(const SceneTables& tables);
 
 SceneBuffers upload_scene(const cl::Context& context, const SceneTables& tables);
 
+// The same into `buffers`, keeping each buffer that has the table's size
+// and writing the new records into it (frame after frame an animated scene
+// keeps its table sizes: no allocation on the device, which costs more than
+// the copy for small tables). Blocking: the tables may go away afterwards.
+void upload_scene(const cl::Context& context, cl::CommandQueue& queue, const SceneTables& tables,
+                  SceneBuffers& buffers);
+
 // Binds the film and the scene tables, which stay for the whole render.
 // Throws std::runtime_error if the kernel's argument count is not the list's
 // plus `trailing_args` (kernels from --kernel-dir out of step with this

@@ -226,33 +226,21 @@ void Renderer::read_film(Film& film) const
 }
 
 struct PendingFilm::State {
-    // One list per device: a wait takes the events of one context only.
-    std::vector<std::vector<cl::Event>> transfers;
-    std::uint64_t samples_per_pixel = 0;  // the first device's part, read into the caller's film
-    SampleRanges ranges;
-    std::vector<Film> parts;  // the other devices' (count and ranges set)
+    struct Part {
+        FilmArrival arrival;
+        std::uint64_t samples_per_pixel = 0;
+        SampleRanges ranges;
+    };
+    std::vector<Part> parts;  // one per device that holds samples, the first into the caller's film
+    int width = 0, height = 0;
     std::uint32_t channels = film::kAllChannels;
-
-    void wait_for_transfers() {
-        if (transfers.empty()) return;
-        const std::vector<std::vector<cl::Event>> waiting = std::move(transfers);
-        transfers.clear();
-        try {
-            for (const std::vector<cl::Event>& device : waiting)
-                if (!device.empty()) cl::Event::waitForEvents(device);
-        } catch (const cl::Error& error) {
-            throw std::runtime_error("reading the film back failed: " + describe_cl_error(error));
-        }
-    }
 };
 
 PendingFilm::PendingFilm() = default;
 PendingFilm::~PendingFilm()
 {
-    if (state_) try {
-            state_->wait_for_transfers();
-        } catch (...) {
-        }
+    if (state_)
+        for (State::Part& part : state_->parts) part.arrival.wait();
 }
 PendingFilm::PendingFilm(PendingFilm&&) noexcept = default;
 PendingFilm& PendingFilm::operator=(PendingFilm&&) noexcept = default;
@@ -261,42 +249,39 @@ void PendingFilm::wait(Film& film)
 {
     if (!state_) return;
     const std::unique_ptr<State> state = std::move(state_);
-    state->wait_for_transfers();
-    film.samples_per_pixel = state->samples_per_pixel;
-    film.sample_ranges = state->ranges;
-    for (const Film& part : state->parts) film.accumulate(part, state->channels);  // the others are empty in both
+    if (state->parts.empty()) {
+        film.resize(state->width, state->height, state->channels);  // no samples yet: an empty film
+        return;
+    }
+    try {
+        Film other;
+        for (std::size_t p = 0; p < state->parts.size(); ++p) {
+            State::Part& part = state->parts[p];
+            Film& into = p == 0 ? film : other;
+            part.arrival.wait_into(into);
+            into.samples_per_pixel = part.samples_per_pixel;
+            into.sample_ranges = part.ranges;
+            if (p > 0) film.accumulate(other, state->channels);  // the others are empty in both
+        }
+    } catch (const cl::Error& error) {
+        for (State::Part& part : state->parts) part.arrival.wait();
+        throw std::runtime_error("reading the film back failed: " + describe_cl_error(error));
+    }
 }
 
-PendingFilm Renderer::read_film_later(Film& film) const
+PendingFilm Renderer::read_film_later() const
 {
     Impl& r = *impl_;
     PendingFilm pending;
     pending.state_ = std::make_unique<PendingFilm::State>();
     PendingFilm::State& state = *pending.state_;
+    state.width = r.config.width;
+    state.height = r.config.height;
     state.channels = r.config.film_channels;
-    state.parts.reserve(r.devices.size());  // the devices write into them: they must not move
-    bool first = true;
     for (std::size_t d = 0; d < r.devices.size(); ++d) {
         if (r.device_ranges[d].empty()) continue;
-        Film* into = &film;
-        if (first) {
-            state.samples_per_pixel = r.device_ranges[d].total();
-            state.ranges = r.device_ranges[d];
-            first = false;
-        } else {
-            into = &state.parts.emplace_back();
-            into->samples_per_pixel = r.device_ranges[d].total();
-            into->sample_ranges = r.device_ranges[d];
-        }
-        const std::uint64_t spp = into->samples_per_pixel;
-        const SampleRanges ranges = into->sample_ranges;
-        state.transfers.push_back(r.devices[d]->read_film_later(*into));
-        if (into != &film) {  // shaping it (read_later) cleared its count
-            into->samples_per_pixel = spp;
-            into->sample_ranges = ranges;
-        }
+        state.parts.push_back({r.devices[d]->read_film_later(), r.device_ranges[d].total(), r.device_ranges[d]});
     }
-    if (first) film.resize(r.config.width, r.config.height, r.config.film_channels);  // no samples yet: an empty film
     return pending;
 }
 

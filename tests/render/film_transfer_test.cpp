@@ -154,14 +154,13 @@ TEST(FilmTransfer, AFilmReadLaterIsTheFilmOfItsFrame)
         Renderer renderer(cornell(), config);
         renderer.render_pass(3);
         renderer.render_pass(2);
-        Film first;
-        PendingFilm arriving = renderer.read_film_later(first);
+        PendingFilm arriving = renderer.read_film_later();
         renderer.set_scene(moved);
         renderer.render_pass(4);
-        Film second;
-        PendingFilm also = renderer.read_film_later(second);
-        Film moved_first = std::move(first);  // the memory travels with the film
+        PendingFilm also = renderer.read_film_later();
+        Film moved_first = stale_film();  // memory that held other values: reused, and overwritten
         arriving.wait(moved_first);
+        Film second;
         also.wait(second);
         EXPECT_EQ(moved_first.samples_per_pixel, 5u);
         EXPECT_EQ(moved_first.sample_ranges.format(), "0:5");

@@ -86,7 +86,7 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
             render_phase.add(seconds_since(t));
             t = Clock::now();
             FinalImage image{writer.take_spare_film(), plan_metadata(plan), write_options, std::nullopt};
-            image.arriving = renderer->read_film_later(image.film);
+            image.arriving = renderer->read_film_later();
             read.add(seconds_since(t));
             const double waited_before = writer.seconds_waited();
             writer.submit({std::move(image), cli::OutputFile(folder + "/frame" + std::to_string(i) + ".exr", "-o"),

@@ -22,7 +22,7 @@ public:
     FinalImage image(double seconds_this_run, render::Film reuse = {}, bool read_later = false) {
         FinalImage image{std::move(reuse), metadata_, options_, std::nullopt};
         if (read_later)
-            image.arriving = renderer_.read_film_later(image.film);
+            image.arriving = renderer_.read_film_later();
         else
             renderer_.read_film(image.film);
         image.metadata.render_seconds = previous_seconds_ + seconds_this_run;

@@ -55,10 +55,10 @@ public:
     PendingFilm(PendingFilm&&) noexcept;
     PendingFilm& operator=(PendingFilm&&) noexcept;
 
-    // Blocks until the sums are in `film` (the film read_film_later was
-    // given, or that film moved: its memory is what the devices write into),
-    // then gives it its sample count and ranges and adds the other devices'
-    // parts. Throws std::runtime_error if a transfer failed.
+    // Blocks until the sums have arrived and puts them into `film` (its
+    // memory reused when it has the renderer's shape), with their sample
+    // count and ranges, the devices' parts added. Throws
+    // std::runtime_error if a transfer failed.
     void wait(Film& film);
 
 private:
@@ -132,11 +132,10 @@ public:
     // after frame, a reused film costs no fresh pages). One thread at a time.
     void read_film(Film& film) const;
     // The film as read_film() gives it, without waiting for it: each device
-    // copies its film on the device and sends the copy on a queue of its
-    // own, so the transfer overlaps whatever is rendered next (the next
-    // frame). `film`'s memory (its channels' buffers; the Film object may
-    // be moved) must not be touched until PendingFilm::wait.
-    PendingFilm read_film_later(Film& film) const;
+    // copies its film on the device and sends the copy into pinned host
+    // memory on a queue of its own, so the transfer overlaps whatever is
+    // rendered next (the next frame); PendingFilm::wait gives it.
+    PendingFilm read_film_later() const;
     // Continue from these sums: render_pass() then follows the film's
     // highest sample index. The film must have this renderer's size; only
     // its channels of config().film_channels are uploaded.
