@@ -16,11 +16,21 @@ using Planes = std::map<std::string, std::vector<float>>;
 // Each of these fills pixels [first, end) of its output planes.
 
 // Means are computed in double and rounded once, so mean * n gives the sum
-// back within a float rounding or two.
-void mean_channel(const Sums& sums, int components, int component, double n, std::span<float> out, std::size_t first,
+// back within a float rounding or two. A multiplication by 1/n (within a
+// double's rounding of the quotient, so the same float nearly always) and
+// every component in one sweep over the sums: this is most of what writing a
+// frame costs besides compressing it.
+void mean_channel(const Sums& sums, int components, double n, std::span<const Plane> out, std::size_t first,
                   std::size_t end) {
+    const double inverse = 1.0 / n;
+    if (components == 1) {
+        float* to = out[0].values.data();
+        for (std::size_t i = first; i < end; ++i) to[i] = static_cast<float>(static_cast<double>(sums[i]) * inverse);
+        return;
+    }
+    float* to[3] = {out[0].values.data(), out[1].values.data(), out[2].values.data()};
     for (std::size_t i = first; i < end; ++i)
-        out[i] = static_cast<float>(static_cast<double>(sums[i * components + component]) / n);
+        for (int c = 0; c < 3; ++c) to[c][i] = static_cast<float>(static_cast<double>(sums[i * 3 + c]) * inverse);
 }
 
 // Variance of the pixel mean: the unbiased sample variance divided by n,
@@ -148,7 +158,8 @@ void fill_planes(const render::Film& film, const std::vector<Pass>& passes, cons
             const int components = channel->components;
             switch (channel->stored_as) {
                 case StoredAs::Mean:
-                    for (int c = 0; c < components; ++c) mean_channel(sums, components, c, n, planes[next++].values, first, end);
+                    mean_channel(sums, components, n, std::span(planes).subspan(next, components), first, end);
+                    next += static_cast<std::size_t>(components);
                     break;
                 case StoredAs::UnitVector:
                     unit_vector_planes(sums, components, n, std::span(planes).subspan(next, components + 1), first, end);
