@@ -73,18 +73,7 @@ RenderStatus inspect_render(const std::string& path, RenderCheck check) {
         if (!status.reason.empty()) return status;
     }
     status.readable = true;
-    status.spp = summary.samples_per_pixel;
-    status.target_spp = summary.metadata.target_spp;
-    status.sample_ranges = summary.sample_ranges.format();
-    status.width = summary.width;
-    status.height = summary.height;
-    status.summary = summary;
-    if (status.spp < status.target_spp) {
-        status.reason = "stopped at " + std::to_string(status.spp) + " of " + std::to_string(status.target_spp) +
-                        " samples per pixel";
-        return status;
-    }
-    status.complete = true;
+    status.summary = std::move(summary);
     return status;
 }
 

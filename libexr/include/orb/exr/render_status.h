@@ -11,27 +11,21 @@
 
 namespace orb::exr {
 
-// How closely to look. Both check the header as read_film_exr() does and
-// that the render reached its target; they differ in how they find a file
-// that is cut short or damaged:
+// How closely to look. Both check the header as read_film_exr() does; they
+// differ in how they find a file that is cut short or damaged:
 //   Structure: every block's offset and size lie inside the file (reads the
 //              header, the offset table and the block headers: milliseconds
 //              for any size, so a farm can check a whole sequence at once);
 //   Pixels:    every block decodes (reads and decompresses the whole image,
 //              about a second for a 1920x1080 frame of all passes; catches
 //              damage inside a block too). orb-render uses it before it
-//              skips a frame.
+//              skips or continues a frame.
 enum class RenderCheck { Structure, Pixels };
 
 struct RenderStatus {
-    bool exists = false;            // a file (or something) is at the path
-    bool readable = false;          // an orb-render EXR whose header and blocks pass the check
-    bool complete = false;          // readable, and orb:spp reached orb:targetSpp
-    std::string reason;             // why not complete: "no such file", "stopped at 12 of 64 samples per pixel", ...
-    std::uint64_t spp = 0;          // orb:spp
-    std::uint64_t target_spp = 0;   // orb:targetSpp
-    std::string sample_ranges;      // orb:sampleRanges ("0:256", "256:256"); "0:spp" for film format 1
-    int width = 0, height = 0;
+    bool exists = false;    // a file (or something) is at the path
+    bool readable = false;  // an orb-render EXR whose header and blocks pass the check
+    std::string reason;     // why not readable: "no such file", "not an OpenEXR file", ...
     std::optional<ExrFilmSummary> summary;  // everything the header says, when readable
 };
 
