@@ -1,5 +1,7 @@
 #include "orb/image/color_config.h"
 
+#include "orb/scene/content_hash.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -14,18 +16,6 @@
 
 namespace orb::image {
 namespace {
-
-// 64-bit FNV-1a as 16 hex digits (as the scene hash is): a change of content, not an adversary, is what it tells.
-std::string fnv1a_hex(const std::string& bytes) {
-    std::uint64_t hash = 1469598103934665603ull;
-    for (unsigned char byte : bytes) {
-        hash ^= byte;
-        hash *= 1099511628211ull;
-    }
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
-    return text;
-}
 
 std::string file_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -68,7 +58,7 @@ ColorConfig ColorConfig::load(const std::string& explicit_path, const std::strin
     ColorConfig result;
     result.impl_ = impl;
     result.source_ = path;
-    result.content_hash_ = fnv1a_hex(file_text(path));
+    result.content_hash_ = orb::content_hash_hex(file_text(path));
     return result;
 }
 

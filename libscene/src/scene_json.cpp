@@ -2,6 +2,8 @@
 // every problem, and a writer whose output is stable and diff-friendly.
 #include "orb/scene/scene_json.h"
 
+#include "orb/scene/content_hash.h"
+
 #include <nlohmann/json.hpp>
 
 #include <bit>
@@ -409,35 +411,15 @@ std::string write_scene_json(const Scene& scene) {
     return text;
 }
 
-namespace {
-
-struct Fnv1a {
-    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a 64-bit offset basis
-    void add(unsigned char byte) {
-        hash ^= byte;
-        hash *= 1099511628211ull;  // FNV-1a 64-bit prime
-    }
-    void add_uint32(std::uint32_t value) {
-        for (int shift = 0; shift < 32; shift += 8) add(static_cast<unsigned char>(value >> shift));
-    }
-};
-
-}  // namespace
-
 std::string scene_content_hash(const Scene& scene) {
-    Fnv1a fnv;
-    write_scene_json_to(scene, [&fnv](std::string_view piece) {
-        for (unsigned char byte : piece) fnv.add(byte);
-    });
+    ContentHash hash;
+    write_scene_json_to(scene, [&hash](std::string_view piece) { hash.add(piece); });
     if (const auto& image = scene.environment.image) {
-        fnv.add_uint32(static_cast<std::uint32_t>(image->width));
-        fnv.add_uint32(static_cast<std::uint32_t>(image->height));
-        for (float value : image->rgb) fnv.add_uint32(std::bit_cast<std::uint32_t>(value));
+        hash.add_uint32(static_cast<std::uint32_t>(image->width));
+        hash.add_uint32(static_cast<std::uint32_t>(image->height));
+        for (float value : image->rgb) hash.add_uint32(std::bit_cast<std::uint32_t>(value));
     }
-    const std::uint64_t hash = fnv.hash;
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-    return hex;
+    return hash.hex();
 }
 
 }  // namespace orb
