@@ -38,6 +38,9 @@ struct Renderer::Impl {
     bool film_clear = true;                   // every device film is at its clear values (new frames skip a clear)
     AnimationTree tree;                       // the BVH, refitted from frame to frame while that pays
     double frame_render_seconds = 0;          // spent in render_samples since the scene was set
+    double last_frame_seconds = 0;            // frame_render_seconds of the last scene replaced (prepare_scene reads it)
+    TreeReport tree_in_use;                   // the uploaded scene's tree (the AnimationTree may be a frame ahead)
+    bool tree_in_use_refitted = false;
     // Another device's film on its way into the one read_film() returns,
     // kept so that its memory is reused read after read (read_film() is
     // therefore not for two threads at once).
@@ -83,21 +86,31 @@ void Renderer::Impl::wait_all(const std::vector<std::size_t>& busy)
         if (error) std::rethrow_exception(error);
 }
 
+struct PreparedScene::Data {
+    SceneLayout layout;
+    device::CameraParams camera{};
+    Renderer::TreeReport tree;
+    bool refitted = false;
+};
+
+PreparedScene::PreparedScene() = default;
+PreparedScene::~PreparedScene() = default;
+PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
+PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
+
 Renderer::Renderer(const Scene& scene, const RenderConfig& config) : impl_(std::make_unique<Impl>())
 {
     Impl& r = *impl_;
     check_config(config);
     r.config = config;
     // The scene is checked before any device is touched, so bad input fails fast.
-    const SceneLayout layout = layout_scene(scene, r.tree.tree_for(scene, config.use_bvh, 0.0));
-    const device::CameraParams camera = layout_camera(scene.camera, config.width, config.height);
+    PreparedScene prepared = prepare_scene(scene);
     r.infos = choose_devices(config.device);
     const SessionOptions options{config.kernel_dir, config.use_binary_cache};
-    for (const DeviceInfo& info : r.infos) {
+    for (const DeviceInfo& info : r.infos)
         r.devices.push_back(std::make_unique<DeviceRenderer>(DeviceSession::open(info, options), config));
-        r.devices.back()->set_scene(layout, camera);
-    }
     r.device_ranges.resize(r.devices.size());
+    set_scene(std::move(prepared));
 }
 
 Renderer::~Renderer() = default;
@@ -106,19 +119,41 @@ const DeviceInfo& Renderer::device() const { return impl_->infos.front(); }
 const std::vector<DeviceInfo>& Renderer::devices() const { return impl_->infos; }
 const RenderConfig& Renderer::config() const { return impl_->config; }
 
-void Renderer::set_scene(const Scene& scene)
+PreparedScene Renderer::prepare_scene(const Scene& scene)
 {
     Impl& r = *impl_;
-    const SceneLayout layout = layout_scene(scene, r.tree.tree_for(scene, r.config.use_bvh, r.frame_render_seconds));
+    PreparedScene prepared;
+    prepared.data_ = std::make_unique<PreparedScene::Data>();
+    PreparedScene::Data& data = *prepared.data_;
+    data.layout = layout_scene(scene, r.tree.tree_for(scene, r.config.use_bvh, r.last_frame_seconds));
+    data.camera = layout_camera(scene.camera, r.config.width, r.config.height);
+    data.tree = {r.tree.node_count(), r.tree.last_seconds()};
+    data.refitted = r.tree.last_refitted();
+    return prepared;
+}
+
+void Renderer::set_scene(const Scene& scene)
+{
+    impl_->last_frame_seconds = impl_->frame_render_seconds;  // the frame just ended weighs this refit
+    set_scene(prepare_scene(scene));
+}
+
+void Renderer::set_scene(PreparedScene&& scene)
+{
+    Impl& r = *impl_;
+    if (!scene.data_) throw std::invalid_argument("set_scene: no prepared scene");
+    const PreparedScene::Data& data = *scene.data_;
+    for (auto& device : r.devices) device->set_scene(data.layout, data.camera);
+    r.tree_in_use = data.tree;
+    r.tree_in_use_refitted = data.refitted;
+    r.last_frame_seconds = r.frame_render_seconds;
     r.frame_render_seconds = 0;
-    const device::CameraParams camera = layout_camera(scene.camera, r.config.width, r.config.height);
-    for (auto& device : r.devices) device->set_scene(layout, camera);
     clear();
 }
 
-bool Renderer::last_tree_refitted() const { return impl_->tree.last_refitted(); }
+bool Renderer::last_tree_refitted() const { return impl_->tree_in_use_refitted; }
 
-Renderer::TreeReport Renderer::tree_report() const { return {impl_->tree.node_count(), impl_->tree.last_seconds()}; }
+Renderer::TreeReport Renderer::tree_report() const { return impl_->tree_in_use; }
 
 void Renderer::set_seed(std::uint64_t seed)
 {

@@ -9,6 +9,7 @@
 #include <string>
 #include <limits>
 #include <map>
+#include <future>
 #include <random>
 #include <sstream>
 
@@ -254,4 +255,36 @@ TEST(BvhRender, AFrameWithARefittedTreeIsTheImageOfANewBuild) {
     for (std::size_t i = 1; i < scene.spheres.size(); ++i) scene.spheres[i].center = {anywhere(rng), 2.0, anywhere(rng)};
     animated.set_scene(scene);
     EXPECT_FALSE(animated.last_tree_refitted());
+}
+
+// The next frame's scene laid out (its tree refitted) on another thread
+// while this frame renders, then uploaded: the frames are the images of
+// scenes set the plain way, and the tree reported is the one in use.
+TEST(BvhRender, AFramePreparedWhileTheLastRendersIsTheSameImage) {
+    Scene first = cloud_scene(300, 5);
+    const RenderConfig config = small_config(48, 36, 11, 6);
+    Scene second = first;
+    std::mt19937 rng(8);
+    std::normal_distribution<double> step(0.0, 0.02);
+    for (std::size_t i = 1; i < second.spheres.size(); ++i)
+        for (double& c : second.spheres[i].center) c += step(rng);
+
+    Renderer plain(first, config);
+    plain.render_pass(3);
+    plain.set_scene(second);
+    plain.render_pass(3);
+    const Film expected = plain.read_film();
+
+    Renderer ahead(first, config);
+    const Renderer::TreeReport first_tree = ahead.tree_report();
+    std::future<PreparedScene> next = std::async(std::launch::async, [&] { return ahead.prepare_scene(second); });
+    ahead.render_pass(3);  // the first frame renders while the second is laid out
+    EXPECT_EQ(ahead.tree_report().nodes, first_tree.nodes);  // still the first frame's tree
+    ahead.set_scene(next.get());
+    EXPECT_TRUE(ahead.last_tree_refitted());
+    ahead.render_pass(3);
+    const Film film = ahead.read_film();
+    expect_identical(film.radiance, expected.radiance, "radiance");
+    expect_identical(film.depth, expected.depth, "depth");
+    expect_identical(film.object_id, expected.object_id, "object id");
 }

@@ -29,17 +29,27 @@ void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& r
         // during the kernel build, there is nothing to save.
         install_interrupt_handlers();
     } else {
-        if (plan.scene_changed) renderer->set_scene(plan.scene);
+        if (plan.scene_changed) {
+            if (plan.prepared_scene)
+                renderer->set_scene(std::move(*plan.prepared_scene));
+            else
+                renderer->set_scene(plan.scene);
+        }
         renderer->set_seed(plan.config.seed);
     }
     plan.scene_changed = false;
+    plan.prepared_scene.reset();
     renderer->clear(plan.first_sample);
 }
 
-void PosePrefetch::start(const RenderPlan& plan, const Job& next) {
+void PosePrefetch::start(const RenderPlan& plan, const Job& next, render::Renderer& renderer) {
     if (!next.frame || plan.imported.animation.empty()) return;
     frame_ = *next.frame;
-    future_ = std::async(std::launch::async, [&plan, frame = frame_] { return pose_at(plan, frame); });
+    future_ = std::async(std::launch::async, [&plan, &renderer, frame = frame_] {
+        PosedFrame posed = pose_at(plan, frame);
+        if (posed.scene) posed.prepared = renderer.prepare_scene(*posed.scene);
+        return posed;
+    });
 }
 
 void PosePrefetch::use_for(RenderPlan& plan, const Job& job) {

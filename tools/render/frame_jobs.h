@@ -33,8 +33,9 @@ void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& r
 // frame renders (for a million moving spheres that is seconds a frame).
 class PosePrefetch {
 public:
-    // Starts posing `next`'s frame (nothing for a scene without animation).
-    void start(const RenderPlan& plan, const Job& next);
+    // Starts posing `next`'s frame and laying it out for `renderer` (its
+    // tree refitted or built), nothing for a scene without animation.
+    void start(const RenderPlan& plan, const Job& next, render::Renderer& renderer);
     // Installs the prefetched pose when it is this job's frame; an error
     // posing it (a pose that breaks the scene limits) is thrown here.
     void use_for(RenderPlan& plan, const Job& job);

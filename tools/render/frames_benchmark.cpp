@@ -71,12 +71,18 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
             if (job.frame && (!plan.frame || plan.frame->number != *job.frame)) pose_frame(plan, *job.frame);
             pose.add(seconds_since(t));
             t = Clock::now();
-            if (plan.scene_changed) renderer->set_scene(plan.scene);
+            if (plan.scene_changed) {
+                if (plan.prepared_scene)
+                    renderer->set_scene(std::move(*plan.prepared_scene));
+                else
+                    renderer->set_scene(plan.scene);
+            }
             plan.scene_changed = false;
+            plan.prepared_scene.reset();
             renderer->set_seed(plan.config.seed);
             renderer->clear(plan.first_sample);
             upload.add(seconds_since(t));
-            if (i + 1 < jobs.size()) prefetch.start(plan, jobs[i + 1]);
+            if (i + 1 < jobs.size()) prefetch.start(plan, jobs[i + 1], *renderer);
             t = Clock::now();
             for (int done = 0; done < spp;) {
                 const int pass = std::min(spp - done, std::max(1, renderer->suggested_samples_per_pass()));

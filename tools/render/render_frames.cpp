@@ -169,7 +169,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
         if (verdict && verdict->state == exr::OutputState::Continuable &&
             continue_from(plan, label, job.output, *renderer))
             ++continued;
-        if (index + 1 < jobs.size()) prefetch.start(plan, jobs[index + 1]);
+        if (index + 1 < jobs.size()) prefetch.start(plan, jobs[index + 1], *renderer);
         FilmOutcome outcome = render_film(*renderer, plan, options, image, label, claim ? &*claim : nullptr,
                                           writer.take_spare_film(), /*read_later=*/true);
         if (!outcome.rendered) {

@@ -148,6 +148,7 @@ void install(RenderPlan& plan, PosedFrame&& posed) {
         plan.scene = std::move(*posed.scene);
         plan.scene_hash = std::move(posed.hash);
         plan.scene_changed = true;
+        plan.prepared_scene = std::move(posed.prepared);
         // Without animation the pose is the scene itself, for good: its imported copy is not needed again.
         if (plan.imported.animation.empty()) plan.imported = Scene{};
     }

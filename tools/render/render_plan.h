@@ -42,6 +42,9 @@ struct RenderPlan {
     // from frame to frame of a scene without animation, whose spheres then
     // are neither copied, hashed, laid out nor uploaded again.
     bool scene_changed = true;
+    // `scene` laid out for the renderer ahead of time (its tree refitted or
+    // built while the last frame rendered), when it was; else set_up lays it out.
+    std::optional<render::PreparedScene> prepared_scene;
 };
 
 // A frame's scene, posed and hashed: what pose_frame installs in a plan.
@@ -51,6 +54,7 @@ struct PosedFrame {
     long frame = 0;
     std::optional<Scene> scene;  // none for a scene without animation: the plan's own stays
     std::string hash;
+    std::optional<render::PreparedScene> prepared;  // `scene` laid out by the renderer, when asked
 };
 PosedFrame pose_at(const RenderPlan& plan, long frame);
 void install(RenderPlan& plan, PosedFrame&& posed);

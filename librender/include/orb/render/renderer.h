@@ -47,6 +47,22 @@ struct RenderConfig {
     std::uint32_t film_channels = film::kAllChannels;
 };
 
+// A scene laid out for the devices, its BVH built or refitted: what
+// Renderer::set_scene uploads, made ahead by Renderer::prepare_scene (the
+// next frame's, on another thread, while this frame renders).
+class PreparedScene {
+public:
+    PreparedScene();
+    ~PreparedScene();
+    PreparedScene(PreparedScene&&) noexcept;
+    PreparedScene& operator=(PreparedScene&&) noexcept;
+
+private:
+    friend class Renderer;
+    struct Data;
+    std::unique_ptr<Data> data_;
+};
+
 // A film on its way back from the devices (Renderer::read_film_later).
 class PendingFilm {
 public:
@@ -90,6 +106,15 @@ public:
     // what the refitted tree is expected to add to a frame like the last
     // (animation_tree.h); else a new one is built.
     void set_scene(const Scene& scene);
+    // The host's part of set_scene, ahead of it: the scene checked and laid
+    // out, its tree refitted from the last prepared one or built. It may run
+    // on another thread while this renderer renders (it touches neither the
+    // devices nor the film), but not beside another prepare_scene or
+    // set_scene. A refit then weighs the last frame whose scene was
+    // replaced, not the one rendering.
+    PreparedScene prepare_scene(const Scene& scene);
+    // Uploads a prepared scene (set_scene's device part); the film is emptied.
+    void set_scene(PreparedScene&& scene);
     // Whether the current scene's BVH is the previous scene's refitted.
     bool last_tree_refitted() const;
     // The current scene's BVH: its nodes (0: no tree, as for a scene of a
