@@ -9,6 +9,7 @@
 
 #include "missing_frames.h"
 #include "orb/cli/frame_spec.h"
+#include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/tool_main.h"
 
@@ -26,11 +27,7 @@ struct Settings {
 };
 
 // Whether any option of the render asked for was given.
-bool any_render_option(const Settings& s) {
-    const orb::request::RequestOptions& r = s.render;
-    return !s.scene.empty() || r.spp || r.sample_range || r.seed || r.mode || r.sampler || r.max_depth || r.width ||
-           r.height || r.passes || r.half || r.fps || r.same_seed;
-}
+bool any_render_option(const Settings& s) { return !s.scene.empty() || s.render != orb::request::RequestOptions{}; }
 
 // "-" reads the list from stdin, where newlines and spaces separate items as
 // commas do, so the output of one orb-frames can feed another.
@@ -128,11 +125,6 @@ int main(int argc, char** argv) {
                 out += s.paths ? path : std::to_string(frame);
                 out += '\n';
             }
-            std::cout << out << std::flush;
-            if (!std::cout) {
-                orb::cli::error("cannot write to stdout");
-                return orb::cli::kFailure;
-            }
-            return orb::cli::kSuccess;
+            return orb::cli::print_to_stdout(out);
         });
 }

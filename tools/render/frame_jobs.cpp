@@ -20,25 +20,35 @@ std::vector<Job> jobs_of(const RenderPlan& plan, const RenderOptions& options) {
 
 std::string label_of(const Job& job) { return job.frame ? "frame " + std::to_string(*job.frame) + ": " : ""; }
 
+void pose_for(RenderPlan& plan, const Job& job) {
+    if (job.frame && !posed_at(plan, *job.frame)) pose_frame(plan, *job.frame);
+}
+
+void upload_changed_scene(RenderPlan& plan, render::Renderer& renderer) {
+    if (plan.scene_changed) {
+        if (plan.prepared_scene)
+            renderer.set_scene(std::move(*plan.prepared_scene));
+        else
+            renderer.set_scene(plan.scene);
+    }
+    plan.scene_changed = false;
+    plan.prepared_scene.reset();
+}
+
 void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer) {
-    if (job.frame && (!plan.frame || plan.frame->number != *job.frame)) pose_frame(plan, *job.frame);
+    pose_for(plan, job);
     if (!renderer) {
         renderer.emplace(plan.scene, plan.config);
         cli::info(devices_line(*renderer));
         // From here on a signal ends the frame in flight gracefully; before,
         // during the kernel build, there is nothing to save.
         install_interrupt_handlers();
+        plan.scene_changed = false;  // the renderer was made with it
+        plan.prepared_scene.reset();
     } else {
-        if (plan.scene_changed) {
-            if (plan.prepared_scene)
-                renderer->set_scene(std::move(*plan.prepared_scene));
-            else
-                renderer->set_scene(plan.scene);
-        }
+        upload_changed_scene(plan, *renderer);
         renderer->set_seed(plan.config.seed);
     }
-    plan.scene_changed = false;
-    plan.prepared_scene.reset();
     renderer->clear(plan.first_sample);
 }
 
@@ -55,8 +65,7 @@ void PosePrefetch::start(const RenderPlan& plan, const Job& next, render::Render
 void PosePrefetch::use_for(RenderPlan& plan, const Job& job) {
     if (!future_.valid()) return;
     PosedFrame posed = future_.get();
-    if (job.frame && *job.frame == frame_ && (!plan.frame || plan.frame->number != frame_))
-        install(plan, std::move(posed));
+    if (job.frame && *job.frame == frame_ && !posed_at(plan, frame_)) install(plan, std::move(posed));
 }
 
 }  // namespace orb::render_cli

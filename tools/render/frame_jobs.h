@@ -24,13 +24,21 @@ std::vector<Job> jobs_of(const RenderPlan& plan, const RenderOptions& options);
 // "frame 12: ", or "" when the job is no frame.
 std::string label_of(const Job& job);
 
-// Poses the plan at the job's frame (unless it is posed there already) and
-// hands the scene and seed to the renderer, which is made on first use (one
-// session and kernel build for every frame); the film is emptied.
+// Poses the plan at the job's frame, unless it is posed there already.
+void pose_for(RenderPlan& plan, const Job& job);
+
+// Hands the plan's scene to the renderer when it changed since the last
+// frame: the layout prepared ahead when there is one.
+void upload_changed_scene(RenderPlan& plan, render::Renderer& renderer);
+
+// Poses the plan at the job's frame (pose_for) and hands the scene and seed
+// to the renderer, which is made on first use (one session and kernel build
+// for every frame); the film is emptied.
 void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer);
 
-// The next frame's scene, posed and hashed on another thread while this
-// frame renders (for a million moving spheres that is seconds a frame).
+// The next frame's scene posed, hashed and laid out for the renderer (its
+// BVH refitted or built) on another thread while this frame renders: for a
+// million moving spheres that is seconds a frame.
 class PosePrefetch {
 public:
     // Starts posing `next`'s frame and laying it out for `renderer` (its
@@ -44,7 +52,5 @@ private:
     std::future<PosedFrame> future_;
     long frame_ = 0;
 };
-
-
 
 }  // namespace orb::render_cli

@@ -68,17 +68,10 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
             // last frame rendered; only the wait for it is on the render path.
             Clock::time_point t = Clock::now();
             prefetch.use_for(plan, job);
-            if (job.frame && (!plan.frame || plan.frame->number != *job.frame)) pose_frame(plan, *job.frame);
+            pose_for(plan, job);
             pose.add(seconds_since(t));
             t = Clock::now();
-            if (plan.scene_changed) {
-                if (plan.prepared_scene)
-                    renderer->set_scene(std::move(*plan.prepared_scene));
-                else
-                    renderer->set_scene(plan.scene);
-            }
-            plan.scene_changed = false;
-            plan.prepared_scene.reset();
+            upload_changed_scene(plan, *renderer);
             renderer->set_seed(plan.config.seed);
             renderer->clear(plan.first_sample);
             upload.add(seconds_since(t));

@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <chrono>
 #include <filesystem>
 #include <optional>
@@ -79,12 +78,7 @@ int list_missing(RenderPlan& plan, const std::vector<Job>& jobs) {
         if (verdict.state != exr::OutputState::Missing) cli::info(label_of(job) + job.output + ": " + verdict.reason);
         out += (job.frame ? std::to_string(*job.frame) : job.output) + "\n";
     }
-    std::fputs(out.c_str(), stdout);
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        cli::error("cannot write to stdout");
-        return cli::kFailure;
-    }
-    return cli::kSuccess;
+    return cli::print_to_stdout(out);
 }
 
 // A missing or read-only folder fails at once, not at the first frame that

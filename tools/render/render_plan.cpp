@@ -159,10 +159,12 @@ void install(RenderPlan& plan, PosedFrame&& posed) {
 
 void pose_frame(RenderPlan& plan, long frame) { install(plan, pose_at(plan, frame)); }
 
+bool posed_at(const RenderPlan& plan, long frame) { return plan.frame && plan.frame->number == frame; }
+
 exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame) {
     exr::RenderRequest request = plan.settings.request(frame, plan.scene_time);
     request.scene = [&plan, frame] {
-        if (frame && (!plan.frame || plan.frame->number != *frame)) pose_frame(plan, *frame);
+        if (frame && !posed_at(plan, *frame)) pose_frame(plan, *frame);
         return request::scene_identity(plan.scene, plan.scene_hash, plan.config.width, plan.config.height);
     };
     return request;

@@ -67,6 +67,8 @@ RenderPlan make_render_plan(const RenderOptions& options);
 // Poses the plan at `frame`: the scene at frame / fps (checked against the
 // scene limits again), its hash, the frame's seed. Throws orb::InputError.
 void pose_frame(RenderPlan& plan, long frame);  // install(plan, pose_at(plan, frame))
+// Whether the plan's scene is posed at `frame` already.
+bool posed_at(const RenderPlan& plan, long frame);
 
 // The orb:* metadata for an image of this plan (render seconds and device filled by the caller).
 exr::ExrMetadata plan_metadata(const RenderPlan& plan);

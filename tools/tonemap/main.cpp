@@ -1,5 +1,4 @@
 // orb-tonemap: scene-linear renders -> display images through OpenColorIO.
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -203,12 +202,7 @@ int list_missing(const std::vector<Job>& jobs, const Settings& s, const ColorCon
         }
         out += (job.frame ? std::to_string(*job.frame) : job.output) + "\n";
     }
-    std::fputs(out.c_str(), stdout);
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        orb::cli::error("cannot write to stdout");
-        return orb::cli::kFailure;
-    }
-    return orb::cli::kSuccess;
+    return orb::cli::print_to_stdout(out);
 }
 
 void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {

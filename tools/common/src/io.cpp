@@ -7,6 +7,8 @@
 #include <fstream>
 #include <iterator>
 
+#include "orb/cli/messages.h"
+#include "orb/cli/tool_main.h"
 #include "orb/scene/error.h"
 
 namespace fs = std::filesystem;
@@ -31,6 +33,15 @@ std::string read_input(const std::string& path) {
     std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad()) throw InputError(path + ": read error");
     return data;
+}
+
+int print_to_stdout(const std::string& text) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        error("cannot write to stdout");
+        return kFailure;
+    }
+    return kSuccess;
 }
 
 }  // namespace orb::cli

@@ -12,4 +12,10 @@ std::string read_input(const std::string& path);
 
 bool is_stdio(const std::string& path);
 
+// Writes `text` (a listing for a shell loop) to stdout and flushes it.
+// Returns the tool's exit code: kSuccess, or kFailure after saying "cannot
+// write to stdout" when it could not (a closed pipe: every tool ignores
+// SIGPIPE, so that is an error, not silence).
+int print_to_stdout(const std::string& text);
+
 }  // namespace orb::cli

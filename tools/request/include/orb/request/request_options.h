@@ -23,6 +23,8 @@ struct RequestOptions {
     bool half = false;
     std::optional<double> fps;
     bool same_seed = false;
+
+    bool operator==(const RequestOptions&) const = default;  // RequestOptions{}: none given
 };
 
 void add_request_options(CLI::App& app, RequestOptions& options);
