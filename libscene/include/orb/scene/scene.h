@@ -50,6 +50,10 @@ struct Camera {
     double vfov_deg = 42.87978100351012;  // vertical field of view of the whole image; SmallptGPU's 2*atan(pi/8)
     double aperture = 0.0;      // lens diameter; 0 is a pinhole
     double focus_distance = 1.0;
+    // Greater than zero: an orthographic camera whose view is this many scene
+    // units high (parallel rays along the view direction; vfov_deg and the lens
+    // do not apply). Zero: the perspective camera above.
+    double orthographic_height = 0.0;
     bool operator==(const Camera&) const = default;
 };
 
