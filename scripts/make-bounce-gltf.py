@@ -76,7 +76,8 @@ def main():
     materials = [
         {"name": "Floor", "pbrMetallicRoughness": {"baseColorFactor": [0.7, 0.7, 0.7, 1], "metallicFactor": 0}},
         {"name": "Red", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.08, 1], "metallicFactor": 0}},
-        {"name": "Mirror", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.9, 0.9, 1], "metallicFactor": 1}},
+        {"name": "Mirror", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.9, 0.9, 1], "metallicFactor": 1,
+                                               "roughnessFactor": 0}},
         {"name": "Lamp", "emissiveFactor": [1, 0.9, 0.8],
          "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 12}},
          "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0}},
