@@ -5,6 +5,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -106,8 +107,7 @@ std::vector<std::string> passes_to_compare(const Settings& s, const LoadedImage&
 
 int run(const Settings& s) {
     if (s.color.list) {
-        std::cout << load_color_config(s.color).listing();
-        return kExitPass;
+        return orb::cli::print_to_stdout(load_color_config(s.color).listing());
     }
     if (s.reference.empty() || s.test.empty()) throw UsageError("need two images: orb-diff A B (see --help)");
     if (s.reference == "-" && s.test == "-") throw UsageError("only one of the two images can be '-' (stdin)");
@@ -170,14 +170,6 @@ int run(const Settings& s) {
     const int code = overall == Verdict::Fail ? kExitFail
                      : overall == Verdict::Warn && s.strict ? kExitFail
                                                              : kExitPass;
-    if (!orb::cli::quiet()) {
-        // With the JSON report on stdout, the summary moves to stderr.
-        std::ostream& out = s.json == "-" ? std::cerr : std::cout;
-        for (const auto& r : results) out << summary_line(r, s.gates) << "\n";
-        out << "verdict: " << verdict_name(overall) << (overall == Verdict::Warn && s.strict ? " (strict: fails)" : "")
-            << "\n";
-        out.flush();
-    }
     if (!s.json.empty()) {
         nlohmann::json report = {{"reference", display_name(s.reference)},
                                  {"test", display_name(s.test)},
@@ -195,6 +187,19 @@ int run(const Settings& s) {
                                  {"exit_code", code}};
         for (const auto& r : results) report["passes"].push_back(pass_json(r, s.gates));
         json_output->write(report.dump(2) + "\n");
+    }
+    // The summary comes last, so that a reader who closes it early
+    // (`orb-diff ... | head -1`) still leaves every file written.
+    if (!orb::cli::quiet()) {
+        std::ostringstream summary;
+        for (const auto& r : results) summary << summary_line(r, s.gates) << "\n";
+        summary << "verdict: " << verdict_name(overall)
+                << (overall == Verdict::Warn && s.strict ? " (strict: fails)" : "") << "\n";
+        // With the JSON report on stdout, the summary moves to stderr.
+        if (s.json == "-")
+            std::cerr << summary.str() << std::flush;
+        else if (orb::cli::print_to_stdout(summary.str()) != orb::cli::kSuccess)
+            return kExitError;
     }
     return code;
 }

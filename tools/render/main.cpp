@@ -1,9 +1,10 @@
 // orb-render: renders an Orb scene with OpenCL, pass after pass, into a
 // multi-pass OpenEXR (docs/orb-render.md).
 #include <chrono>
-#include <iostream>
+#include <sstream>
 
 #include "device_listing.h"
+#include "orb/cli/io.h"
 #include "orb/cli/tool_main.h"
 #include "render_options.h"
 #include "render_outputs.h"
@@ -21,8 +22,9 @@ int main(int argc, char** argv) {
         [&]() -> int {
             check_option_combinations(options);
             if (options.list_devices) {
-                print_device_list(std::cout);
-                return orb::cli::kSuccess;
+                std::ostringstream listing;
+                print_device_list(listing);
+                return orb::cli::print_to_stdout(listing.str());
             }
             // Outputs first: a render that cannot be written must fail before
             // it reads a byte or builds a kernel, and the lock taken here also

@@ -56,7 +56,7 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     request::add_request_options(app, o);
     app.add_option("--time", o.time_limit, "Stop after this many seconds of rendering")->check(seconds);
     app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")->check(seconds);
-    app.add_option("--resume", o.resume, "Continue the render stored in this orb-render EXR");
+    app.add_option("--resume", o.resume, "Continue the render stored in this orb-render EXR")->option_text("FILE");
     app.add_option("--compression", o.compression,
                    "EXR compression, all lossless: zip (default), zips, piz, rle or none")
         ->check(CLI::IsMember(exr::compression_names()));

@@ -290,8 +290,7 @@ int main(int argc, char** argv) {
         },
         [&]() -> int {
             if (s.color.list) {
-                std::cout << load_color_config(s.color).listing();
-                return 0;
+                return orb::cli::print_to_stdout(load_color_config(s.color).listing());
             }
             if (s.inputs.empty()) throw UsageError("no input image (see --help)");
             if (s.output.empty()) throw UsageError("no output: give -o OUT");

@@ -1,5 +1,6 @@
 #include "orb/cli/io.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +15,16 @@
 namespace fs = std::filesystem;
 
 namespace orb::cli {
+namespace {
+std::atomic<bool> g_broken_pipe{false};
+}  // namespace
+
+void throw_broken_pipe(const std::string& where) {
+    g_broken_pipe = true;
+    throw BrokenPipe(where);
+}
+
+bool broken_pipe_seen() { return g_broken_pipe; }
 
 bool is_stdio(const std::string& path) { return path == "-"; }
 
@@ -36,8 +47,10 @@ std::string read_input(const std::string& path) {
 }
 
 int print_to_stdout(const std::string& text) {
+    errno = 0;
     std::fwrite(text.data(), 1, text.size(), stdout);
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        if (errno == EPIPE) throw_broken_pipe("<stdout>");
         error("cannot write to stdout");
         return kFailure;
     }

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "dangling_links.h"
+#include "orb/cli/io.h"
 #include "orb/scene/error.h"
 #include "output_lock.h"
 #include "temporary_files.h"
@@ -155,6 +156,7 @@ void OutputFile::write(std::string_view bytes) {
         try {
             write_all(STDOUT_FILENO, bytes);
         } catch (const std::system_error& e) {
+            if (e.code().value() == EPIPE) throw_broken_pipe("<stdout>");
             fail_write("<stdout>", option_, std::strerror(e.code().value()));
         }
         return;
@@ -167,6 +169,7 @@ void OutputFile::write(std::string_view bytes) {
             write_all(fd, bytes);
         } catch (const std::system_error& e) {
             ::close(fd);
+            if (e.code().value() == EPIPE) throw_broken_pipe(path_);
             fail_write(path_, option_, std::strerror(e.code().value()));
         }
         if (::close(fd) != 0) fail_write(path_, option_, std::strerror(errno));

@@ -74,9 +74,12 @@ void add_request_options(CLI::App& app, RequestOptions& o) {
         ->check(CLI::Range(1, 65536));
     app.add_option("--passes", o.passes,
                    "Layers to write (only these are computed): beauty (default), direct, indirect, emission, albedo, "
-                   "normal, depth, variance, id, or all");
+                   "normal, depth, variance, id, or all")
+        ->option_text("LIST");
     app.add_flag("--half", o.half, "Store colour layers as HALF (Z and id stay FLOAT; not resumable)");
-    app.add_option("--fps", o.fps, "Frames per second for --frame/--frames (default 24)")->check(positive_number());
+    app.add_option("--fps", o.fps, "Frames per second for --frame/--frames (default 24)")
+        ->check(positive_number())
+        ->option_text("FPS");
     app.add_flag("--same-seed", o.same_seed, "Every frame with --seed itself, not a seed derived from the frame");
 }
 
