@@ -14,6 +14,8 @@ packages=(
   libgtest-dev python3-jsonschema openimageio-tools opencolorio-tools
   # tests: orb-farm on a one-node Slurm cluster started in a temporary folder
   slurm-wlm munge
+  # tests: the tutorial's video step (docs.commands runs every block of the docs)
+  ffmpeg
 )
 if [[ "${ORB_WITH_FUZZ:-0}" == 1 ]]; then packages+=(clang libclang-rt-dev); fi
 
