@@ -86,6 +86,19 @@ TEST_F(HelpFormatterTest, KeepsAPlaceholderTheToolChose) {
     EXPECT_THAT(line_of(app.help(), "--frames"), HasSubstr("--frames SPEC "));
 }
 
+TEST_F(HelpFormatterTest, AValidatorsPlaceholderWordIsKeptWithoutItsDetails) {
+    double seconds = 0;
+    app.add_option("--time", seconds, "Seconds")->check(CLI::Validator("SECONDS>0"));
+    app.add_option("--scene", config, "A scene")->check(CLI::ExistingFile);
+    app.add_option("--inputs", output, "A folder")->check(CLI::ExistingPath);
+    app.add_option("--gain", exposure, "A gain")->check(CLI::PositiveNumber);
+    const std::string help = app.help();
+    EXPECT_THAT(line_of(help, "--time"), HasSubstr("--time SECONDS "));
+    EXPECT_THAT(line_of(help, "--scene"), HasSubstr("--scene FILE "));
+    EXPECT_THAT(line_of(help, "--inputs"), HasSubstr("--inputs PATH "));
+    EXPECT_THAT(line_of(help, "--gain"), HasSubstr("--gain X "));
+}
+
 TEST_F(HelpFormatterTest, ALongChoiceListIsLeftToTheDescription) {
     app.add_option("--compression", mode, "EXR compression: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab")
         ->check(CLI::IsMember({"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"}));

@@ -8,10 +8,12 @@
 namespace orb::cli {
 namespace {
 
-// CLI11's own type names; a validator description that is one of these says
-// nothing a placeholder could use.
+// CLI11's own type names and its built-in checks' adjectives ("NOT" prefixes
+// a negated check): a validator description that is one of these says nothing
+// a placeholder could use.
 bool is_parser_type_name(std::string_view word) {
-    for (std::string_view type : {"INT", "UINT", "FLOAT", "TEXT", "BOOLEAN", "CHAR", "ENUM", "NUMBER"})
+    for (std::string_view type :
+         {"INT", "UINT", "FLOAT", "TEXT", "BOOLEAN", "CHAR", "ENUM", "NUMBER", "NOT", "POSITIVE", "NONNEGATIVE"})
         if (word == type) return true;
     return false;
 }
@@ -107,9 +109,9 @@ std::string value_placeholder(const CLI::Option& option) {
     const std::string validators = colon == std::string::npos ? std::string() : full.substr(colon + 1);
 
     std::string one;
-    if (const size_t bound = validators.find_first_of("<>"); bound != std::string::npos && bound > 0 &&
-        reads_as_placeholder(std::string_view(validators).substr(0, bound)))
-        one = validators.substr(0, bound);  // "SECONDS>0": the word, the bound is the description's
+    if (const size_t end = validators.find_first_of("<>( "); end != std::string::npos && end > 0 &&
+        reads_as_placeholder(std::string_view(validators).substr(0, end)))
+        one = validators.substr(0, end);  // "SECONDS>0", "PATH(existing)": the word; the rest is the description's
     else if (reads_as_placeholder(validators))
         one = validators;
     else if (std::string choices = choices_placeholder(validators); !choices.empty())
