@@ -78,6 +78,8 @@ void add_request_options(CLI::App& app, RequestOptions& o) {
     app.add_flag("--half", o.half, "Store colour layers as HALF (Z and id stay FLOAT; not resumable)");
     app.add_option("--fps", o.fps, "Frames per second for --frame/--frames (default 24)")->check(positive_number());
     app.add_flag("--same-seed", o.same_seed, "Every frame with --seed itself, not a seed derived from the frame");
+    cli::add_camera_options(app, o.camera);
+    cli::add_orbit_options(app, o.orbit);
 }
 
 void check_request_options(const RequestOptions& o) {
