@@ -39,7 +39,8 @@ std::optional<Framing> frame_spheres(const std::vector<Sphere>& spheres, const F
         if (!skip || !skip(i)) counted.push_back(i);
     if (counted.empty()) return std::nullopt;
 
-    // The centres' trimmed bounds per axis (all of them under 100 spheres).
+    // The core box: the centres' trimmed bounds per axis (all of them under
+    // 100 spheres), grown by a tenth of its largest side to keep the tails.
     const std::size_t k = counted.size() / kFramingOutlierDivisor;
     Vec3 keep_lo{}, keep_hi{};
     {
@@ -48,6 +49,12 @@ std::optional<Framing> frame_spheres(const std::vector<Sphere>& spheres, const F
             for (std::size_t j = 0; j < counted.size(); ++j) axis[j] = spheres[counted[j]].center[c];
             std::tie(keep_lo[c], keep_hi[c]) = trimmed_bounds(axis, k);
         }
+    }
+    const double reach =
+        kFramingStrayReach * std::max({keep_hi[0] - keep_lo[0], keep_hi[1] - keep_lo[1], keep_hi[2] - keep_lo[2]});
+    for (int c = 0; c < 3; ++c) {
+        keep_lo[c] -= reach;
+        keep_hi[c] += reach;
     }
     const auto kept = [&](const Sphere& s) {
         for (int c = 0; c < 3; ++c)

@@ -12,12 +12,15 @@
 
 namespace orb {
 
-// A few stray points must not shrink a scan to a dot: per axis, the
-// floor(n / 100) lowest and the floor(n / 100) highest sphere centres (about
-// the 1st and 99th percentiles) are left out, and only the spheres whose
-// centre lies between those bounds on all three axes are framed. Under 100
-// spheres, every sphere is framed.
+// A few stray points must not shrink a scan to a dot. Per axis, the sphere
+// centres' bounds are taken without the floor(n / 100) lowest and the
+// floor(n / 100) highest (about the 1st and 99th percentiles; under 100
+// spheres, all of them): the core box. A sphere whose centre lies outside
+// the core box grown on every side by a tenth of its largest side is a
+// stray and is not framed; every other sphere is, the tails of the cloud
+// included, so the framing cuts off nothing of the cloud itself.
 inline constexpr std::size_t kFramingOutlierDivisor = 100;
+inline constexpr double kFramingStrayReach = 0.1;
 
 // The framed spheres fill 1 / (1 + margin) of the image's half-width or
 // half-height, whichever binds first: 10% of room around them.
