@@ -31,6 +31,30 @@ std::pair<double, double> trimmed_bounds(std::vector<double>& values, std::size_
 
 }  // namespace
 
+bool StrayBounds::keeps(const Vec3& p) const {
+    for (int c = 0; c < 3; ++c)
+        if (!(p[c] >= lo[c] && p[c] <= hi[c])) return false;
+    return true;
+}
+
+StrayBounds stray_bounds(const std::vector<Vec3>& points) {
+    // The core box: the trimmed bounds per axis (all of them under 100
+    // points), grown by a tenth of its largest side to keep the tails.
+    const std::size_t k = points.size() / kFramingOutlierDivisor;
+    StrayBounds b;
+    std::vector<double> axis(points.size());
+    for (int c = 0; c < 3; ++c) {
+        for (std::size_t j = 0; j < points.size(); ++j) axis[j] = points[j][c];
+        std::tie(b.lo[c], b.hi[c]) = trimmed_bounds(axis, k);
+    }
+    const double reach = kFramingStrayReach * std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+    for (int c = 0; c < 3; ++c) {
+        b.lo[c] -= reach;
+        b.hi[c] += reach;
+    }
+    return b;
+}
+
 std::optional<Framing> frame_spheres(const std::vector<Sphere>& spheres, const FramingView& view,
                                      const std::function<bool(std::size_t)>& skip) {
     std::vector<std::size_t> counted;
@@ -39,28 +63,11 @@ std::optional<Framing> frame_spheres(const std::vector<Sphere>& spheres, const F
         if (!skip || !skip(i)) counted.push_back(i);
     if (counted.empty()) return std::nullopt;
 
-    // The core box: the centres' trimmed bounds per axis (all of them under
-    // 100 spheres), grown by a tenth of its largest side to keep the tails.
-    const std::size_t k = counted.size() / kFramingOutlierDivisor;
-    Vec3 keep_lo{}, keep_hi{};
-    {
-        std::vector<double> axis(counted.size());
-        for (int c = 0; c < 3; ++c) {
-            for (std::size_t j = 0; j < counted.size(); ++j) axis[j] = spheres[counted[j]].center[c];
-            std::tie(keep_lo[c], keep_hi[c]) = trimmed_bounds(axis, k);
-        }
-    }
-    const double reach =
-        kFramingStrayReach * std::max({keep_hi[0] - keep_lo[0], keep_hi[1] - keep_lo[1], keep_hi[2] - keep_lo[2]});
-    for (int c = 0; c < 3; ++c) {
-        keep_lo[c] -= reach;
-        keep_hi[c] += reach;
-    }
-    const auto kept = [&](const Sphere& s) {
-        for (int c = 0; c < 3; ++c)
-            if (s.center[c] < keep_lo[c] || s.center[c] > keep_hi[c]) return false;
-        return true;
-    };
+    std::vector<Vec3> centres(counted.size());
+    for (std::size_t j = 0; j < counted.size(); ++j) centres[j] = spheres[counted[j]].center;
+    const StrayBounds strays = stray_bounds(centres);
+    centres = {};
+    const auto kept = [&strays](const Sphere& s) { return strays.keeps(s.center); };
 
     Framing f;
     for (std::size_t i : counted) {

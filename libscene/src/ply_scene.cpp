@@ -109,15 +109,22 @@ void add_default_lights(Scene& scene, const Vec3& center, double radius) {
 
 double default_point_radius(const std::vector<Vec3>& centers) {
     if (centers.empty()) return 1.0;
-    Bounds b{centers[0], centers[0]};
-    for (const Vec3& p : centers)
+    // The spacing of the cloud without its stray points (the framing's rule,
+    // orb/scene/auto_framing.h): a few far points would make every point huge.
+    const StrayBounds strays = stray_bounds(centers);
+    Bounds b;
+    std::size_t kept = 0;
+    for (const Vec3& p : centers) {
+        if (!strays.keeps(p)) continue;
         for (int c = 0; c < 3; ++c) {
-            b.lo[c] = std::min(b.lo[c], p[c]);
-            b.hi[c] = std::max(b.hi[c], p[c]);
+            b.lo[c] = kept == 0 ? p[c] : std::min(b.lo[c], p[c]);
+            b.hi[c] = kept == 0 ? p[c] : std::max(b.hi[c], p[c]);
         }
+        ++kept;
+    }
     const double diagonal = b.diagonal();
     if (!(diagonal > 0) || !std::isfinite(diagonal)) return 1.0;
-    const double spacing = diagonal / (std::sqrt(3.0) * std::cbrt(static_cast<double>(centers.size())));
+    const double spacing = diagonal / (std::sqrt(3.0) * std::cbrt(static_cast<double>(kept)));
     return spacing / 2;
 }
 

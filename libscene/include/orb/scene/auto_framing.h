@@ -26,6 +26,13 @@ inline constexpr double kFramingStrayReach = 0.1;
 // half-height, whichever binds first: 10% of room around them.
 inline constexpr double kFramingMargin = 0.1;
 
+// Which points are strays by the rule above: those outside [lo, hi].
+struct StrayBounds {
+    Vec3 lo{}, hi{};
+    bool keeps(const Vec3& point) const;
+};
+StrayBounds stray_bounds(const std::vector<Vec3>& points);  // points not empty
+
 struct FramingView {
     Vec3 toward_camera{0.0, 0.0, 1.0};  // from the framed centre towards the camera; any length > 0
     Vec3 up{0.0, 1.0, 0.0};             // not parallel to toward_camera
