@@ -104,3 +104,67 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace orb
+
+namespace orb {
+namespace {
+
+// The Stanford bunny's 453 vertices (tests/data/stanford-bunny/README.md)
+// with three stray points far from it, as a scan picks them up: the
+// automatic camera, the point radius and the lights are the bunny's own.
+class OrbImportBunny : public test::ImportCliFixture {};
+
+TEST_F(OrbImportBunny, StrayPointsDoNotShrinkTheScan) {
+    std::ifstream in(std::string(ORB_TEST_DATA_DIR) + "/stanford-bunny/bun_zipper_res4_points.ply");
+    const std::string bunny{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    ASSERT_THAT(bunny, HasSubstr("element vertex 453\n"));
+    std::string strays = bunny;
+    strays.replace(strays.find("element vertex 453"), 18, "element vertex 456");
+    strays += "1.5 0.1 0 0.5 0.5\n-0.02 3 -0.4 0.5 0.5\n0.2 -0.9 2.2 0.5 0.5\n";
+    write("bunny.ply", bunny);
+    write("strays.ply", strays);
+    const ProcessResult alone = run({"bunny.ply"});
+    const ProcessResult with_strays = run({"strays.ply"});
+    ASSERT_EQ(alone.exit_code, 0) << alone.err;
+    ASSERT_EQ(with_strays.exit_code, 0) << with_strays.err;
+    const Scene a = load_scene_json(alone.out, "bunny");
+    const Scene b = load_scene_json(with_strays.out, "strays");
+    // The strays are so far out that the bunny's core box is the same: the same camera and lights.
+    EXPECT_EQ(a.camera, b.camera);
+    EXPECT_EQ(a.spheres[0].radius, b.spheres[0].radius);
+    EXPECT_EQ(a.spheres[a.spheres.size() - 1], b.spheres[b.spheres.size() - 1]);
+    // The bunny is about 0.16 units across: framed from about 0.3 away, not from metres.
+    const double distance = std::hypot(a.camera.position[0] - a.camera.target[0],
+                                       a.camera.position[1] - a.camera.target[1],
+                                       a.camera.position[2] - a.camera.target[2]);
+    EXPECT_GT(distance, 0.15);
+    EXPECT_LT(distance, 0.5);
+}
+
+// The camera options of orb-import move the camera of any scene, the binary
+// form included, and leave the rest as it was.
+TEST_F(OrbImportBunny, CameraOptionsMoveTheCameraOfABinaryScene) {
+    fs::copy_file(std::string(ORB_TEST_DATA_DIR) + "/stanford-bunny/bun_zipper_res4_points.ply", dir_ / "bunny.ply");
+    ASSERT_EQ(run({"bunny.ply", "-o", "bunny.orb"}).exit_code, 0);
+    const ProcessResult moved =
+        run({"bunny.orb", "--camera-position", "0.3,0.2,0.3", "--look-at", "-0.02,0.1,0", "--vfov", "30",
+             "--orthographic", "0.25"});
+    ASSERT_EQ(moved.exit_code, 0) << moved.err;
+    const ProcessResult plain = run({"bunny.orb"});
+    Scene expected = load_scene_json(plain.out, "plain");
+    expected.camera.position = {0.3, 0.2, 0.3};
+    expected.camera.target = {-0.02, 0.1, 0};
+    expected.camera.vfov_deg = 30;
+    Scene got = load_scene_json(moved.out, "moved");
+    // The orthographic height is set on the scene; its JSON form is another change's.
+    expected.camera.orthographic_height = got.camera.orthographic_height;
+    EXPECT_EQ(got, expected);
+
+    const ProcessResult bad = run({"bunny.orb", "--look-at", "0.3,0.2,0.3", "--camera-position", "0.3,0.2,0.3",
+                                   "-o", "out.orb"});
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_THAT(bad.err, HasSubstr("bunny.orb: --camera-position and --look-at are the same point 0.3,0.2,0.3"));
+    EXPECT_FALSE(fs::exists(dir_ / "out.orb"));
+}
+
+}  // namespace
+}  // namespace orb
