@@ -8,6 +8,7 @@
 #include "orb/cli/frame_spec.h"
 #include "orb/cli/orbit_options.h"
 #include "orb/cli/tool_main.h"
+#include "orb/scene/auto_framing.h"
 #include "orb/scene/error.h"
 
 namespace orb::cli {
@@ -52,6 +53,36 @@ TEST(CameraOptions, ParsesEachOption) {
     EXPECT_EQ(p.orbit.degrees, -90);
     EXPECT_EQ(p.orbit.frames, "1-240");
     EXPECT_EQ(parse({}).camera, CameraOptions{});
+    EXPECT_TRUE(parse({"--auto-camera"}).camera.auto_camera);
+}
+
+TEST(CameraOptions, AutoCameraFramesTheSpheresThatEmitNothingAndExplicitPlacesWin) {
+    Scene scene;
+    scene.render.width = 400;
+    scene.render.height = 100;
+    scene.materials = {Material{}, Material{}};
+    scene.materials[1].emission = {5, 5, 5};
+    scene.spheres = {Sphere{"a", {-3, 0, 0}, 1, 0}, Sphere{"b", {3, 0, 0}, 1, 0}, Sphere{"lamp", {0, 50, 0}, 5, 1}};
+    scene.camera.position = {0, 0, 100};
+    scene.camera.target = {0, 0, 90};
+    CameraOptions o;
+    o.auto_camera = true;
+    o.vfov_deg = 30;
+    o.focus_distance = 7;
+    apply_camera_options(o, scene, 800, 200, "s.json");
+    const FramingView view{{0, 0, 10}, {0, 1, 0}, 30, 800, 200};
+    const Framing framing = *frame_spheres({scene.spheres[0], scene.spheres[1]}, view);
+    EXPECT_EQ(scene.camera.position, framing.position);
+    EXPECT_EQ(scene.camera.target, (Vec3{0, 0, 0}));
+    EXPECT_EQ(scene.camera.vfov_deg, 30);
+    EXPECT_EQ(scene.camera.focus_distance, 7) << "--focus-distance wins over the framing's";
+    // Without --auto-camera the scene's spheres are not looked at.
+    CameraOptions plain;
+    plain.vfov_deg = 20;
+    Scene untouched = scene;
+    apply_camera_options(plain, untouched, 800, 200, "s.json");
+    EXPECT_EQ(untouched.camera.position, scene.camera.position);
+    EXPECT_EQ(untouched.camera.vfov_deg, 20);
 }
 
 TEST(CameraOptions, BadValuesNameTheOption) {

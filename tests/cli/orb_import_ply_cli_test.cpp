@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "orb/scene/auto_framing.h"
 #include "orb/scene/ply.h"
 #include "orb/scene/scene_json.h"
 #include "import_cli_fixture.h"
@@ -164,6 +165,46 @@ TEST_F(OrbImportBunny, CameraOptionsMoveTheCameraOfABinaryScene) {
     EXPECT_EQ(bad.exit_code, 1);
     EXPECT_THAT(bad.err, HasSubstr("bunny.orb: --camera-position and --look-at are the same point 0.3,0.2,0.3"));
     EXPECT_FALSE(fs::exists(dir_ / "out.orb"));
+}
+
+}  // namespace
+}  // namespace orb
+
+namespace orb {
+namespace {
+
+// --auto-camera frames a scene anew by the automatic camera's rule, from its
+// camera's direction, leaving its lights out; explicit options win.
+TEST_F(OrbImportBunny, AutoCameraFramesTheSpheresAgainAndExplicitOptionsWin) {
+    fs::copy_file(std::string(ORB_TEST_DATA_DIR) + "/stanford-bunny/bun_zipper_res4_points.ply", dir_ / "bunny.ply");
+    const ProcessResult imported = run({"bunny.ply"});
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+    Scene far = load_scene_json(imported.out, "bunny");
+    const Camera automatic = far.camera;
+    // A camera far away (as the old framing left a scan with stray points), looking from the side.
+    far.camera.position = {40, 0.1, 0};
+    far.camera.target = {0, 0.1, 0};
+    write("far.json", write_scene_json(far));
+
+    const ProcessResult again = run({"far.json", "--auto-camera", "--vfov", "30"});
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    const Camera got = load_scene_json(again.out, "again").camera;
+    const FramingView view{{40, 0, 0}, {0, 1, 0}, 30, far.render.width, far.render.height};
+    const auto point = [&](std::size_t i) { return far.materials[far.spheres[i].material].emission != Vec3{0, 0, 0}; };
+    const Framing expected = *frame_spheres(far.spheres, view, point);
+    EXPECT_EQ(expected.framed, 453u) << "the two lights are not framed";
+    EXPECT_EQ(got.position, expected.position);
+    EXPECT_EQ(got.target, expected.target);
+    EXPECT_EQ(got.focus_distance, expected.distance);
+    EXPECT_EQ(got.vfov_deg, 30);
+    EXPECT_EQ(got.target, automatic.target) << "the same framed box as at import";
+
+    // An explicit --look-at wins over the automatic one; the automatic position stays.
+    const ProcessResult aimed = run({"far.json", "--auto-camera", "--vfov", "30", "--look-at", "0,0.15,0"});
+    ASSERT_EQ(aimed.exit_code, 0) << aimed.err;
+    const Camera aimed_camera = load_scene_json(aimed.out, "aimed").camera;
+    EXPECT_EQ(aimed_camera.target, (Vec3{0, 0.15, 0}));
+    EXPECT_EQ(aimed_camera.position, expected.position);
 }
 
 }  // namespace

@@ -108,10 +108,12 @@ int run(Arguments& args) {
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
     if (environment) imported.scene.environment = std::move(*environment);
     // The command line's camera wins over the file's (or the automatic one).
-    orb::cli::apply_camera_options(args.camera, imported.scene.camera, source);
-    if (imported.scene.animation.camera_node >= 0 && (args.camera.position || args.camera.look_at || args.camera.up))
+    orb::cli::apply_camera_options(args.camera, imported.scene, imported.scene.render.width,
+                                   imported.scene.render.height, source);
+    if (imported.scene.animation.camera_node >= 0 &&
+        (args.camera.position || args.camera.look_at || args.camera.up || args.camera.auto_camera))
         orb::cli::warning(source + ": the camera is animated, and each pose replaces its position, look-at and up: "
-                          "--camera-position, --look-at and --up set only its rest pose; give them to orb-render, "
+                          "--camera-position, --look-at, --up and --auto-camera set only its rest pose; give them to orb-render, "
                           "which applies them to every pose");
 
     std::string text;

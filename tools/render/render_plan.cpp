@@ -58,7 +58,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     plan.scene = request::pose_scene(imported, plan.scene_time, plan.scene_label);
     // The camera options as for a fresh render (--orbit needs frames, which --resume excludes):
     // a resumed file continues only the same view, as its hash says.
-    cli::apply_camera_options(o.camera, plan.scene.camera, plan.scene_label);
+    cli::apply_camera_options(o.camera, plan.scene, file.film.width, file.film.height, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     if (plan.scene_hash != m.scene_hash)
         throw InputError(path + ": was rendered from a different scene (orb:sceneHash " + m.scene_hash + ", from " +

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "orb/scene/auto_framing.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 
@@ -97,6 +98,43 @@ void add_camera_options(CLI::App& app, CameraOptions& o) {
                              "a height > 0 in scene units"))
         ->option_text("HEIGHT")
         ->group("Camera");
+    app.add_flag("--auto-camera", o.auto_camera,
+                 "Frame the scene's spheres anew for this image (stray points left out), from the camera's "
+                 "direction; --camera-position, --look-at and --focus-distance still win")
+        ->group("Camera");
+}
+
+void apply_camera_options(const CameraOptions& o, Scene& scene, int width, int height, const std::string& source) {
+    if (!o.auto_camera) return apply_camera_options(o, scene.camera, source);
+    CameraOptions lens;
+    lens.up = o.up;
+    lens.vfov_deg = o.vfov_deg;
+    lens.aperture = o.aperture;
+    lens.orthographic_height = o.orthographic_height;
+    apply_camera_options(lens, scene.camera, source);
+
+    Camera& camera = scene.camera;
+    const FramingView view{{camera.position[0] - camera.target[0], camera.position[1] - camera.target[1],
+                            camera.position[2] - camera.target[2]},
+                           camera.up, camera.vfov_deg, width, height};
+    // Lights placed around the scene (a PLY cloud's, a glTF sun) are not what is to be seen.
+    const auto emits = [&scene](std::size_t i) {
+        const Vec3& e = scene.materials[scene.spheres[i].material].emission;
+        return e[0] > 0 || e[1] > 0 || e[2] > 0;
+    };
+    std::optional<Framing> framing = frame_spheres(scene.spheres, view, emits);
+    if (!framing) framing = frame_spheres(scene.spheres, view);
+    if (framing) {
+        camera.position = framing->position;
+        camera.target = framing->target;
+        camera.focus_distance = framing->distance;
+    }
+
+    CameraOptions placed;
+    placed.position = o.position;
+    placed.look_at = o.look_at;
+    placed.focus_distance = o.focus_distance;
+    apply_camera_options(placed, camera, source);
 }
 
 void apply_camera_options(const CameraOptions& o, Camera& camera, const std::string& source) {

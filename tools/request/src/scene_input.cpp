@@ -47,7 +47,9 @@ Scene pose_scene(Scene&& imported, double seconds, const std::string& label) {
 
 void apply_camera_request(Scene& posed, const RequestSettings& settings, std::optional<long> frame,
                           const std::string& label) {
-    cli::apply_camera_options(settings.camera, posed.camera, label);
+    // The image's size: the command line's, else the scene's (orb-frames without --scene compares no camera).
+    cli::apply_camera_options(settings.camera, posed, settings.width.value_or(posed.render.width),
+                              settings.height.value_or(posed.render.height), label);
     if (settings.orbit && frame) posed.camera = settings.orbit->turn(posed.camera, *frame);
 }
 
