@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "gltf_internal.h"
+#include "orb/scene/auto_framing.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::gltf {
@@ -56,31 +57,15 @@ void convert_camera(const tinygltf::Camera& camera, const std::string& name, con
 }
 
 void automatic_camera(Scene& scene, const std::set<std::size_t>& distant) {
-    AnimVec3 lo{}, hi{};
-    bool any = false;
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-        if (distant.count(i)) continue;
-        const Sphere& s = scene.spheres[i];
-        for (int c = 0; c < 3; ++c) {
-            const double a = s.center[c] - s.radius, b = s.center[c] + s.radius;
-            lo[c] = any ? std::min(lo[c], a) : a;
-            hi[c] = any ? std::max(hi[c], b) : b;
-        }
-        any = true;
-    }
-    if (!any) return;
-    const AnimVec3 center{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
-    const double half_diagonal =
-        std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2])) / 2;
-    // Fit the bounding sphere of the box inside the narrower field of view.
-    const double half_v = scene.camera.vfov_deg * std::numbers::pi / 360.0;
-    const double aspect = double(scene.render.width) / double(scene.render.height);
-    const double half_h = std::atan(std::tan(half_v) * aspect);
-    const double distance = half_diagonal / std::sin(std::min(half_v, half_h));
-    scene.camera.position = {center[0], center[1], center[2] + distance};
-    scene.camera.target = center;
+    // From +z looking down -z, +y up (orb/scene/auto_framing.h: outliers left out, fitted to the aspect ratio).
+    const FramingView view{{0, 0, 1}, {0, 1, 0}, scene.camera.vfov_deg, scene.render.width, scene.render.height};
+    const std::optional<Framing> framing =
+        frame_spheres(scene.spheres, view, [&distant](std::size_t i) { return distant.count(i) != 0; });
+    if (!framing) return;
+    scene.camera.position = framing->position;
+    scene.camera.target = framing->target;
     scene.camera.up = {0, 1, 0};
-    scene.camera.focus_distance = distance;
+    scene.camera.focus_distance = framing->distance;
 }
 
 }  // namespace orb::gltf

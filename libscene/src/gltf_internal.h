@@ -182,8 +182,9 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const
 // `scene_center` sets how far away the target point is.
 void convert_camera(const tinygltf::Camera& camera, const std::string& name, const Matrix4& world,
                     const AnimVec3& scene_center, Scene& scene, const Diagnostics& diagnostics);
-// Frames the bounds of the spheres from +z looking down -z, leaving out the
-// spheres listed in `distant` (directional-light emitters, far away).
+// Frames the spheres from +z looking down -z (orb::frame_spheres: outliers
+// left out, fitted to the image's aspect ratio), leaving out the spheres
+// listed in `distant` (directional-light emitters, far away).
 void automatic_camera(Scene& scene, const std::set<std::size_t>& distant);
 
 // Luminous efficacy that turns lumens into watts: 683 lm/W, the SI

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "json_text.h"
+#include "orb/scene/auto_framing.h"
 #include "orb/scene/error.h"
 
 namespace orb::ply {
@@ -17,21 +18,8 @@ namespace {
 
 struct Bounds {
     Vec3 lo{}, hi{};
-    Vec3 center() const { return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}; }
     double diagonal() const { return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]); }
 };
-
-Bounds bounds_of_spheres(const std::vector<Sphere>& spheres) {
-    Bounds b;
-    for (std::size_t i = 0; i < spheres.size(); ++i) {
-        for (int c = 0; c < 3; ++c) {
-            const double low = spheres[i].center[c] - spheres[i].radius, high = spheres[i].center[c] + spheres[i].radius;
-            b.lo[c] = i == 0 ? low : std::min(b.lo[c], low);
-            b.hi[c] = i == 0 ? high : std::max(b.hi[c], high);
-        }
-    }
-    return b;
-}
 
 // PLY colours are display values (what point-cloud viewers show as is), so
 // they are sRGB-encoded; the scene holds linear Rec.709 reflectance.
@@ -59,16 +47,22 @@ Vec3 normalized(Vec3 v) {
     return {v[0] / length, v[1] / length, v[2] / length};
 }
 
-// Looks at the bounding sphere from above the +z side (30 degrees up), far
-// enough that the sphere fits the narrower field of view with a 10% margin.
-void frame_cloud(Scene& scene, const Vec3& center, double radius, const std::string& source) {
+// Looks at the cloud from above the +z side (30 degrees up), framed by the
+// rule every importer shares (orb/scene/auto_framing.h: stray points left
+// out, the framed points filling the tighter image direction but for a 10%
+// margin). Returns the radius of the framed points' bounds (half their box's
+// diagonal, at least `point_radius` so that a lone point counts), around the
+// camera's target, which places the default lights.
+double frame_cloud(Scene& scene, double point_radius, const std::string& source) {
     constexpr double kElevation = 30.0 * std::numbers::pi / 180.0;
-    const Vec3 direction{0.0, std::sin(kElevation), std::cos(kElevation)};
-    const double half_v = scene.camera.vfov_deg * std::numbers::pi / 360.0;
-    const double aspect = double(scene.render.width) / double(scene.render.height);
-    const double half_h = std::atan(std::tan(half_v) * aspect);
-    const double distance = 1.1 * radius / std::sin(std::min(half_v, half_h));
-    for (int c = 0; c < 3; ++c) scene.camera.position[c] = center[c] + direction[c] * distance;
+    const FramingView view{{0.0, std::sin(kElevation), std::cos(kElevation)}, {0, 1, 0}, scene.camera.vfov_deg,
+                           scene.render.width, scene.render.height};
+    const Framing framing = *frame_spheres(scene.spheres, view);  // a cloud has at least one point
+    const Vec3& center = framing.target;
+    const double distance = framing.distance;
+    const Bounds framed{framing.lo, framing.hi};
+    const double radius = std::max(framed.diagonal() / 2, point_radius);
+    scene.camera.position = framing.position;
     // Far from the origin relative to its size, the offset vanishes in rounding.
     const Vec3& p = scene.camera.position;
     if (std::hypot(p[0] - center[0], p[1] - center[1], p[2] - center[2]) < 0.5 * distance)
@@ -79,9 +73,10 @@ void frame_cloud(Scene& scene, const Vec3& center, double radius, const std::str
     scene.camera.target = center;
     scene.camera.up = {0, 1, 0};
     scene.camera.focus_distance = distance;
+    return radius;
 }
 
-// Two emissive spheres of the cloud's bounding radius R, 4R from its centre
+// Two emissive spheres of radius R (half the framed box's diagonal), 4R from its centre
 // (outside the camera's view): a key light from the upper left giving an
 // irradiance of 0.8·π at the centre and a fill light from the right giving
 // 0.3·π. A sphere of radiance L seen at sin θ = 1/4 gives E = π·L/16.
@@ -114,15 +109,22 @@ void add_default_lights(Scene& scene, const Vec3& center, double radius) {
 
 double default_point_radius(const std::vector<Vec3>& centers) {
     if (centers.empty()) return 1.0;
-    Bounds b{centers[0], centers[0]};
-    for (const Vec3& p : centers)
+    // The spacing of the cloud without its stray points (the framing's rule,
+    // orb/scene/auto_framing.h): a few far points would make every point huge.
+    const StrayBounds strays = stray_bounds(centers);
+    Bounds b;
+    std::size_t kept = 0;
+    for (const Vec3& p : centers) {
+        if (!strays.keeps(p)) continue;
         for (int c = 0; c < 3; ++c) {
-            b.lo[c] = std::min(b.lo[c], p[c]);
-            b.hi[c] = std::max(b.hi[c], p[c]);
+            b.lo[c] = kept == 0 ? p[c] : std::min(b.lo[c], p[c]);
+            b.hi[c] = kept == 0 ? p[c] : std::max(b.hi[c], p[c]);
         }
+        ++kept;
+    }
     const double diagonal = b.diagonal();
     if (!(diagonal > 0) || !std::isfinite(diagonal)) return 1.0;
-    const double spacing = diagonal / (std::sqrt(3.0) * std::cbrt(static_cast<double>(centers.size())));
+    const double spacing = diagonal / (std::sqrt(3.0) * std::cbrt(static_cast<double>(kept)));
     return spacing / 2;
 }
 
@@ -156,12 +158,9 @@ Scene cloud_scene(VertexColumns columns, const PlyImportOptions& options, const 
     }
     columns = {};  // the sphere list is the only copy from here on
 
-    const Bounds bounds = bounds_of_spheres(scene.spheres);
-    const Vec3 center = bounds.center();
-    // Half the diagonal bounds every sphere; the smallest radius keeps a lone point framed.
-    const double bounding_radius = std::max(bounds.diagonal() / 2, radius);
-    frame_cloud(scene, center, bounding_radius, source);
-    add_default_lights(scene, center, bounding_radius);
+    // The lights go around the framed points: stray points would push them far away.
+    const double framed_radius = frame_cloud(scene, radius, source);
+    add_default_lights(scene, scene.camera.target, framed_radius);
     return scene;
 }
 

@@ -10,8 +10,9 @@
 namespace orb::ply {
 
 // Radius for points without one: half the spacing the points would have on
-// a regular grid filling a cube with the cloud's bounding-box diagonal
-// (1 when all points coincide). docs/orb-import.md documents the formula.
+// a regular grid filling a cube with the cloud's bounding-box diagonal, the
+// stray points left out as the automatic camera leaves them out
+// (orb/scene/auto_framing.h; 1 when all points coincide). docs/orb-import.md documents the formula.
 double default_point_radius(const std::vector<Vec3>& centers);
 
 // Throws InputError naming `source` when no camera can frame the cloud.

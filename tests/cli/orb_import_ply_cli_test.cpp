@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "orb/scene/auto_framing.h"
 #include "orb/scene/ply.h"
 #include "orb/scene/scene_json.h"
 #include "import_cli_fixture.h"
@@ -101,6 +102,110 @@ INSTANTIATE_TEST_SUITE_P(
         BadPly{"negative_radius", kXyz + "property double radius\nend_header\n1 2 3 0.5\n4 5 6 -0.5\n",
                "bad.ply: vertex 1 property 'radius': must be > 0, got -0.5"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace orb
+
+namespace orb {
+namespace {
+
+// The Stanford bunny's 453 vertices (tests/data/stanford-bunny/README.md)
+// with three stray points far from it, as a scan picks them up: the
+// automatic camera, the point radius and the lights are the bunny's own.
+class OrbImportBunny : public test::ImportCliFixture {};
+
+TEST_F(OrbImportBunny, StrayPointsDoNotShrinkTheScan) {
+    std::ifstream in(std::string(ORB_TEST_DATA_DIR) + "/stanford-bunny/bun_zipper_res4_points.ply");
+    const std::string bunny{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    ASSERT_THAT(bunny, HasSubstr("element vertex 453\n"));
+    std::string strays = bunny;
+    strays.replace(strays.find("element vertex 453"), 18, "element vertex 456");
+    strays += "1.5 0.1 0 0.5 0.5\n-0.02 3 -0.4 0.5 0.5\n0.2 -0.9 2.2 0.5 0.5\n";
+    write("bunny.ply", bunny);
+    write("strays.ply", strays);
+    const ProcessResult alone = run({"bunny.ply"});
+    const ProcessResult with_strays = run({"strays.ply"});
+    ASSERT_EQ(alone.exit_code, 0) << alone.err;
+    ASSERT_EQ(with_strays.exit_code, 0) << with_strays.err;
+    const Scene a = load_scene_json(alone.out, "bunny");
+    const Scene b = load_scene_json(with_strays.out, "strays");
+    // The strays are so far out that the bunny's core box is the same: the same camera and lights.
+    EXPECT_EQ(a.camera, b.camera);
+    EXPECT_EQ(a.spheres[0].radius, b.spheres[0].radius);
+    EXPECT_EQ(a.spheres[a.spheres.size() - 1], b.spheres[b.spheres.size() - 1]);
+    // The bunny is about 0.16 units across: framed from about 0.3 away, not from metres.
+    const double distance = std::hypot(a.camera.position[0] - a.camera.target[0],
+                                       a.camera.position[1] - a.camera.target[1],
+                                       a.camera.position[2] - a.camera.target[2]);
+    EXPECT_GT(distance, 0.15);
+    EXPECT_LT(distance, 0.5);
+}
+
+// The camera options of orb-import move the camera of any scene, the binary
+// form included, and leave the rest as it was.
+TEST_F(OrbImportBunny, CameraOptionsMoveTheCameraOfABinaryScene) {
+    fs::copy_file(std::string(ORB_TEST_DATA_DIR) + "/stanford-bunny/bun_zipper_res4_points.ply", dir_ / "bunny.ply");
+    ASSERT_EQ(run({"bunny.ply", "-o", "bunny.orb"}).exit_code, 0);
+    const ProcessResult moved =
+        run({"bunny.orb", "--camera-position", "0.3,0.2,0.3", "--look-at", "-0.02,0.1,0", "--vfov", "30",
+             "--orthographic", "0.25"});
+    ASSERT_EQ(moved.exit_code, 0) << moved.err;
+    const ProcessResult plain = run({"bunny.orb"});
+    Scene expected = load_scene_json(plain.out, "plain");
+    expected.camera.position = {0.3, 0.2, 0.3};
+    expected.camera.target = {-0.02, 0.1, 0};
+    expected.camera.vfov_deg = 30;
+    Scene got = load_scene_json(moved.out, "moved");
+    // The orthographic height is set on the scene; its JSON form is another change's.
+    expected.camera.orthographic_height = got.camera.orthographic_height;
+    EXPECT_EQ(got, expected);
+
+    const ProcessResult bad = run({"bunny.orb", "--look-at", "0.3,0.2,0.3", "--camera-position", "0.3,0.2,0.3",
+                                   "-o", "out.orb"});
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_THAT(bad.err, HasSubstr("bunny.orb: --camera-position and --look-at are the same point 0.3,0.2,0.3"));
+    EXPECT_FALSE(fs::exists(dir_ / "out.orb"));
+}
+
+}  // namespace
+}  // namespace orb
+
+namespace orb {
+namespace {
+
+// --auto-camera frames a scene anew by the automatic camera's rule, from its
+// camera's direction, leaving its lights out; explicit options win.
+TEST_F(OrbImportBunny, AutoCameraFramesTheSpheresAgainAndExplicitOptionsWin) {
+    fs::copy_file(std::string(ORB_TEST_DATA_DIR) + "/stanford-bunny/bun_zipper_res4_points.ply", dir_ / "bunny.ply");
+    const ProcessResult imported = run({"bunny.ply"});
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+    Scene far = load_scene_json(imported.out, "bunny");
+    const Camera automatic = far.camera;
+    // A camera far away (as the old framing left a scan with stray points), looking from the side.
+    far.camera.position = {40, 0.1, 0};
+    far.camera.target = {0, 0.1, 0};
+    write("far.json", write_scene_json(far));
+
+    const ProcessResult again = run({"far.json", "--auto-camera", "--vfov", "30"});
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    const Camera got = load_scene_json(again.out, "again").camera;
+    const FramingView view{{40, 0, 0}, {0, 1, 0}, 30, far.render.width, far.render.height};
+    const auto point = [&](std::size_t i) { return far.materials[far.spheres[i].material].emission != Vec3{0, 0, 0}; };
+    const Framing expected = *frame_spheres(far.spheres, view, point);
+    EXPECT_EQ(expected.framed, 453u) << "the two lights are not framed";
+    EXPECT_EQ(got.position, expected.position);
+    EXPECT_EQ(got.target, expected.target);
+    EXPECT_EQ(got.focus_distance, expected.distance);
+    EXPECT_EQ(got.vfov_deg, 30);
+    EXPECT_EQ(got.target, automatic.target) << "the same framed box as at import";
+
+    // An explicit --look-at wins over the automatic one; the automatic position stays.
+    const ProcessResult aimed = run({"far.json", "--auto-camera", "--vfov", "30", "--look-at", "0,0.15,0"});
+    ASSERT_EQ(aimed.exit_code, 0) << aimed.err;
+    const Camera aimed_camera = load_scene_json(aimed.out, "aimed").camera;
+    EXPECT_EQ(aimed_camera.target, (Vec3{0, 0.15, 0}));
+    EXPECT_EQ(aimed_camera.position, expected.position);
+}
 
 }  // namespace
 }  // namespace orb

@@ -219,6 +219,26 @@ expect_in "--frame \"\$frame\" --fps 30 --spp 32 -o $work/shots/b.####.exr --ski
 expect_not_in "collect"
 expect_not_in "--sample-range"
 
+section "dry run: --orbit reaches every task with the whole frame list"
+run "$farm" "$scene" --frames 1-4 -o shots/turn.%04d.exr --width 8 --height 6 --spp 1 --dry-run -- --orbit 360
+expect_status 0
+expect_in "-o $work/shots/turn.%04d.exr --orbit 360 --orbit-frames 1-4 --skip-existing"
+# A task of frame 3 renders exactly what orb-render --frames 1-4 --orbit 360 asks of frame 3.
+orbit_script=$(nth_script 1 "$out")
+mkdir -p shots
+(cd "$work" && SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_JOB_ID=1 bash -c "$orbit_script" 2>/dev/null) ||
+    problem "the orbit task script failed"
+run "$bin/orb-render" "$scene" --frames 1-4 -o shots/turn.%04d.exr --width 8 --height 6 --spp 1 --orbit 360 --missing
+expect_status 0
+checks=$((checks + 1))
+[[ $out == $'1\n2\n4' ]] || problem "frame 3 of the orbit task is not the frame orb-render --frames asks for: missing $out"
+# The user's own --orbit-frames is kept.
+run "$farm" "$scene" --frames 3-4 -o shots/turn.%04d.exr --dry-run -- --orbit 90 --orbit-frames 1-8
+expect_status 0
+expect_in "--orbit 90 --orbit-frames 1-8 --skip-existing"
+expect_not_in "--orbit-frames 3-4"
+rm -rf shots
+
 section "dry run: more tasks than MaxArraySize"
 mkdir -p "$work/fake-slurm"
 cat >"$work/fake-slurm/scontrol" <<'EOF'

@@ -247,3 +247,35 @@ TEST_F(FramesCli, AClosedStdoutEndsItAsItEndsSeq) {
 }
 
 }  // namespace
+
+// The camera options are part of the render orb-frames --missing compares,
+// the orbit with the range of the list judged (or --orbit-frames), as
+// orb-render --frames renders it.
+TEST_F(FramesCli, MissingComparesTheCameraOptionsAndTheOrbit) {
+    const std::vector<std::string> camera{"--orbit", "180", "--look-at", "0,0.5,0"};
+    std::vector<std::string> all{ORB_RENDER_EXE, kScene, "--frames", "1-4", "--width", "8", "--height", "6", "--spp",
+                                 "1", "-q", "-o", path("o.%04d.exr")};
+    all.insert(all.end(), camera.begin(), camera.end());
+    ASSERT_EQ(run_process(all).exit_code, 0);
+    std::vector<std::string> listing{"1-4", path("o.%04d.exr"), "--missing", "--scene", kScene,
+                                     "--width", "8", "--height", "6", "--spp", "1"};
+    const auto judged = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = listing;
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ProcessResult r = frames(args);
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return r.out;
+    };
+    EXPECT_EQ(judged(camera), "");
+    // A part of the list judges its frames on the whole list's orbit only when told the whole list.
+    listing[0] = "3-4";
+    EXPECT_EQ(judged({"--orbit", "180", "--look-at", "0,0.5,0", "--orbit-frames", "1-4"}), "");
+    EXPECT_EQ(judged(camera), "3\n4\n");  // 3-4 alone puts 3 at 0 and 4 at 90 degrees, not 90 and 135
+    listing[0] = "1-4";
+    EXPECT_EQ(judged({"--orbit", "180"}), "1\n2\n3\n4\n");  // the look-at differs
+    EXPECT_EQ(judged({"--look-at", "0,0.5,0"}), "2\n3\n4\n");  // no orbit: only frame 1 is at 0 degrees
+    // Camera options need the scene to compare.
+    const ProcessResult no_scene = frames({"1-4", path("o.%04d.exr"), "--missing", "--vfov", "30"});
+    EXPECT_EQ(no_scene.exit_code, 2);
+    EXPECT_NE(no_scene.err.find("give --scene SCENE"), std::string::npos) << no_scene.err;
+}

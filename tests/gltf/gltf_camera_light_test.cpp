@@ -2,10 +2,12 @@
 // KHR_lights_punctual (emissive spheres of matching intensity).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "gltf_test_util.h"
+#include "orb/scene/auto_framing.h"
 #include "orb/scene/error.h"
 
 namespace orb::gltf_test {
@@ -69,19 +71,24 @@ TEST_P(Cameras, NoCameraFramesTheBoundsFromPlusZ) {
     expect_vec(scene.camera.target, {2, 0, 0}, 1e-6);
     expect_vec(direction(scene.camera), {0, 0, -1}, 1e-9);
     expect_vec(scene.camera.up, {0, 1, 0});
-    // Every sphere lies wholly inside the vertical and horizontal field of view.
-    const double half_v = scene.camera.vfov_deg * kPi / 360;
-    const double half_h = std::atan(std::tan(half_v) * scene.render.width / scene.render.height);
+    // Every sphere lies wholly inside the vertical and horizontal field of
+    // view narrowed by the framing margin, and one touches it (the framing
+    // rule itself is tested in tests/scene/auto_framing_test.cpp).
+    const double tan_v = std::tan(scene.camera.vfov_deg * kPi / 360) / (1 + kFramingMargin);
+    const double half_v = std::atan(tan_v);
+    const double half_h = std::atan(tan_v * scene.render.width / scene.render.height);
+    double closest = 1e300;
     for (const Sphere& s : scene.spheres) {
         const double depth = scene.camera.position[2] - s.center[2];
         ASSERT_GT(depth, s.radius);
-        const double angular_radius = std::asin(s.radius / std::hypot(depth, s.center[0] - 2, s.center[1]));
-        EXPECT_LE(std::atan(std::fabs(s.center[0] - 2) / depth) + angular_radius, half_h + 1e-9);
-        EXPECT_LE(std::atan(std::fabs(s.center[1]) / depth) + angular_radius, half_v + 1e-9);
+        const double angular_radius = std::asin(s.radius / std::hypot(depth, s.center[0] - 2));
+        const double room_h = half_h - (std::atan(std::fabs(s.center[0] - 2) / depth) + angular_radius);
+        const double room_v = half_v - (std::atan(std::fabs(s.center[1]) / depth) + std::asin(s.radius / depth));
+        EXPECT_GE(room_h, -1e-9);
+        EXPECT_GE(room_v, -1e-9);
+        closest = std::min({closest, room_h, room_v});
     }
-    // Framed tightly: the bounding sphere of the box touches the narrower (vertical) field.
-    const double half_diagonal = std::sqrt(36.0 + 4 + 4) / 2;
-    EXPECT_NEAR(scene.camera.position[2], half_diagonal / std::sin(half_v), 1e-6);
+    EXPECT_NEAR(closest, 0, 1e-9) << "framed tightly";
 }
 
 INSTANTIATE_TEST_SUITE_P(Gltf, Cameras, ::testing::Values(".gltf", "_embedded.gltf", ".glb"));
@@ -178,15 +185,16 @@ TEST_P(Lights, AutomaticCameraFramesTheSceneNotTheDistantSun) {
     GltfImportOptions options;
     options.directional_lights = true;
     const Scene scene = import_generated("all_lights" + GetParam(), options).scene;
-    ASSERT_NO_THROW(sphere_named(scene, "Sun"));
+    const Sphere& sun = sphere_named(scene, "Sun");
     // Ball [-1,1]^3, Bulb at (0,5,0) and Spot at (0,-5,0) of equal radius r:
     // the box is [-1,1] x [-5-r,5+r] x [-1,1], centred on the origin.
-    const double r = sphere_named(scene, "Bulb").radius;
     expect_vec(scene.camera.target, {0, 0, 0}, 1e-6);
-    const double half_diagonal = std::sqrt(4.0 + (10 + 2 * r) * (10 + 2 * r) + 4) / 2;
-    const double half_v = scene.camera.vfov_deg * kPi / 360;
-    const double half_h = std::atan(std::tan(half_v) * scene.render.width / scene.render.height);
-    EXPECT_NEAR(scene.camera.position[2], half_diagonal / std::sin(std::min(half_v, half_h)), 1e-6);
+    // The framing rule (orb::frame_spheres) applied to every sphere but the sun.
+    const FramingView view{{0, 0, 1}, {0, 1, 0}, scene.camera.vfov_deg, scene.render.width, scene.render.height};
+    const auto framing = frame_spheres(scene.spheres, view, [&](std::size_t i) { return &scene.spheres[i] == &sun; });
+    ASSERT_TRUE(framing);
+    EXPECT_EQ(framing->framed, scene.spheres.size() - 1);
+    expect_vec(scene.camera.position, framing->position, 1e-12);
     // The same framing as without the sun.
     const Scene sunless = import_generated("all_lights" + GetParam()).scene;
     expect_vec(scene.camera.position, sunless.camera.position, 1e-9);

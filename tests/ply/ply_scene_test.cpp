@@ -1,12 +1,15 @@
 // The scene around a cloud: shared materials, radii, the automatic camera
-// that sees every point, and lights that light it without being seen.
+// that sees the cloud (its stray points left out), and lights that light it
+// without being seen.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "orb/scene/auto_framing.h"
 #include "orb/scene/ply.h"
 #include "ply_builder.h"
 
@@ -88,26 +91,60 @@ std::vector<double> frustum_distances(const Scene& scene, const Vec3& center) {
             along * std::sin(half_v) - y * std::cos(half_v), along * std::sin(half_v) + y * std::cos(half_v)};
 }
 
-TEST(PlyScene, TheAutomaticCameraSeesEveryPointAndNoLight) {
+TEST(PlyScene, TheAutomaticCameraSeesTheCloudButNotItsStrayPointsNorTheLights) {
     std::vector<Vec3> points;
     for (int i = 0; i < 400; ++i)
         points.push_back({100 + 30 * std::sin(i * 0.37), -20 + 5 * std::cos(i * 1.3), 7 * std::sin(i * 0.11) * (i % 7)});
-    points.push_back({160, -40, 80});  // outliers stretch the bounds
-    points.push_back({40, 10, -70});
+    const Vec3 strays[] = {{1600, -40, 80}, {40, 10, -7000}};  // far from the cloud: left out of the framing
+    for (const Vec3& stray : strays) points.push_back(stray);
     for (const std::string& encoding : {std::string("ascii"), std::string("binary_big_endian")}) {
         const Scene scene = import_ply(make_ply(encoding, {xyz_cloud(points)}), "cloud.ply", {.radius = 2});
+        double closest = 1e300;
         for (const Sphere& s : scene.spheres) {
             const bool light = scene.materials[s.material].emission != Vec3{0, 0, 0};
+            const bool stray = s.center == strays[0] || s.center == strays[1];
             const std::vector<double> d = frustum_distances(scene, s.center);
+            if (stray) continue;
             if (!light) {
-                for (double plane : d) EXPECT_GE(plane, s.radius) << "point at " << s.center[0] << " " << s.center[1];
+                for (double plane : d) {
+                    EXPECT_GE(plane, s.radius) << "point at " << s.center[0] << " " << s.center[1];
+                    closest = std::min(closest, plane - s.radius);
+                }
             } else {
                 bool outside = false;
                 for (double plane : d) outside = outside || plane < -s.radius;
                 EXPECT_TRUE(outside) << scene.materials[s.material].name << " is in view";
             }
         }
+        // Every point of the cloud is in view, which is framed around the cloud alone.
+        const double distance = std::hypot(scene.camera.position[0] - scene.camera.target[0],
+                                           scene.camera.position[1] - scene.camera.target[1],
+                                           scene.camera.position[2] - scene.camera.target[2]);
+        EXPECT_LT(distance, 200.0) << "framed the cloud, not the strays thousands of units away";
+        EXPECT_GT(closest, 0.0);
+        // The lights sit around the cloud, not around the strays.
+        for (const Sphere& s : scene.spheres) {
+            if (scene.materials[s.material].emission == Vec3{0, 0, 0}) continue;
+            EXPECT_LT(std::hypot(s.center[0] - 100, s.center[1] + 20, s.center[2]), 300.0);
+        }
     }
+}
+
+// The camera is the shared framing rule's (orb::frame_spheres, tested in
+// tests/scene/auto_framing_test.cpp), seen from 30 degrees above the +z side.
+TEST(PlyScene, TheAutomaticCameraIsTheSharedFramingFromThirtyDegreesUp) {
+    std::vector<Vec3> points;
+    for (int i = 0; i < 300; ++i) points.push_back({std::sin(i * 0.7) * 4, std::cos(i * 0.3), std::sin(i * 1.1)});
+    const Scene scene = import_ply(make_ply("ascii", {xyz_cloud(points)}), "cloud.ply", {.radius = 0.05});
+    std::vector<Sphere> cloud(scene.spheres.begin(), scene.spheres.begin() + 300);
+    const FramingView view{{0, 0.5, std::sqrt(0.75)}, {0, 1, 0}, scene.camera.vfov_deg, scene.render.width,
+                           scene.render.height};
+    const Framing framing = *frame_spheres(cloud, view);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(scene.camera.position[c], framing.position[c], 1e-12 * framing.distance);
+        EXPECT_EQ(scene.camera.target[c], framing.target[c]);
+    }
+    EXPECT_NEAR(scene.camera.focus_distance, framing.distance, 1e-12 * framing.distance);
 }
 
 }  // namespace

@@ -105,12 +105,16 @@ int main(int argc, char** argv) {
                 throw UsageError(std::string(s.missing ? "--missing" : "--paths") + " needs a PATTERN, e.g. beauty.%04d.exr");
             if (any_render_option(s) && !s.missing)
                 throw UsageError("--scene and the render's options (--spp, --width, --passes, ...) go with --missing");
+            if (s.scene.empty() && (s.render.camera != orb::cli::CameraOptions{} || s.render.orbit.degrees))
+                throw UsageError("the camera options (--camera-position, --orbit, ...) change the scene's camera: "
+                                 "give --scene SCENE to compare it");
             orb::request::check_request_options(s.render);
             if (!s.pattern.empty() && orb::cli::count_frame_fields(s.pattern) == 0)
                 throw UsageError("'" + s.pattern + "' has no frame number: write %04d or #### where it goes");
-            const orb::cli::FrameSpec spec = orb::cli::parse_frame_spec(list_text(s.list));
+            const std::string frames = list_text(s.list);
+            const orb::cli::FrameSpec spec = orb::cli::parse_frame_spec(frames);
             std::optional<orb::frames::MissingFrames> judge;
-            if (s.missing) judge.emplace(s.scene, s.render);
+            if (s.missing) judge.emplace(s.scene, s.render, frames);
             std::string out;
             for (int frame : spec) {
                 const std::string path = s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, frame);

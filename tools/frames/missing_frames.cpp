@@ -5,17 +5,22 @@
 
 namespace orb::frames {
 
-MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options) {
-    if (!scene_path.empty()) scene_ = request::read_scene(scene_path, label_);
-    settings_ = request::resolve_request(options, scene_ ? &scene_->render : nullptr);
+MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options,
+                             const std::string& frames) {
+    // The orbit is checked before a scene of millions of spheres is read.
+    settings_ = request::resolve_request(options, nullptr, &frames, true);
+    if (scene_path.empty()) return;
+    scene_ = request::read_scene(scene_path, label_);
+    settings_ = request::resolve_request(options, &scene_->render, &frames, true);
 }
 
 exr::SceneIdentity MissingFrames::identity_at(long frame) {
     if (still_identity_) return *still_identity_;
-    const Scene posed = request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
+    Scene posed = request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
+    request::apply_camera_request(posed, settings_, frame, label_);
     exr::SceneIdentity identity =
         request::scene_identity(posed, scene_content_hash(posed), *settings_.width, *settings_.height);
-    if (scene_->animation.empty()) still_identity_ = identity;
+    if (scene_->animation.empty() && !request::camera_moves(settings_)) still_identity_ = identity;
     return identity;
 }
 

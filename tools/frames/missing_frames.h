@@ -17,8 +17,9 @@ class MissingFrames {
 public:
     // Reads `scene_path` as orb-render does when it is not empty (throws
     // orb::InputError for a bad scene); without it the scene, its camera and
-    // what its render block would fill in are not compared.
-    MissingFrames(const std::string& scene_path, const request::RequestOptions& options);
+    // what its render block would fill in are not compared. `frames` is the
+    // frame list judged: the range of --orbit unless --orbit-frames gives it.
+    MissingFrames(const std::string& scene_path, const request::RequestOptions& options, const std::string& frames);
 
     exr::OutputJudgement judge(const std::string& path, long frame);
 
@@ -28,7 +29,7 @@ private:
     std::optional<Scene> scene_;
     std::string label_;
     request::RequestSettings settings_;
-    std::optional<exr::SceneIdentity> still_identity_;  // a scene without animation is the same at every frame
+    std::optional<exr::SceneIdentity> still_identity_;  // a scene without animation or orbit is the same at every frame
 };
 
 }  // namespace orb::frames

@@ -9,6 +9,7 @@
 #include "environment_options.h"
 #include "gltf_options.h"
 #include "map_paths.h"
+#include "orb/cli/camera_options.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/output_file.h"
@@ -37,6 +38,7 @@ constexpr const char* kExamples = R"(Examples:
   orb-import cloud.orb -o cloud.json                 binary scene -> Orb JSON, exactly
   orb-import model.glb --environment sky.exr -o m.json  lit by an HDR map (or --environment R,G,B)
   orb-import cornell.json --to scn -o cornell.scn    Orb JSON -> .scn (warns about losses)
+  orb-import scan.orb --look-at 0,0.1,0 --vfov 30 -o scan-closer.orb   move the camera of a binary scene
   orb-import model.gltf --to scn --strict -o m.scn   fail instead of losing anything
   cat scene.txt | orb-import - --from scn            read stdin, say what it is
   orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
@@ -52,6 +54,7 @@ struct Arguments {
     bool strict = false;
     orb::ImportOptions import_options;
     orb::import_tool::EnvironmentChoice environment;
+    orb::cli::CameraOptions camera;
 };
 
 // Where relative references (glTF buffers and images, environment maps) are
@@ -104,6 +107,14 @@ int run(Arguments& args) {
     for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
     if (environment) imported.scene.environment = std::move(*environment);
+    // The command line's camera wins over the file's (or the automatic one).
+    orb::cli::apply_camera_options(args.camera, imported.scene, imported.scene.render.width,
+                                   imported.scene.render.height, source);
+    if (imported.scene.animation.camera_node >= 0 &&
+        (args.camera.position || args.camera.look_at || args.camera.up || args.camera.auto_camera))
+        orb::cli::warning(source + ": the camera is animated, and each pose replaces its position, look-at and up: "
+                          "--camera-position, --look-at, --up and --auto-camera set only its rest pose; give them to orb-render, "
+                          "which applies them to every pose");
 
     std::string text;
     if (to == OutputFormat::Scn) {
@@ -142,6 +153,7 @@ int main(int argc, char** argv) {
             orb::import_tool::add_gltf_options(app, args.import_options.gltf);
             orb::import_tool::add_ply_options(app, args.import_options.ply);
             orb::import_tool::add_environment_options(app, args.environment);
+            orb::cli::add_camera_options(app, args.camera);
             app.footer(kExamples);
         },
         [&] { return run(args); });

@@ -53,7 +53,7 @@ void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& r
 }
 
 void PosePrefetch::start(const RenderPlan& plan, const Job& next, render::Renderer& renderer) {
-    if (!next.frame || plan.imported.animation.empty()) return;
+    if (!next.frame || !changes_per_frame(plan)) return;
     frame_ = *next.frame;
     future_ = std::async(std::launch::async, [&plan, &renderer, frame = frame_] {
         PosedFrame posed = pose_at(plan, frame);

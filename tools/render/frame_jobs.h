@@ -42,7 +42,8 @@ void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& r
 class PosePrefetch {
 public:
     // Starts posing `next`'s frame and laying it out for `renderer` (its
-    // tree refitted or built), nothing for a scene without animation.
+    // tree refitted or built), nothing for a scene that does not change
+    // from frame to frame (no animation, no --orbit).
     void start(const RenderPlan& plan, const Job& next, render::Renderer& renderer);
     // Installs the prefetched pose when it is this job's frame; an error
     // posing it (a pose that breaks the scene limits) is thrown here.

@@ -10,6 +10,7 @@
 #include "orb/cli/exr_output_name.h"
 #include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
+#include "orb/cli/orbit_options.h"
 #include "orb/cli/tool_main.h"
 #include "orb/exr/film_exr.h"
 
@@ -38,6 +39,8 @@ const char* kExamples = R"(Examples:
   orb-render shot.glb --frames 1-240 -o shots/beauty.%04d.exr
   orb-render shot.glb --frame 48 -o shots/beauty.####.exr --skip-existing
   orb-render shot.glb --frames 1-240 -o shots/beauty.%04d.exr --spp 256 --missing
+  orb-render scan.orb --camera-position 0,1,4 --look-at 0,0.5,0 --vfov 35 -o scan.exr
+  orb-render scan.orb --orbit 360 --frames 0-119 -o turntable/scan.%04d.exr
   orb-render --list-devices
   orb-render --benchmark scenes/cornell.json --width 640 --height 480
 
@@ -96,6 +99,7 @@ void check_option_combinations(const RenderOptions& o) {
     if (o.scene.empty()) throw UsageError("missing SCENE (a scene file, or - for stdin)");
     request::check_request_options(o);
     if (o.frame && o.frames) throw UsageError("--frame N and --frames SPEC exclude each other");
+    cli::resolve_orbit(o.orbit, o.frames ? &*o.frames : nullptr, renders_frames(o));  // throws for a bad --orbit
     std::size_t frame_count = o.frame ? 1 : 0;
     if (o.frames) frame_count = parse_frames_option(*o.frames).size();
     if (renders_frames(o)) {

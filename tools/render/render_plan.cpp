@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "orb/cli/camera_options.h"
 #include "orb/cli/paths.h"
 #include "orb/request/scene_input.h"
 #include "orb/scene/error.h"
@@ -55,6 +56,9 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     require_same(o.time_at, m.scene_time, "--time-at", "orb:sceneTime", path);
     plan.scene_time = m.scene_time;
     plan.scene = request::pose_scene(imported, plan.scene_time, plan.scene_label);
+    // The camera options as for a fresh render (--orbit needs frames, which --resume excludes):
+    // a resumed file continues only the same view, as its hash says.
+    cli::apply_camera_options(o.camera, plan.scene, file.film.width, file.film.height, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     if (plan.scene_hash != m.scene_hash)
         throw InputError(path + ": was rendered from a different scene (orb:sceneHash " + m.scene_hash + ", from " +
@@ -108,7 +112,8 @@ RenderPlan make_render_plan(const RenderOptions& o) {
         return plan;
     }
     // The render block (size, spp, depth) is not animated: any pose has the rest pose's.
-    const request::RequestSettings& s = plan.settings = request::resolve_request(o, &imported.render);
+    const request::RequestSettings& s = plan.settings =
+        request::resolve_request(o, &imported.render, o.frames ? &*o.frames : nullptr, renders_frames(o));
     plan.config.width = *s.width;
     plan.config.height = *s.height;
     plan.config.seed = s.seed;
@@ -126,6 +131,7 @@ RenderPlan make_render_plan(const RenderOptions& o) {
     }
     plan.scene_time = o.time_at.value_or(0.0);
     plan.scene = request::pose_scene(std::move(imported), plan.scene_time, plan.scene_label);
+    request::apply_camera_request(plan.scene, s, std::nullopt, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     return plan;
 }
@@ -134,11 +140,13 @@ PosedFrame pose_at(const RenderPlan& plan, long frame) {
     PosedFrame posed;
     posed.frame = frame;
     // A scene without animation is the same at every frame: the first
-    // frame takes it (and its hash) and every other frame keeps it. (For an
-    // animated scene only the imported scene and the settings are read,
-    // which nothing changes while frames render: safe on another thread.)
-    if (plan.imported.animation.empty() && plan.frame) return posed;
+    // frame takes it (and its hash) and every other frame keeps it, unless
+    // --orbit turns its camera. (For a changing scene only the imported
+    // scene and the settings are read, which nothing changes while frames
+    // render: safe on another thread.)
+    if (!changes_per_frame(plan) && plan.frame) return posed;
     posed.scene = request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
+    request::apply_camera_request(*posed.scene, plan.settings, frame, plan.scene_label);
     posed.hash = scene_content_hash(*posed.scene);
     return posed;
 }
@@ -149,12 +157,16 @@ void install(RenderPlan& plan, PosedFrame&& posed) {
         plan.scene_hash = std::move(posed.hash);
         plan.scene_changed = true;
         plan.prepared_scene = std::move(posed.prepared);
-        // Without animation the pose is the scene itself, for good: its imported copy is not needed again.
-        if (plan.imported.animation.empty()) plan.imported = Scene{};
+        // Without animation or orbit the pose is the scene itself, for good: its imported copy is not needed again.
+        if (!changes_per_frame(plan)) plan.imported = Scene{};
     }
     plan.scene_time = request::frame_time(posed.frame, plan.settings.fps);
     plan.config.seed = plan.settings.seed_of(posed.frame);
     plan.frame = exr::FrameInfo{posed.frame, plan.settings.fps};
+}
+
+bool changes_per_frame(const RenderPlan& plan) {
+    return !plan.imported.animation.empty() || request::camera_moves(plan.settings);
 }
 
 void pose_frame(RenderPlan& plan, long frame) { install(plan, pose_at(plan, frame)); }

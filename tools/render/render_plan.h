@@ -64,8 +64,12 @@ void install(RenderPlan& plan, PosedFrame&& posed);
 // resume that would not continue the same render.
 RenderPlan make_render_plan(const RenderOptions& options);
 
+// Whether each frame's scene differs from the last: an animated scene, or
+// one whose camera --orbit turns.
+bool changes_per_frame(const RenderPlan& plan);
+
 // Poses the plan at `frame`: the scene at frame / fps (checked against the
-// scene limits again), its hash, the frame's seed. Throws orb::InputError.
+// scene limits again) with the command line's camera, its hash, the frame's seed. Throws orb::InputError.
 void pose_frame(RenderPlan& plan, long frame);  // install(plan, pose_at(plan, frame))
 // Whether the plan's scene is posed at `frame` already.
 bool posed_at(const RenderPlan& plan, long frame);

@@ -1,5 +1,6 @@
 #include "orb/cli/frame_spec.h"
 
+#include <algorithm>
 #include <charconv>
 #include <string>
 #include <unordered_set>
@@ -106,6 +107,8 @@ FrameSpec parse_frame_spec(std::string_view text) {
         const std::string_view item = trimmed(rest.substr(0, comma));
         if (item.empty()) bad_spec(text, "an empty item between commas");
         const Item range = parse_item(item, text);
+        spec.lowest = spec.frames.empty() ? range.first : std::min(spec.lowest, range.first);
+        spec.highest = spec.frames.empty() ? range.last : std::max(spec.highest, range.last);
         // Step from the first frame; `last - frame >= step` avoids overflowing past kMaxFrameNumber.
         for (int frame = range.first;; frame += range.step) {
             if (seen.insert(frame).second) {

@@ -81,6 +81,8 @@ void add_request_options(CLI::App& app, RequestOptions& o) {
         ->check(positive_number())
         ->option_text("FPS");
     app.add_flag("--same-seed", o.same_seed, "Every frame with --seed itself, not a seed derived from the frame");
+    cli::add_camera_options(app, o.camera);
+    cli::add_orbit_options(app, o.orbit);
 }
 
 void check_request_options(const RequestOptions& o) {

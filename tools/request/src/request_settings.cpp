@@ -47,7 +47,8 @@ exr::RenderRequest RequestSettings::request(std::optional<long> frame, double sc
     return r;
 }
 
-RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* scene) {
+RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* scene,
+                                const std::string* animation_frames, bool renders_frames) {
     RequestSettings s;
     const auto from_scene = [&](const std::optional<int>& given, int RenderSettings::*field) -> std::optional<int> {
         if (given) return given;
@@ -72,6 +73,8 @@ RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* s
     s.half = o.half;
     s.fps = o.fps.value_or(kDefaultFps);
     s.same_seed = o.same_seed;
+    s.camera = o.camera;
+    s.orbit = cli::resolve_orbit(o.orbit, animation_frames, renders_frames);
     return s;
 }
 

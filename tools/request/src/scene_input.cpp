@@ -45,6 +45,16 @@ Scene pose_scene(Scene&& imported, double seconds, const std::string& label) {
     return pose_scene(static_cast<const Scene&>(imported), seconds, label);
 }
 
+void apply_camera_request(Scene& posed, const RequestSettings& settings, std::optional<long> frame,
+                          const std::string& label) {
+    // The image's size: the command line's, else the scene's (orb-frames without --scene compares no camera).
+    cli::apply_camera_options(settings.camera, posed, settings.width.value_or(posed.render.width),
+                              settings.height.value_or(posed.render.height), label);
+    if (settings.orbit && frame) posed.camera = settings.orbit->turn(posed.camera, *frame);
+}
+
+bool camera_moves(const RequestSettings& settings) { return settings.orbit.has_value(); }
+
 exr::SceneIdentity scene_identity(const Scene& posed, const std::string& hash, int width, int height) {
     return {hash, exr::world_to_camera(posed.camera), exr::world_to_ndc(posed.camera, width, height)};
 }

@@ -20,6 +20,10 @@ struct FrameSpec {
     // In the order written, each frame once (a frame repeated later is
     // dropped), so "1-240x10,1-240" renders every tenth frame first.
     std::vector<int> frames;
+    // The smallest and largest frame numbers the list writes: a range's end
+    // counts even when its step passes over it ("1-240x2" spans 1 ... 240),
+    // so a stepped preview lies on the same timeline as the full list.
+    int lowest = 0, highest = 0;
 
     std::size_t size() const { return frames.size(); }
     auto begin() const { return frames.begin(); }

@@ -8,6 +8,9 @@
 #include <optional>
 #include <string>
 
+#include "orb/cli/camera_options.h"
+#include "orb/cli/orbit_options.h"
+
 namespace orb::request {
 
 struct RequestOptions {
@@ -23,6 +26,9 @@ struct RequestOptions {
     bool half = false;
     std::optional<double> fps;
     bool same_seed = false;
+    // The camera: part of what an output holds (its matrices are in the EXR).
+    cli::CameraOptions camera;
+    cli::OrbitOptions orbit;
 
     bool operator==(const RequestOptions&) const = default;  // RequestOptions{}: none given
 };

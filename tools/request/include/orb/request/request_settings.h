@@ -46,6 +46,8 @@ struct RequestSettings {
     bool half = false;
     double fps = kDefaultFps;
     bool same_seed = false;
+    cli::CameraOptions camera;      // replaces parts of the posed scene's camera
+    std::optional<cli::Orbit> orbit;  // then turns it, frame by frame
 
     std::uint64_t seed_of(std::optional<long> frame) const;  // a frame's seed, or --seed for a still
     // The request for one output: a frame of an animation, or a still at
@@ -53,7 +55,11 @@ struct RequestSettings {
     exr::RenderRequest request(std::optional<long> frame, double scene_time = 0) const;
 };
 
-// `scene_render` is the scene's render block, or null when the scene is not read.
-RequestSettings resolve_request(const RequestOptions& options, const RenderSettings* scene_render);
+// `scene_render` is the scene's render block, or null when the scene is not
+// read. `animation_frames` is the frame list rendered or judged (null for
+// --frame N or a still), `renders_frames` whether frames are: they give
+// --orbit its range (orb::cli::resolve_orbit, whose UsageError this throws).
+RequestSettings resolve_request(const RequestOptions& options, const RenderSettings* scene_render,
+                                const std::string* animation_frames = nullptr, bool renders_frames = false);
 
 }  // namespace orb::request

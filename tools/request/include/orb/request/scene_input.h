@@ -4,9 +4,11 @@
 // the same way, so both hash the same scene.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "orb/exr/render_request.h"
+#include "orb/request/request_settings.h"
 #include "orb/scene/scene.h"
 
 namespace orb::request {
@@ -21,6 +23,17 @@ Scene pose_scene(const Scene& imported, double seconds, const std::string& label
 // The same for a scene the caller gives up: one without animation is its
 // own pose, moved rather than copied (ten million spheres are a gigabyte).
 Scene pose_scene(Scene&& imported, double seconds, const std::string& label);
+
+// The camera the command line asks for, on a posed scene: the camera options
+// replace their parts of the scene's camera, then the orbit turns it to
+// `frame` (none: a still, which has no orbit). The same for every tool, so
+// frame f has one camera whoever renders or judges it. Throws
+// orb::InputError naming the option that leaves the camera without a view.
+void apply_camera_request(Scene& posed, const RequestSettings& settings, std::optional<long> frame,
+                          const std::string& label);
+
+// Whether the camera differs from frame to frame although the scene does not (--orbit).
+bool camera_moves(const RequestSettings& settings);
 
 // orb:sceneHash and the camera matrices of a posed scene at an image size.
 exr::SceneIdentity scene_identity(const Scene& posed, const std::string& hash, int width, int height);
