@@ -41,7 +41,7 @@ void check_scene_json_input(std::string_view bytes) {
 void check_ply_input(std::string_view bytes) {
     Scene scene;
     try {
-        scene = import_ply(bytes, "fuzz.ply");
+        scene = import_ply(bytes, "fuzz.ply").scene;
     } catch (const InputError&) {
         return;
     }

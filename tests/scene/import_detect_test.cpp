@@ -36,12 +36,32 @@ TEST(ImportScene, EmptyInputIsAClearError) {
     }
 }
 
-TEST(ImportScene, OrbJsonLoads) {
-    const auto result = orb::import_scene(
-        R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,5], "target": [0,0,0] }, "materials": [], "spheres": [] })",
-        "s.json", ".");
+constexpr const char* kNoSpheres =
+    R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,5], "target": [0,0,0] }, "materials": [], "spheres": [] })";
+
+TEST(ImportScene, ASceneWithoutSpheresIsRefusedUnlessAllowed) {
+    try {
+        orb::import_scene(kNoSpheres, "s.json", ".");
+        FAIL() << "expected an error";
+    } catch (const orb::InputError& e) {
+        EXPECT_STREQ(e.what(),
+                     "s.json: no spheres: its \"spheres\" list is empty; --allow-empty accepts a scene without spheres");
+    }
+    orb::ImportOptions options;
+    options.allow_empty = true;
+    const auto result = orb::import_scene(kNoSpheres, "s.json", ".", options);
     EXPECT_TRUE(result.scene.spheres.empty());
     EXPECT_TRUE(result.warnings.empty());
+    EXPECT_EQ(result.notices, std::vector<std::string>{"s.json: no spheres: its \"spheres\" list is empty"});
+}
+
+TEST(ImportScene, AnScnWithoutSpheresIsRefused) {
+    try {
+        orb::import_scene("camera 0 0 9 0 0 0\nsize 0\n", "s.scn", ".");
+        FAIL() << "expected an error";
+    } catch (const orb::InputError& e) {
+        EXPECT_STREQ(e.what(), "s.scn: no spheres: it lists none (size 0); --allow-empty accepts a scene without spheres");
+    }
 }
 
 }  // namespace

@@ -5,8 +5,9 @@
 
 namespace orb::frames {
 
-MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options) {
-    if (!scene_path.empty()) scene_ = request::read_scene(scene_path, label_);
+MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options,
+                             bool allow_empty) {
+    if (!scene_path.empty()) scene_ = request::read_scene(scene_path, label_, allow_empty);
     settings_ = request::resolve_request(options, scene_ ? &scene_->render : nullptr);
 }
 

@@ -1,0 +1,20 @@
+// Formats Orb does not read, recognised so that such an input is refused as
+// what it is ("tri.obj: unsupported format (Wavefront OBJ); ...") rather
+// than with a parse error from the .scn reader, the fallback for text.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace orb::detail {
+
+// The name of a format Orb cannot read that the bytes' magic number or first
+// lines show ("Wavefront OBJ", "STL (binary)"); empty when none matches.
+// Never matches the start of an input Orb reads.
+std::string foreign_format_by_content(std::string_view bytes);
+
+// The name of a format Orb cannot read that `path`'s extension names (any
+// case); empty for other extensions, none, and Orb's own.
+std::string foreign_format_by_extension(const std::string& path);
+
+}  // namespace orb::detail
