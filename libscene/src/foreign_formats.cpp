@@ -143,9 +143,6 @@ bool is_xyz(std::string_view text) {
 }  // namespace
 
 std::string foreign_format_by_content(std::string_view bytes) {
-    // A .scn file: the one text format Orb reads whose start is not a magic number.
-    const std::vector<std::string_view> start = leading_lines(bytes, 1, 0);
-    if (!start.empty() && words_of(start[0])[0] == "camera") return "";
     for (const Magic& magic : kMagics)
         if (bytes.starts_with(magic.bytes)) return magic.name;
     // Binary STL: an 80-byte header, a little-endian triangle count and 50
@@ -156,6 +153,7 @@ std::string foreign_format_by_content(std::string_view bytes) {
     if (bytes.size() >= 6 && bytes.starts_with("\x4D\x4D") && little_endian_u32(bytes, 2) == bytes.size())
         return "3D Studio (.3ds)";
 
+    const std::vector<std::string_view> start = leading_lines(bytes, 1, 0);
     if (start.empty()) return "";
     const std::string_view line = start[0];
     const std::string_view word = words_of(line)[0];
@@ -168,8 +166,9 @@ std::string foreign_format_by_content(std::string_view bytes) {
         if (head.find("<X3D") != std::string_view::npos) return "X3D";
         return "XML";
     }
+    // OFF and its variants; some writers run the counts into the keyword ("OFF8 6 12").
     for (std::string_view off : {"OFF", "COFF", "NOFF", "CNOFF", "STOFF", "STCOFF", "4OFF", "nOFF"})
-        if (word == off) return "OFF";
+        if (word.starts_with(off) && (word.size() == off.size() || is_count(word.substr(off.size())))) return "OFF";
     if (is_pdb(line)) return "Protein Data Bank (PDB)";
     if (word.starts_with("data_")) return "CIF / mmCIF";
     if (line.starts_with("# .PCD") || word == "VERSION") return "PCD (Point Cloud Library)";

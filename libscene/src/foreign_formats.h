@@ -10,7 +10,8 @@ namespace orb::detail {
 
 // The name of a format Orb cannot read that the bytes' magic number or first
 // lines show ("Wavefront OBJ", "STL (binary)"); empty when none matches.
-// Never matches the start of an input Orb reads.
+// Never matches Orb's own magic numbers nor JSON; the caller tells an .scn
+// (text starting with "camera") apart first.
 std::string foreign_format_by_content(std::string_view bytes);
 
 // The name of a format Orb cannot read that `path`'s extension names (any

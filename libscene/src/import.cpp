@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <filesystem>
 
 #include "foreign_formats.h"
@@ -23,6 +24,12 @@ std::string_view skip_bom_and_space(std::string_view bytes) {
     return bytes;
 }
 
+// SmallptGPU's .scn has no magic number, but its first word is always "camera".
+bool starts_like_scn(std::string_view bytes) {
+    const std::string_view text = skip_bom_and_space(bytes);
+    return text.starts_with("camera") && (text.size() == 6 || std::isspace(static_cast<unsigned char>(text[6])));
+}
+
 [[noreturn]] void refuse_unsupported(const std::string& source, const std::string& format) {
     throw InputError(source + ": unsupported format (" + format + "); Orb reads .scn, .gltf/.glb, .ply, .json, .orb");
 }
@@ -34,13 +41,14 @@ std::string_view skip_bom_and_space(std::string_view bytes) {
 // name says it is a format Orb does not read.
 SceneFormat choose_format(std::string_view bytes, const std::string& source) {
     const SceneFormat detected = detect_scene_format(bytes);
-    if (detected == SceneFormat::Scn) {
+    const bool unrecognised = detected == SceneFormat::Scn && !starts_like_scn(bytes);
+    if (unrecognised) {
         const std::string foreign = detail::foreign_format_by_content(bytes);
         if (!foreign.empty()) refuse_unsupported(source, foreign);
     }
     const SceneFormat named = scene_format_from_extension(source);
     if (named != SceneFormat::Unknown) return named;
-    if (detected == SceneFormat::Scn) {
+    if (unrecognised) {
         const std::string foreign = detail::foreign_format_by_extension(source);
         if (!foreign.empty()) refuse_unsupported(source, foreign);
     }
