@@ -136,15 +136,20 @@ public:
         link_parents();
         walk(scene_roots());
         for (int node : order_) add_node_content(node);
+        // Everything after this is a light's stand-in, which shows nothing of the asset.
+        const std::size_t content_spheres = scene_.spheres.size();
         const double diagonal = scene_diagonal();
         for (const auto& [node, light] : lights_) add_light(node, light, diagonal);
         choose_camera();
         report_non_spheres();
         report_scales();
         report_ignored();
-        if (scene_.spheres.empty()) diagnostics_.warn("the scene has no sphere content");
+        if (content_spheres == 0) no_spheres_ = why_no_spheres(scene_.spheres.size());
         return std::move(scene_);
     }
+
+    // Set by run() when nothing in the asset became a sphere: what was left out and why.
+    const std::string& no_spheres() const { return no_spheres_; }
 
 private:
     // ---- structure ----
@@ -297,6 +302,7 @@ private:
         sphere.material = material;
         if (!(sphere.radius > 0) || !std::isfinite(sphere.radius)) {
             diagnostics_.warn(name + ": radius " + std::to_string(sphere.radius) + " after transforms; left out");
+            ++collapsed_spheres_;
             return;
         }
         if (moves_[std::size_t(node)]) {
@@ -394,6 +400,7 @@ private:
             auto position = primitive.attributes.find("POSITION");
             if (position == primitive.attributes.end()) {
                 diagnostics_.warn(what + " has no POSITION; left out");
+                ++primitives_without_position_;
                 continue;
             }
             const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
@@ -508,9 +515,11 @@ private:
         const tinygltf::Mesh& mesh = model_.meshes[std::size_t(mesh_index)];
         const tinygltf::Node& n = model_.nodes[std::size_t(node)];
         const std::string base = !n.name.empty() ? n.name : !mesh.name.empty() ? mesh.name : "node " + std::to_string(node);
-        if (content.has_non_spheres && options_.non_spheres == NonSpherePolicy::Skip)
+        if (content.has_non_spheres && options_.non_spheres == NonSpherePolicy::Skip) {
+            non_sphere_meshes_.emplace(mesh_index, mesh.name.empty() ? "mesh " + std::to_string(mesh_index) : mesh.name);
             non_spheres_.insert((mesh.name.empty() ? "mesh " + std::to_string(mesh_index) : "'" + mesh.name + "'") +
                                 " (" + node_label(model_, node) + ")");
+        }
         const std::vector<Matrix4> instances = instances_of(node);
         std::size_t per_instance = content.spheres.size();
         for (const MeshPoints& points : content.points) per_instance += points.positions.size();
@@ -577,6 +586,7 @@ private:
         const tinygltf::Value& desc = shapes_ext->Get("shapes").Get(*shape);
         const std::string type = desc.Has("type") && desc.Get("type").IsString() ? desc.Get("type").Get<std::string>() : "";
         if (type != "sphere") {
+            non_sphere_shapes_.push_back(type.empty() ? std::string("untyped") : type);
             non_spheres_.insert("implicit " + (type.empty() ? std::string("shape") : type) + " (" +
                                 node_label(model_, node) + ")");
             return;
@@ -744,6 +754,49 @@ private:
         diagnostics_.lossy("not spheres, left out (--non-spheres bound|error to change): " + list);
     }
 
+    // What an asset that gave no sphere of its own left out, and why:
+    // "3 meshes are not spheres (Suzanne, Cube, Cone)".
+    std::string why_no_spheres(std::size_t light_spheres) const {
+        auto counted = [](std::size_t n, const char* one, const char* many) {
+            return std::to_string(n) + " " + (n == 1 ? one : many);
+        };
+        auto some_names = [](const auto& names) {
+            std::string list;
+            std::size_t shown = 0;
+            for (const std::string& name : names) {
+                if (shown++ == 5) return list + ", ...";
+                list += (list.empty() ? "" : ", ") + name;
+            }
+            return list;
+        };
+        std::vector<std::string> reasons;
+        if (!non_sphere_meshes_.empty()) {
+            std::vector<std::string> names;
+            for (const auto& [index, name] : non_sphere_meshes_) names.push_back(name);
+            reasons.push_back(counted(names.size(), "mesh is not a sphere", "meshes are not spheres") + " (" +
+                              some_names(names) + ")");
+        }
+        if (!non_sphere_shapes_.empty())
+            reasons.push_back(counted(non_sphere_shapes_.size(), "implicit shape is not a sphere",
+                                      "implicit shapes are not spheres") + " (" + some_names(non_sphere_shapes_) + ")");
+        if (primitives_without_position_ > 0)
+            reasons.push_back(counted(primitives_without_position_, "primitive has", "primitives have") + " no POSITION");
+        if (collapsed_spheres_ > 0)
+            reasons.push_back(counted(collapsed_spheres_, "sphere has", "spheres have") +
+                              " no size after its node's transforms");
+        if (reasons.empty()) {
+            if (model_.meshes.empty()) reasons.push_back("the asset has no meshes");
+            else
+                reasons.push_back("the imported scene uses none of the asset's " +
+                                  counted(model_.meshes.size(), "mesh", "meshes"));
+        }
+        std::string text;
+        for (const std::string& reason : reasons) text += (text.empty() ? "" : "; ") + reason;
+        if (light_spheres > 0)
+            text += "; only the stand-ins of " + counted(light_spheres, "light", "lights") + " are left";
+        return text;
+    }
+
     void report_ignored() {
         for (int material : materials_.used()) ignored_.add_material(model_.materials[std::size_t(material)]);
         const std::string summary = ignored_.summary(model_);
@@ -772,6 +825,11 @@ private:
     std::vector<std::pair<int, int>> lights_;
     std::vector<std::pair<int, int>> cameras_;
     std::set<std::string> non_spheres_;
+    std::map<int, std::string> non_sphere_meshes_;  // mesh index -> name, for the no-spheres reason
+    std::vector<std::string> non_sphere_shapes_;    // KHR_implicit_shapes types other than sphere
+    std::size_t primitives_without_position_ = 0;
+    std::size_t collapsed_spheres_ = 0;  // radius 0 (or not finite) after transforms
+    std::string no_spheres_;
     std::set<std::string> non_uniform_;
     IgnoredFeatures ignored_;
     std::set<std::size_t> distant_;  // scene_.spheres indices of directional-light emitters
@@ -789,7 +847,9 @@ GltfImportResult import_gltf(std::string_view bytes, const std::string& source, 
     gltf::Diagnostics diagnostics(source, options.strict);
     const tinygltf::Model model = gltf::load_model(bytes, source, base_dir);
     GltfImportResult result;
-    result.scene = gltf::Importer(model, options, diagnostics).run();
+    gltf::Importer importer(model, options, diagnostics);
+    result.scene = importer.run();
+    result.no_spheres = importer.no_spheres();
     if (options.default_light) gltf::add_default_light(result.scene, source, result.notices);
     // The same checks the JSON loader applies: an importer never hands on
     // a scene that could not be written and read back.

@@ -24,8 +24,16 @@ constexpr NamedType kTypeNames[] = {
     {"float64", ScalarType::Float64},
 };
 
+std::string printable(std::string_view line);
+
 [[noreturn]] void fail(const std::string& source, int line, const std::string& message) {
     throw InputError(source + ":" + std::to_string(line) + ": " + message);
+}
+
+// A header problem after unknown lines: one of them may be the cause.
+[[noreturn]] void fail(const std::string& source, int line, const std::string& message, const Header& header) {
+    const std::string note = unknown_lines_note(header);
+    fail(source, line, note.empty() ? message : message + " (" + note + ")");
 }
 
 std::vector<std::string_view> split_words(std::string_view line) {
@@ -50,11 +58,22 @@ ScalarType parse_type(std::string_view word, const std::string& source, int line
 
 std::string printable(std::string_view line) {
     std::string text;
-    for (char c : line.substr(0, 60)) text += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? '?' : c;
-    return line.size() > 60 ? text + "..." : text;
+    for (char c : line.substr(0, 80)) text += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? '?' : c;
+    return line.size() > 80 ? text + "..." : text;
 }
 
 }  // namespace
+
+std::string unknown_lines_note(const Header& header) {
+    const std::vector<UnknownLine>& lines = header.unknown_lines;
+    if (lines.empty()) return "";
+    std::string text = lines.size() == 1 ? "line " : "lines ";
+    for (std::size_t i = 0; i < lines.size() && i < 3; ++i)
+        text += (i ? ", " : "") + std::to_string(lines[i].line) + " (\"" + printable(lines[i].text) + "\")";
+    if (lines.size() > 3) text += " and " + std::to_string(lines.size() - 3) + " more";
+    return text + (lines.size() == 1 ? " has no PLY keyword and was read as a comment"
+                                     : " have no PLY keyword and were read as comments");
+}
 
 std::size_t scalar_size(ScalarType type) {
     switch (type) {
@@ -93,84 +112,84 @@ Header parse_header(std::string_view bytes, const std::string& source) {
     for (int line_number = 1;; ++line_number) {
         const std::size_t end = bytes.find('\n', position);
         if (end == std::string_view::npos)
-            fail(source, line_number, "the header ends without an \"end_header\" line");
+            fail(source, line_number, "the header ends without an \"end_header\" line", header);
         std::string_view line = bytes.substr(position, end - position);
         position = end + 1;
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // files written on Windows
         if (line.find('\0') != std::string_view::npos)
-            fail(source, line_number, "a NUL byte in the header (is the file truncated or not PLY?)");
+            fail(source, line_number, "a NUL byte in the header (is the file truncated or not PLY?)", header);
 
         if (line_number == 1) {
             if (line != "ply") fail(source, 1, "expected the magic line \"ply\", got \"" + printable(line) + "\"");
             continue;
         }
         const std::vector<std::string_view> words = split_words(line);
-        if (words.empty()) fail(source, line_number, "an empty header line");
-        const std::string_view keyword = words[0];
+        // A blank line has no keyword either: read as a comment, like any line without one.
+        const std::string_view keyword = words.empty() ? std::string_view{} : words[0];
 
         if (keyword == "comment" || keyword == "obj_info") continue;
         if (keyword == "end_header") {
-            if (words.size() != 1) fail(source, line_number, "\"end_header\" takes nothing after it");
-            if (!have_format) fail(source, line_number, "the header has no \"format\" line");
+            if (words.size() != 1) fail(source, line_number, "\"end_header\" takes nothing after it", header);
+            if (!have_format) fail(source, line_number, "the header has no \"format\" line", header);
             header.data_offset = position;
             return header;
         }
         if (keyword == "format") {
-            if (have_format) fail(source, line_number, "a second \"format\" line");
-            if (words.size() != 3) fail(source, line_number, "expected \"format ENCODING 1.0\"");
+            if (have_format) fail(source, line_number, "a second \"format\" line", header);
+            if (words.size() != 3) fail(source, line_number, "expected \"format ENCODING 1.0\"", header);
             if (words[1] == "ascii") header.encoding = Encoding::Ascii;
             else if (words[1] == "binary_little_endian") header.encoding = Encoding::BinaryLittleEndian;
             else if (words[1] == "binary_big_endian") header.encoding = Encoding::BinaryBigEndian;
             else
                 fail(source, line_number,
                      "unknown encoding '" + std::string(words[1]) +
-                         "' (expected ascii, binary_little_endian or binary_big_endian)");
-            if (words[2] != "1.0") fail(source, line_number, "unsupported PLY version '" + std::string(words[2]) + "' (expected 1.0)");
+                         "' (expected ascii, binary_little_endian or binary_big_endian)", header);
+            if (words[2] != "1.0") fail(source, line_number, "unsupported PLY version '" + std::string(words[2]) + "' (expected 1.0)", header);
             have_format = true;
             continue;
         }
         if (keyword == "element") {
-            if (words.size() != 3) fail(source, line_number, "expected \"element NAME COUNT\"");
+            if (words.size() != 3) fail(source, line_number, "expected \"element NAME COUNT\"", header);
             Element element;
             element.name = std::string(words[1]);
             element.line = line_number;
             const std::string_view count = words[2];
             const auto [rest, error] = std::from_chars(count.data(), count.data() + count.size(), element.count);
             if (error == std::errc::result_out_of_range)
-                fail(source, line_number, "element '" + element.name + "' count " + std::string(count) + " overflows");
+                fail(source, line_number, "element '" + element.name + "' count " + std::string(count) + " overflows", header);
             if (error != std::errc() || rest != count.data() + count.size())
                 fail(source, line_number,
-                     "element '" + element.name + "' count must be a non-negative integer, got '" + std::string(count) + "'");
+                     "element '" + element.name + "' count must be a non-negative integer, got '" + std::string(count) + "'", header);
             for (const Element& other : header.elements)
-                if (other.name == element.name) fail(source, line_number, "a second element named '" + element.name + "'");
+                if (other.name == element.name) fail(source, line_number, "a second element named '" + element.name + "'", header);
             header.elements.push_back(std::move(element));
             continue;
         }
         if (keyword == "property") {
-            if (header.elements.empty()) fail(source, line_number, "a property before any \"element\" line");
+            if (header.elements.empty()) fail(source, line_number, "a property before any \"element\" line", header);
             Property property;
             property.line = line_number;
             if (words.size() >= 2 && words[1] == "list") {
-                if (words.size() != 5) fail(source, line_number, "expected \"property list COUNT_TYPE ITEM_TYPE NAME\"");
+                if (words.size() != 5) fail(source, line_number, "expected \"property list COUNT_TYPE ITEM_TYPE NAME\"", header);
                 property.is_list = true;
                 property.count_type = parse_type(words[2], source, line_number);
                 if (!is_integer(property.count_type))
-                    fail(source, line_number, "a list count type must be an integer type, got '" + std::string(words[2]) + "'");
+                    fail(source, line_number, "a list count type must be an integer type, got '" + std::string(words[2]) + "'", header);
                 property.type = parse_type(words[3], source, line_number);
                 property.name = std::string(words[4]);
             } else {
-                if (words.size() != 3) fail(source, line_number, "expected \"property TYPE NAME\"");
+                if (words.size() != 3) fail(source, line_number, "expected \"property TYPE NAME\"", header);
                 property.type = parse_type(words[1], source, line_number);
                 property.name = std::string(words[2]);
             }
             Element& element = header.elements.back();
             for (const Property& other : element.properties)
                 if (other.name == property.name)
-                    fail(source, line_number, "element '" + element.name + "' has a second property '" + property.name + "'");
+                    fail(source, line_number, "element '" + element.name + "' has a second property '" + property.name + "'", header);
             element.properties.push_back(std::move(property));
             continue;
         }
-        fail(source, line_number, "unknown header line \"" + printable(line) + "\"");
+        header.unknown_lines.push_back({line_number, std::string(line)});
     }
 }
 

@@ -44,6 +44,13 @@ public:
         position_ += count * scalar_size(type);
     }
 
+    // Bytes not read yet; for ASCII data, those after the next white space.
+    std::size_t remaining() {
+        if (encoding_ == Encoding::Ascii)
+            while (position_ < data_.size() && is_space(data_[position_])) ++position_;
+        return data_.size() - position_;
+    }
+
 private:
     template <typename T>
     T load() {
@@ -203,6 +210,13 @@ VertexLayout vertex_layout(const Element& vertex, const std::string& source) {
     return layout;
 }
 
+std::vector<std::string> unused_properties(const Element& vertex, const VertexLayout& layout) {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < vertex.properties.size(); ++i)
+        if (layout.roles[i] == Role::Skip) names.push_back(vertex.properties[i].name);
+    return names;
+}
+
 // Refuses counts the data cannot hold before anything is allocated: each
 // binary row takes at least its fixed-size part, each ASCII value one byte.
 void check_counts_fit(const Header& header, std::size_t data_size, const std::string& source) {
@@ -274,16 +288,18 @@ VertexColumns read_vertices(std::string_view bytes, const Header& header, const 
     const Element* vertex = nullptr;
     for (const Element& element : header.elements)
         if (element.name == "vertex") vertex = &element;
-    if (vertex == nullptr) throw InputError(source + ": the header declares no 'vertex' element");
-    const VertexLayout layout = vertex_layout(*vertex, source);
+    const VertexLayout layout = vertex ? vertex_layout(*vertex, source) : VertexLayout{};
     const std::string_view data = bytes.substr(header.data_offset);
     check_counts_fit(header, data.size(), source);
 
     VertexColumns columns;
-    // The count check above bounds these by the file size.
-    columns.centers.reserve(vertex->count);
-    if (layout.has_radius) columns.radii.reserve(vertex->count);
-    if (layout.has_color) columns.colors.reserve(vertex->count);
+    if (vertex) {
+        // The count check above bounds these by the file size.
+        columns.centers.reserve(vertex->count);
+        if (layout.has_radius) columns.radii.reserve(vertex->count);
+        if (layout.has_color) columns.colors.reserve(vertex->count);
+        columns.unused_properties = unused_properties(*vertex, layout);
+    }
 
     DataCursor cursor(data, header.encoding);
     for (const Element& element : header.elements) {
@@ -302,6 +318,7 @@ VertexColumns read_vertices(std::string_view bytes, const Header& header, const 
             throw InputError(where + ": " + problem.message);
         }
     }
+    columns.trailing_bytes = cursor.remaining();
     return columns;
 }
 

@@ -81,6 +81,7 @@ TEST_F(FramesCli, UsageErrors) {
         {{"1-3", "--missing"}, "--missing needs a PATTERN"},
         {{"1-3", "b.%04d.exr", "--spp", "4"}, "the render's options (--spp, --width, --passes, ...) go with --missing"},
         {{"1-3", "b.%04d.exr", "--scene", "s.json"}, "go with --missing"},
+        {{"1-3", "b.%04d.exr", "--allow-empty"}, "go with --missing"},
         {{"1-3", "b.%04d.exr", "--missing", "--passes", "beauty,bogus"}, "--passes: "},
         {{"1-3", "b.%04d.exr", "--missing", "--sample-range", "0:2", "--spp", "2"}, "drop --spp"},
         {{"1-3", "b.%04d.exr", "--missing", "--mode", "local"}, "--mode"},
@@ -96,6 +97,20 @@ TEST_F(FramesCli, UsageErrors) {
     const ProcessResult empty = frames({"-"});  // stdin is /dev/null
     EXPECT_EQ(empty.exit_code, 2);
     EXPECT_THAT(empty.err, HasSubstr("no frames on stdin"));
+}
+
+TEST_F(FramesCli, MissingRefusesASceneWithoutSpheresAsOrbRenderDoes) {
+    const std::string sky = path("sky.json");
+    std::ofstream(sky) << R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,5], "target": [0,0,0] },
+        "environment": { "color": [1, 1, 1] }, "materials": [], "spheres": [] })";
+    const ProcessResult refused = frames({"1-2", path("f.%04d.exr"), "--missing", "--scene", sky});
+    EXPECT_EQ(refused.exit_code, 1);
+    EXPECT_EQ(refused.err, "orb-frames: error: " + sky +
+                               ": no spheres: its \"spheres\" list is empty; --allow-empty accepts a scene without spheres\n");
+    EXPECT_EQ(refused.out, "");
+    const ProcessResult allowed = frames({"1-2", path("f.%04d.exr"), "--missing", "--scene", sky, "--allow-empty"});
+    EXPECT_EQ(allowed.exit_code, 0) << allowed.err;
+    EXPECT_EQ(allowed.out, "1\n2\n");
 }
 
 TEST_F(FramesCli, MissingNamesFramesThatAreNotCompleteRenders) {

@@ -41,7 +41,11 @@ void check_scene_json_input(std::string_view bytes) {
 void check_ply_input(std::string_view bytes) {
     Scene scene;
     try {
-        scene = import_ply(bytes, "fuzz.ply");
+        PlyImportResult result = import_ply(bytes, "fuzz.ply");
+        // A scene without spheres always says why (import_scene refuses it with that reason).
+        if (result.scene.spheres.empty() == result.no_spheres.empty())
+            throw std::logic_error("import_ply: no_spheres must be set exactly when the scene has no sphere");
+        scene = std::move(result.scene);
     } catch (const InputError&) {
         return;
     }

@@ -20,7 +20,8 @@ void check_scn_input(std::string_view bytes);
 void check_scene_json_input(std::string_view bytes);
 
 // import_ply either rejects the bytes or returns a valid scene with
-// load(write(scene)) == scene in Orb JSON.
+// load(write(scene)) == scene in Orb JSON, and says why exactly when it has
+// no sphere.
 void check_ply_input(std::string_view bytes);
 
 // load_scene_binary either rejects the bytes or returns a scene that writes

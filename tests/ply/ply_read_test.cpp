@@ -41,21 +41,21 @@ std::vector<PlyTestElement> rich_cloud() {
 }
 
 TEST(PlyRead, AsciiAndBothBinaryByteOrdersGiveTheSameScene) {
-    const Scene ascii = import_ply(make_ply("ascii", rich_cloud()), "cloud.ply");
+    const Scene ascii = import_ply(make_ply("ascii", rich_cloud()), "cloud.ply").scene;
     ASSERT_EQ(ascii.spheres.size(), 3u + 2u);  // three points, two default lights
     EXPECT_EQ(ascii.spheres[1].center, (Vec3{1, 2, 3}));
     EXPECT_EQ(ascii.spheres[2].center, (Vec3{-4, 5.5, -6.25}));
     EXPECT_EQ(ascii.spheres[0].radius, 0.5);
     EXPECT_EQ(ascii.spheres[1].radius, 0.25);
     for (const std::string& encoding : {std::string("binary_little_endian"), std::string("binary_big_endian")})
-        EXPECT_EQ(import_ply(make_ply(encoding, rich_cloud()), "cloud.ply"), ascii) << encoding;
+        EXPECT_EQ(import_ply(make_ply(encoding, rich_cloud()), "cloud.ply").scene, ascii) << encoding;
 }
 
 TEST(PlyRead, ContentIsRecognisedAsPly) {
     for (const std::string& encoding : kEncodings) {
         const std::string bytes = make_ply(encoding, rich_cloud());
         EXPECT_EQ(detect_scene_format(bytes), SceneFormat::Ply);
-        EXPECT_EQ(import_scene(bytes, "cloud.ply", ".").scene, import_ply(bytes, "cloud.ply"));
+        EXPECT_EQ(import_scene(bytes, "cloud.ply", ".").scene, import_ply(bytes, "cloud.ply").scene);
     }
     EXPECT_EQ(scene_format_from_name("ply"), SceneFormat::Ply);
 }
@@ -64,7 +64,7 @@ TEST(PlyRead, WindowsLineEndingsInTheHeader) {
     std::string bytes = make_ply("ascii", rich_cloud());
     std::string crlf;
     for (char c : bytes) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
-    EXPECT_EQ(import_ply(crlf, "cloud.ply"), import_ply(bytes, "cloud.ply"));
+    EXPECT_EQ(import_ply(crlf, "cloud.ply").scene, import_ply(bytes, "cloud.ply").scene);
 }
 
 TEST(PlyRead, EveryScalarTypeAndAliasReadsItsValues) {
@@ -81,7 +81,7 @@ TEST(PlyRead, EveryScalarTypeAndAliasReadsItsValues) {
             const PlyTestElement vertex{"vertex", {{type, "x", ""}, {type, "y", ""}, {type, "z", ""}}, {values}};
             // A radius as large as the largest value keeps the automatic camera placeable
             // (and within the scene's float range, 1e18).
-            const Scene scene = import_ply(make_ply(encoding, {vertex}), "types.ply", {.radius = 1e15});
+            const Scene scene = import_ply(make_ply(encoding, {vertex}), "types.ply", {.radius = 1e15}).scene;
             Vec3 expected{values[0], values[1], values[2]};
             if (type == "float" || type == "float32")
                 for (double& v : expected) v = static_cast<float>(v);
@@ -104,13 +104,13 @@ TEST(PlyRead, UcharAndFloatColoursMeanTheSame) {
                                  {"double", "red", ""}, {"double", "green", ""}, {"double", "blue", ""}},
                                 {{0, 0, 0, 1, 128 / 255.0, 0}, {1, 0, 0, 10 / 255.0, 20 / 255.0, 30 / 255.0}}};
     for (const std::string& encoding : kEncodings) {
-        const Scene from_bytes = import_ply(make_ply(encoding, {bytes}), "c.ply");
-        const Scene from_floats = import_ply(make_ply(encoding, {floats}), "c.ply");
+        const Scene from_bytes = import_ply(make_ply(encoding, {bytes}), "c.ply").scene;
+        const Scene from_floats = import_ply(make_ply(encoding, {floats}), "c.ply").scene;
         EXPECT_EQ(point_color(from_bytes, 0), point_color(from_floats, 0)) << encoding;
         EXPECT_EQ(point_color(from_bytes, 1), point_color(from_floats, 1)) << encoding;
     }
     // sRGB-encoded display values become linear reflectance: 255 -> 1, 128 -> ~0.2158, 0 -> 0.
-    const Vec3 c = point_color(import_ply(make_ply("ascii", {bytes}), "c.ply"), 0);
+    const Vec3 c = point_color(import_ply(make_ply("ascii", {bytes}), "c.ply").scene, 0);
     EXPECT_DOUBLE_EQ(c[0], 1.0);
     EXPECT_NEAR(c[1], 0.2158605, 1e-6);
     EXPECT_EQ(c[2], 0.0);
@@ -127,21 +127,21 @@ TEST(PlyRead, OtherColourNamesAndSixteenBitColours) {
                                   {"ushort", "diffuse_blue", ""}},
                                  {{0, 0, 0, 65535, 0, 65535}}};
     const Vec3 magenta{1, 0, 1};
-    EXPECT_EQ(point_color(import_ply(make_ply("ascii", {short_names}), "c.ply"), 0), magenta);
-    EXPECT_EQ(point_color(import_ply(make_ply("binary_big_endian", {diffuse}), "c.ply"), 0), magenta);
+    EXPECT_EQ(point_color(import_ply(make_ply("ascii", {short_names}), "c.ply").scene, 0), magenta);
+    EXPECT_EQ(point_color(import_ply(make_ply("binary_big_endian", {diffuse}), "c.ply").scene, 0), magenta);
 }
 
 TEST(PlyRead, ScaleStandsForRadius) {
     const PlyTestElement vertex{"vertex", {{"float", "x", ""}, {"float", "y", ""}, {"float", "z", ""}, {"double", "scale", ""}},
                                 {{0, 0, 0, 0.125}}};
-    EXPECT_EQ(import_ply(make_ply("binary_little_endian", {vertex}), "s.ply").spheres.at(0).radius, 0.125);
+    EXPECT_EQ(import_ply(make_ply("binary_little_endian", {vertex}), "s.ply").scene.spheres.at(0).radius, 0.125);
 }
 
 TEST(PlyRead, ElementsWithoutPropertiesAndTrailingDataAreFine) {
     std::string bytes =
         "ply\nformat ascii 1.0\nobj_info from a scanner\nelement empty 5\nelement vertex 2\nproperty float x\n"
         "property float y\nproperty float z\nend_header\n1 2 3\n\t4 5 6 7 8\n";
-    const Scene scene = import_ply(bytes, "t.ply", {.radius = 1});
+    const Scene scene = import_ply(bytes, "t.ply", {.radius = 1}).scene;
     ASSERT_EQ(scene.spheres.size(), 4u);
     EXPECT_EQ(scene.spheres[1].center, (Vec3{4, 5, 6}));
 }

@@ -38,7 +38,7 @@ TEST(PlyScene, EqualColoursShareOneMaterial) {
                            {"uchar", "red", ""}, {"uchar", "green", ""}, {"uchar", "blue", ""}},
                           {}};
     for (int i = 0; i < 5000; ++i) vertex.rows.push_back({double(i % 71), double(i % 13), double(i / 71), double(i % 256), 7, 9});
-    const Scene scene = import_ply(make_ply("binary_little_endian", {vertex}), "c.ply");
+    const Scene scene = import_ply(make_ply("binary_little_endian", {vertex}), "c.ply").scene;
     EXPECT_EQ(scene.materials.size(), 256u + 2u);  // 256 colours and the two lights
     for (int i = 0; i < 5000; ++i) {
         const Sphere& s = scene.spheres[static_cast<std::size_t>(i)];
@@ -47,7 +47,7 @@ TEST(PlyScene, EqualColoursShareOneMaterial) {
 }
 
 TEST(PlyScene, PointsWithoutColourAreTheDefaultGrey) {
-    const Scene scene = import_ply(make_ply("ascii", {xyz_cloud({{0, 0, 0}, {1, 1, 1}})}), "g.ply");
+    const Scene scene = import_ply(make_ply("ascii", {xyz_cloud({{0, 0, 0}, {1, 1, 1}})}), "g.ply").scene;
     EXPECT_EQ(scene.materials.at(scene.spheres[0].material).color, (Vec3{0.8, 0.8, 0.8}));
     EXPECT_EQ(scene.spheres[0].material, scene.spheres[1].material);
     EXPECT_EQ(emissive_count(scene), 2u);
@@ -60,11 +60,11 @@ TEST(PlyScene, RadiusOptionAndTheDerivedDefault) {
     std::vector<Vec3> grid;
     for (int i = 0; i < 1000; ++i) grid.push_back({double(i % 10), double(i / 10 % 10), double(i / 100)});
     const std::string bytes = make_ply("binary_little_endian", {xyz_cloud(grid)});
-    const double derived = import_ply(bytes, "grid.ply").spheres[0].radius;
+    const double derived = import_ply(bytes, "grid.ply").scene.spheres[0].radius;
     EXPECT_NEAR(derived, 0.45, 1e-12);  // diagonal 9*sqrt(3) over sqrt(3)*cbrt(1000) = 0.9, halved
-    EXPECT_EQ(import_ply(bytes, "grid.ply", {.radius = 0.125}).spheres[999].radius, 0.125);
+    EXPECT_EQ(import_ply(bytes, "grid.ply", {.radius = 0.125}).scene.spheres[999].radius, 0.125);
     // A lone point has no spacing: radius 1.
-    EXPECT_EQ(import_ply(make_ply("ascii", {xyz_cloud({{5, 5, 5}})}), "one.ply").spheres[0].radius, 1.0);
+    EXPECT_EQ(import_ply(make_ply("ascii", {xyz_cloud({{5, 5, 5}})}), "one.ply").scene.spheres[0].radius, 1.0);
 }
 
 // Signed distances of a sphere to the four side planes of the camera's view
@@ -98,7 +98,7 @@ TEST(PlyScene, TheAutomaticCameraSeesTheCloudButNotItsStrayPointsNorTheLights) {
     const Vec3 strays[] = {{1600, -40, 80}, {40, 10, -7000}};  // far from the cloud: left out of the framing
     for (const Vec3& stray : strays) points.push_back(stray);
     for (const std::string& encoding : {std::string("ascii"), std::string("binary_big_endian")}) {
-        const Scene scene = import_ply(make_ply(encoding, {xyz_cloud(points)}), "cloud.ply", {.radius = 2});
+        const Scene scene = import_ply(make_ply(encoding, {xyz_cloud(points)}), "cloud.ply", {.radius = 2}).scene;
         double closest = 1e300;
         for (const Sphere& s : scene.spheres) {
             const bool light = scene.materials[s.material].emission != Vec3{0, 0, 0};
@@ -135,7 +135,7 @@ TEST(PlyScene, TheAutomaticCameraSeesTheCloudButNotItsStrayPointsNorTheLights) {
 TEST(PlyScene, TheAutomaticCameraIsTheSharedFramingFromThirtyDegreesUp) {
     std::vector<Vec3> points;
     for (int i = 0; i < 300; ++i) points.push_back({std::sin(i * 0.7) * 4, std::cos(i * 0.3), std::sin(i * 1.1)});
-    const Scene scene = import_ply(make_ply("ascii", {xyz_cloud(points)}), "cloud.ply", {.radius = 0.05});
+    const Scene scene = import_ply(make_ply("ascii", {xyz_cloud(points)}), "cloud.ply", {.radius = 0.05}).scene;
     std::vector<Sphere> cloud(scene.spheres.begin(), scene.spheres.begin() + 300);
     const FramingView view{{0, 0.5, std::sqrt(0.75)}, {0, 1, 0}, scene.camera.vfov_deg, scene.render.width,
                            scene.render.height};

@@ -23,11 +23,14 @@ struct Settings {
     bool paths = false;
     bool missing = false;
     std::string scene;
+    bool allow_empty = false;  // --scene may have no spheres
     orb::request::RequestOptions render;  // the render the frames are asked to hold
 };
 
 // Whether any option of the render asked for was given.
-bool any_render_option(const Settings& s) { return !s.scene.empty() || s.render != orb::request::RequestOptions{}; }
+bool any_render_option(const Settings& s) {
+    return !s.scene.empty() || s.allow_empty || s.render != orb::request::RequestOptions{};
+}
 
 // "-" reads the list from stdin, where newlines and spaces separate items as
 // commas do, so the output of one orb-frames can feed another.
@@ -84,6 +87,7 @@ int main(int argc, char** argv) {
                            "With --missing: the scene orb-render renders, so that its content, camera and render "
                            "block are compared too")
                 ->option_text("SCENE");
+            app.add_flag("--allow-empty", s.allow_empty, "With --scene: accept a scene without spheres, as orb-render does");
             orb::request::add_request_options(app, s.render);
             app.add_option("--samples", samples, "Older name of --sample-range")->option_text("START:COUNT");
             app.footer(
@@ -114,7 +118,7 @@ int main(int argc, char** argv) {
             const std::string frames = list_text(s.list);
             const orb::cli::FrameSpec spec = orb::cli::parse_frame_spec(frames);
             std::optional<orb::frames::MissingFrames> judge;
-            if (s.missing) judge.emplace(s.scene, s.render, frames);
+            if (s.missing) judge.emplace(s.scene, s.render, frames, s.allow_empty);
             std::string out;
             for (int frame : spec) {
                 const std::string path = s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, frame);

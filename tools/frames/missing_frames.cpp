@@ -6,11 +6,11 @@
 namespace orb::frames {
 
 MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options,
-                             const std::string& frames) {
+                             const std::string& frames, bool allow_empty) {
     // The orbit is checked before a scene of millions of spheres is read.
     settings_ = request::resolve_request(options, nullptr, &frames, true);
     if (scene_path.empty()) return;
-    scene_ = request::read_scene(scene_path, label_);
+    scene_ = request::read_scene(scene_path, label_, allow_empty);
     settings_ = request::resolve_request(options, &scene_->render, &frames, true);
 }
 

@@ -16,10 +16,12 @@ namespace orb::frames {
 class MissingFrames {
 public:
     // Reads `scene_path` as orb-render does when it is not empty (throws
-    // orb::InputError for a bad scene); without it the scene, its camera and
-    // what its render block would fill in are not compared. `frames` is the
-    // frame list judged: the range of --orbit unless --orbit-frames gives it.
-    MissingFrames(const std::string& scene_path, const request::RequestOptions& options, const std::string& frames);
+    // orb::InputError for a bad scene, and for one without spheres unless
+    // `allow_empty`); without it the scene, its camera and what its render
+    // block would fill in are not compared. `frames` is the frame list
+    // judged: the range of --orbit unless --orbit-frames gives it.
+    MissingFrames(const std::string& scene_path, const request::RequestOptions& options, const std::string& frames,
+                  bool allow_empty);
 
     exr::OutputJudgement judge(const std::string& path, long frame);
 

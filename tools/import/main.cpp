@@ -43,6 +43,10 @@ constexpr const char* kExamples = R"(Examples:
   cat scene.txt | orb-import - --from scn            read stdin, say what it is
   orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
 
+Orb reads no other format: an OBJ, STL, FBX, PDB, ... input is refused as such.
+A scene that ends with no sphere (a glTF asset of triangle meshes) is an error
+naming what was left out and why, unless --allow-empty.
+
 Exit status: 0 success, 1 bad input or failed job (no output file is left behind),
 2 usage error. Details: docs/orb-import.md)";
 
@@ -80,14 +84,8 @@ int run(Arguments& args) {
     using orb::import_tool::OutputFormat;
     using orb::import_tool::rebase_environment_map;
     const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
+    // Without --from, the content (and the name's extension) says the format (orb::import_scene).
     if (!args.from.empty()) args.import_options.format = orb::scene_format_from_name(args.from);
-    // A .gltf/.glb (.ply) name means glTF (PLY) even when the content is too broken to recognise,
-    // so that the glTF reader (not the .scn one) explains what is wrong.
-    const std::string extension = std::filesystem::path(args.input).extension().string();
-    if (args.from.empty() && (extension == ".gltf" || extension == ".glb"))
-        args.import_options.format = orb::SceneFormat::GltfJson;
-    if (args.from.empty() && extension == ".ply") args.import_options.format = orb::SceneFormat::Ply;
-    if (args.from.empty() && extension == ".orb") args.import_options.format = orb::SceneFormat::OrbBinary;
     args.import_options.gltf.strict = args.strict;
     // A chosen environment lights the scene: no default light for a glTF asset.
     if (!args.environment.value.empty()) args.import_options.gltf.default_light = false;
@@ -150,6 +148,8 @@ int main(int argc, char** argv) {
                 ->option_text("orb|orb-binary|scn");
             app.add_flag("--strict", args.strict,
                          "Fail (exit 1, no output) instead of warning when information would be lost");
+            app.add_flag("--allow-empty", args.import_options.allow_empty,
+                         "Write a scene without spheres instead of failing (a glTF asset of triangle meshes)");
             orb::import_tool::add_gltf_options(app, args.import_options.gltf);
             orb::import_tool::add_ply_options(app, args.import_options.ply);
             orb::import_tool::add_environment_options(app, args.environment);

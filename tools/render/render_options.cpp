@@ -53,6 +53,7 @@ Details: docs/orb-render.md)";
 void add_render_options(CLI::App& app, RenderOptions& o) {
     const CLI::Validator& seconds = request::positive_number();
     app.add_option("SCENE", o.scene, "Scene file (Orb JSON or binary .orb, .scn, glTF, PLY) or - for stdin");
+    app.add_flag("--allow-empty", o.allow_empty, "Render a scene without spheres instead of failing");
     app.add_option("-o,--output", o.output, "Output EXR, or - for stdout");
     app.add_flag("--list-devices", o.list_devices, "List OpenCL devices and exit");
     app.add_option("--device", o.device, "Device index or name substring (default: fastest GPU, else CPU)");

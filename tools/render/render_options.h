@@ -17,6 +17,7 @@ namespace orb::render_cli {
 // --passes, --fps, ...) are orb::request's, shared with orb-frames.
 struct RenderOptions : request::RequestOptions {
     std::string scene;   // path or "-"
+    bool allow_empty = false;  // --allow-empty: render a scene without spheres
     std::string output;  // path or "-"
     bool list_devices = false;
     std::string device;

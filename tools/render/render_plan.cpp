@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "orb/cli/camera_options.h"
+#include "frame_warnings.h"
+#include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
 #include "orb/request/scene_input.h"
 #include "orb/scene/error.h"
@@ -99,7 +101,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 
 RenderPlan make_render_plan(const RenderOptions& o) {
     RenderPlan plan;
-    Scene imported = request::read_scene(o.scene, plan.scene_label);
+    Scene imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty);
 
     plan.config.device = o.device;
     plan.config.kernel_dir = o.kernel_dir;
@@ -125,6 +127,9 @@ RenderPlan make_render_plan(const RenderOptions& o) {
     set_passes(plan, s.passes);
     if (renders_frames(o)) {
         plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
+        for (const std::string& warning :
+             frame_warnings(imported, plan.frames, s.fps, request::camera_moves(s), plan.scene_label))
+            cli::warning(warning);
         plan.imported = std::move(imported);
         // Posed lazily: a run that finds every frame finished poses none.
         return plan;

@@ -15,12 +15,14 @@ namespace orb::request {
 
 namespace fs = std::filesystem;
 
-Scene read_scene(const std::string& path, std::string& label) {
+Scene read_scene(const std::string& path, std::string& label, bool allow_empty) {
     label = cli::is_stdio(path) ? "<stdin>" : path;
     const std::string bytes = cli::read_input(path);
     const std::string base_dir =
         cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
-    ImportResult imported = import_scene(bytes, label, base_dir);
+    ImportOptions options;
+    options.allow_empty = allow_empty;
+    ImportResult imported = import_scene(bytes, label, base_dir, options);
     for (const std::string& message : imported.warnings) cli::warning(message);
     for (const std::string& message : imported.notices) cli::warning(message);
     // The map's texels join the scene before it is hashed (they are part of its identity) and rendered.

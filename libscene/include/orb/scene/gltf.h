@@ -58,6 +58,10 @@ struct GltfImportResult {
     Scene scene;
     std::vector<std::string> warnings;  // what the import left out or changed (fatal under --strict)
     std::vector<std::string> notices;   // what it added that the asset does not say (the default light); never fatal
+    // Set when nothing in the asset became a sphere (the stand-ins of its
+    // lights aside): what was left out and why, e.g. "1 mesh is not a sphere
+    // (Suzanne)". import_scene refuses such a scene unless allowed.
+    std::string no_spheres;
 };
 
 // `source` names the input in messages; external buffers are read only from

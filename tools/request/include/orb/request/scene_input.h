@@ -14,8 +14,9 @@
 namespace orb::request {
 
 // Reads and imports `path` ("-" for stdin); `label` becomes the path, or
-// <stdin>. Throws orb::InputError for bad input.
-Scene read_scene(const std::string& path, std::string& label);
+// <stdin>. Throws orb::InputError for bad input, and for a scene without
+// spheres unless `allow_empty` (--allow-empty).
+Scene read_scene(const std::string& path, std::string& label, bool allow_empty);
 
 // The scene at `seconds`, checked against the scene limits again when it is
 // animated (posing multiplies scales and adds offsets). Throws orb::InputError.
