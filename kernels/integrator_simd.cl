@@ -510,9 +510,16 @@ SIMD_FN void v_begin_camera_paths(const CameraParams* cam, vint x, int y, int wi
     const vfloat sy = (float)y + jy;
     const vfloat ndc_x = 2.0f * sx / (float)width - 1.0f;
     const vfloat ndc_y = 1.0f - 2.0f * sy / (float)height;
-    const v3 through = v3_add(v3_add(v3_splat(cam->forward.xyz), v3_scale(v3_splat(cam->right.xyz), ndc_x * cam->half_width)),
-                              v3_scale(v3_splat(cam->up.xyz), ndc_y * cam->half_height));
-    v3 o = v3_splat(cam->origin.xyz), d;
+    // camera_ray's `base` is `o` here, its `through` the same, summed in the same order (kernels/camera.cl).
+    v3 o = v3_splat(cam->origin.xyz), d, through;
+    if (cam->projection == CameraProjection_Orthographic) {
+        o = v3_add(o, v3_add(v3_scale(v3_splat(cam->right.xyz), ndc_x * cam->half_width),
+                             v3_scale(v3_splat(cam->up.xyz), ndc_y * cam->half_height)));
+        through = v3_splat(cam->forward.xyz);
+    } else {
+        through = v3_add(v3_add(v3_splat(cam->forward.xyz), v3_scale(v3_splat(cam->right.xyz), ndc_x * cam->half_width)),
+                         v3_scale(v3_splat(cam->up.xyz), ndc_y * cam->half_height));
+    }
     if (cam->lens_radius > 0.0f) {
         vfloat lu, lv;
         v_rand_pair(&r, c, 1u, lanes, &lu, &lv);

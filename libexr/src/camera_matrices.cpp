@@ -77,6 +77,20 @@ Matrix44 world_to_camera(const Camera& camera) { return to_float(world_to_camera
 
 Matrix44 world_to_ndc(const Camera& camera, int width, int height) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
+    if (camera.orthographic_height > 0) {
+        const double half_v = camera.orthographic_height / 2;
+        const double half_h = half_v * width / height;
+        // Affine: camera (x, y, z) -> (X, Y, Z, 1) with X = 0.5 + 0.5 x/half_h
+        // and Y = 0.5 - 0.5 y/half_v (y down); Z = z, the depth along the view.
+        Matrix44d projection{};
+        projection[0][0] = 0.5 / half_h;
+        projection[1][1] = -0.5 / half_v;
+        projection[2][2] = 1.0;
+        projection[3][0] = 0.5;
+        projection[3][1] = 0.5;
+        projection[3][3] = 1.0;
+        return to_float(multiply(world_to_camera_d(camera), projection));
+    }
     constexpr double kPi = 3.14159265358979323846;
     const double tan_half_v = std::tan(camera.vfov_deg * kPi / 360.0);
     const double tan_half_h = tan_half_v * width / height;
@@ -91,6 +105,12 @@ Matrix44 world_to_ndc(const Camera& camera, int width, int height) {
     projection[2][3] = 1.0;
     projection[3][2] = 1.0;
     return to_float(multiply(world_to_camera_d(camera), projection));
+}
+
+bool is_orthographic(const Matrix44& world_to_ndc) {
+    // The W column: (0, 0, 0, 1) exactly for the affine matrix above; the
+    // view direction (a unit vector) in the perspective one.
+    return world_to_ndc[0][3] == 0 && world_to_ndc[1][3] == 0 && world_to_ndc[2][3] == 0 && world_to_ndc[3][3] == 1;
 }
 
 }  // namespace orb::exr

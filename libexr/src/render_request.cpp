@@ -1,5 +1,7 @@
 #include "orb/exr/render_request.h"
 
+#include "orb/exr/camera_matrices.h"
+
 #include <sstream>
 
 namespace orb::exr {
@@ -38,6 +40,10 @@ std::string mismatch(const ExrFilmSummary& file, const RenderRequest& r) {
     if (r.scene) {
         const SceneIdentity now = r.scene();
         // The camera is part of the scene, so a moved camera changes the hash too; it is named first.
+        if (is_orthographic(now.world_to_ndc) != is_orthographic(m.world_to_ndc))
+            return is_orthographic(m.world_to_ndc)
+                       ? "rendered from another camera (orthographic, a perspective one asked)"
+                       : "rendered from another camera (perspective, an orthographic one asked)";
         if (now.world_to_camera != m.world_to_camera || now.world_to_ndc != m.world_to_ndc)
             return "rendered from another camera (its worldToCamera or worldToNDC differs)";
         if (now.hash != m.scene_hash)

@@ -251,7 +251,10 @@ device::CameraParams layout_camera(const Camera& camera, int width, int height)
     right = scaled(right, 1.0 / length(right));
     const Vec3 up = cross(right, forward);
 
-    const double half_height = std::tan(camera.vfov_deg * std::numbers::pi / 360.0);
+    // Perspective: the image plane at unit distance; orthographic: the view itself, in scene units.
+    const bool orthographic = camera.orthographic_height > 0.0;
+    const double half_height = orthographic ? 0.5 * camera.orthographic_height
+                                            : std::tan(camera.vfov_deg * std::numbers::pi / 360.0);
     const double half_width = half_height * static_cast<double>(width) / static_cast<double>(height);
 
     device::CameraParams params{};
@@ -263,6 +266,8 @@ device::CameraParams layout_camera(const Camera& camera, int width, int height)
     params.half_height = f(half_height);
     params.lens_radius = f(std::max(0.0, camera.aperture) * 0.5);
     params.focus_distance = f(camera.focus_distance > 0.0 ? camera.focus_distance : distance);
+    params.projection = static_cast<int>(orthographic ? device::CameraProjection::Orthographic
+                                                      : device::CameraProjection::Perspective);
     return params;
 }
 

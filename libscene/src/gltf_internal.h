@@ -178,10 +178,10 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const
 
 // ---- cameras and lights (gltf_camera.cpp, gltf_lights.cpp) ----
 
-// Orb camera from a glTF perspective camera and its node's world matrix;
+// Orb camera from a glTF perspective or orthographic camera and its node's world matrix;
 // `scene_center` sets how far away the target point is.
 void convert_camera(const tinygltf::Camera& camera, const std::string& name, const Matrix4& world,
-                    const AnimVec3& scene_center, Scene& scene, const Diagnostics& diagnostics);
+                    const AnimVec3& scene_center, Scene& scene, Diagnostics& diagnostics);
 // Frames the spheres from +z looking down -z (orb::frame_spheres: outliers
 // left out, fitted to the image's aspect ratio), leaving out the spheres
 // listed in `distant` (directional-light emitters, far away).

@@ -31,7 +31,8 @@ using Reader = detail::JsonReader;
 Camera read_camera(const Reader& r, const json& value) {
     const std::string path = "camera";
     r.object(value, path);
-    r.only_keys(value, path, {"position", "target", "up", "vfov_deg", "aperture", "focus_distance"});
+    r.only_keys(value, path,
+                {"position", "target", "up", "vfov_deg", "aperture", "focus_distance", "orthographic_height"});
     Camera camera;
     camera.position = r.numbers<3>(r.member(value, path, "position"), path + ".position");
     camera.target = r.numbers<3>(r.member(value, path, "target"), path + ".target");
@@ -40,6 +41,8 @@ Camera read_camera(const Reader& r, const json& value) {
     if (value.contains("aperture")) camera.aperture = r.number(value["aperture"], path + ".aperture");
     if (value.contains("focus_distance"))
         camera.focus_distance = r.number(value["focus_distance"], path + ".focus_distance");
+    if (value.contains("orthographic_height"))
+        camera.orthographic_height = r.number(value["orthographic_height"], path + ".orthographic_height");
     return camera;
 }
 
@@ -248,6 +251,11 @@ void validate_scene(const Scene& scene, const std::string& source) {
           "must be > 0, got " + fmt(c.focus_distance));
     check(detail::positive_in_range(c.focus_distance), source, "camera.focus_distance",
           detail::positive_rule() + detail::kFloatReason + fmt(c.focus_distance));
+    // 0 is the perspective camera; an orthographic view's height is a length like a radius.
+    check(c.orthographic_height == 0 || detail::positive_in_range(c.orthographic_height), source,
+          "camera.orthographic_height",
+          "must be 0 (a perspective camera) or in [" + fmt(kMinScenePositive) + ", " + fmt(kMaxSceneMagnitude) +
+              "] (an orthographic view that many units high)" + detail::kFloatReason + fmt(c.orthographic_height));
 
     const RenderSettings& r = scene.render;
     check(r.width >= 1 && r.width <= kMaxImageSide, source, "render.width", "must be in [1, " + std::to_string(kMaxImageSide) + "]");
@@ -357,6 +365,8 @@ void write_scene_json_to(const Scene& scene, const detail::JsonSink& sink) {
     camera["vfov_deg"] = c.vfov_deg;
     camera["aperture"] = c.aperture;
     camera["focus_distance"] = c.focus_distance;
+    // Written only for an orthographic camera, so a perspective scene is written, and hashed, as before the key existed.
+    if (c.orthographic_height != 0) camera["orthographic_height"] = c.orthographic_height;
     document["camera"] = std::move(camera);
 
     ordered_json render;

@@ -62,7 +62,11 @@ void list_camera_losses(const Camera& camera, std::vector<std::string>& lossy) {
     if (!(up[0] == 0.0 && up[2] == 0.0 && up[1] > 0.0))
         lossy.push_back("camera up vector [" + format_number(up[0]) + ", " + format_number(up[1]) + ", " +
                         format_number(up[2]) + "] is not +y; .scn cameras always have +y up");
-    if (!(std::fabs(camera.vfov_deg - smallptgpu_vfov_deg()) <= kFovToleranceDeg))
+    // An orthographic camera's field of view does not apply, so only its projection is named.
+    if (camera.orthographic_height > 0)
+        lossy.push_back("camera is orthographic (a view " + format_number(camera.orthographic_height) +
+                        " units high); .scn cameras are perspective, so it is written as SmallptGPU's perspective camera");
+    else if (!(std::fabs(camera.vfov_deg - smallptgpu_vfov_deg()) <= kFovToleranceDeg))
         lossy.push_back("camera vfov_deg " + format_number(camera.vfov_deg) + " is not SmallptGPU's fixed " +
                         format_number(smallptgpu_vfov_deg()) + "; .scn has no field of view");
     if (camera.aperture != 0.0)

@@ -61,3 +61,42 @@ TEST(CameraMatrices, WorldToNdcMapsTheFrustumToTheUnitSquareYDown) {
     EXPECT_NEAR(bottom_right[0], 1, 1e-6);
     EXPECT_NEAR(bottom_right[1], 1, 1e-6);
 }
+
+// An orthographic camera's view is a rectangle orthographic_height high (its
+// width from the image's aspect ratio) at every distance: the matrix is
+// affine (W = 1), and the same world offsets reach the same NDC near and far.
+TEST(CameraMatrices, OrthographicWorldToNdcIsAffineAndIndependentOfDistance) {
+    orb::Camera camera = looking_down_minus_z();
+    camera.orthographic_height = 3;
+    const int width = 40, height = 20;
+    const Matrix44 m = world_to_ndc(camera, width, height);
+    EXPECT_EQ(m[0][3], 0.0f);
+    EXPECT_EQ(m[1][3], 0.0f);
+    EXPECT_EQ(m[2][3], 0.0f);
+    EXPECT_EQ(m[3][3], 1.0f);
+    const double half_height = 1.5, half_width = half_height * width / height;
+    for (const double distance : {0.5, 4.0, 100.0}) {
+        auto centre = transform(m, {1, 2, 3 - distance});
+        EXPECT_NEAR(centre[0], 0.5, 1e-6);
+        EXPECT_NEAR(centre[1], 0.5, 1e-6);
+        EXPECT_NEAR(centre[2], distance, 1e-5 * distance);  // Z: the depth along the view
+        auto top_left = transform(m, {1 - half_width, 2 + half_height, 3 - distance});
+        EXPECT_NEAR(top_left[0], 0, 1e-6);
+        EXPECT_NEAR(top_left[1], 0, 1e-6);
+        auto bottom_right = transform(m, {1 + half_width, 2 - half_height, 3 - distance});
+        EXPECT_NEAR(bottom_right[0], 1, 1e-6);
+        EXPECT_NEAR(bottom_right[1], 1, 1e-6);
+    }
+    // worldToCamera does not depend on the projection.
+    EXPECT_EQ(world_to_camera(camera), world_to_camera(looking_down_minus_z()));
+}
+
+TEST(CameraMatrices, TheProjectionIsToldFromWorldToNdc) {
+    orb::Camera camera = looking_down_minus_z();
+    EXPECT_FALSE(is_orthographic(world_to_ndc(camera, 40, 20)));
+    // A view along +x, so that the perspective matrix's W column has zeros in it.
+    camera.target = {11, 2, 3};
+    EXPECT_FALSE(is_orthographic(world_to_ndc(camera, 40, 20)));
+    camera.orthographic_height = 2;
+    EXPECT_TRUE(is_orthographic(world_to_ndc(camera, 40, 20)));
+}

@@ -102,6 +102,18 @@ TEST(RenderRequest, EverySettingTheHeaderRecordsIsCompared) {
         {[](RenderRequest& r) {
              const auto old = r.scene;
              r.scene = [old] {
+                 // The same camera made orthographic: only the projection differs.
+                 orb::Camera camera;
+                 camera.orthographic_height = 2;
+                 SceneIdentity orthographic = old();
+                 orthographic.world_to_ndc = world_to_ndc(camera, kWidth, kHeight);
+                 return orthographic;
+             };
+         },
+         "rendered from another camera (perspective, an orthographic one asked)"},
+        {[](RenderRequest& r) {
+             const auto old = r.scene;
+             r.scene = [old] {
                  SceneIdentity edited = old();
                  edited.hash = "fedcba9876543210";
                  return edited;

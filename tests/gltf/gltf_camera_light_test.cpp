@@ -1,4 +1,4 @@
-// Cameras (perspective, choice, orthographic refusal, automatic framing) and
+// Cameras (perspective, orthographic, choice, automatic framing) and
 // KHR_lights_punctual (emissive spheres of matching intensity).
 #include <gtest/gtest.h>
 
@@ -56,12 +56,43 @@ TEST_P(Cameras, ChosenByIndexCameraNameOrNodeName) {
     EXPECT_THROW(import_generated("cameras" + GetParam(), missing), InputError);
 }
 
-TEST_P(Cameras, OrthographicIsAClearError) {
+// ymag is half the view's height; xmag/ymag sets the default image's aspect
+// ratio, as aspectRatio does for a perspective camera.
+TEST_P(Cameras, OrthographicKeepsTwiceYmagAsTheViewsHeight) {
+    const GltfImportResult result = import_generated("ortho" + GetParam());
+    const Scene& scene = result.scene;
+    EXPECT_EQ(scene.camera.orthographic_height, 3.0);  // 2 * ymag 1.5
+    EXPECT_EQ(scene.render.width, 640);                // xmag/ymag = 2/1.5 at the default height
+    EXPECT_EQ(scene.render.height, 480);
+    expect_vec(scene.camera.position, {0, 0, 10});
+    expect_vec(direction(scene.camera), {0, 0, -1});
+    expect_vec(scene.camera.up, {0, 1, 0});
+    expect_vec(scene.camera.target, {0, 0, 0});
+    EXPECT_FALSE(any_warning_contains(result, "xmag")) << "the image holds xmag/ymag exactly";
+
+    // A ratio no image holds: the view keeps its height, and a warning says what became of its width.
+    GltfImportOptions wide;
+    wide.camera = "Wide";
+    const GltfImportResult clamped = import_generated("ortho" + GetParam(), wide);
+    EXPECT_EQ(clamped.scene.camera.orthographic_height, 2.0);
+    EXPECT_EQ(clamped.scene.render.width, 65536);
+    expect_vec(direction(clamped.scene.camera), {-1, 0, 0});
+    EXPECT_TRUE(any_warning_contains(clamped, "camera 'Wide': orthographic xmag/ymag 1000 needs an image 480000 pixels "
+                                              "wide; it is 65536x480, so the view keeps its height 2 ymag = 2 and is "
+                                              "273.06666666666666 wide, not 2 xmag = 2000"));
+    wide.strict = true;
+    EXPECT_THROW(import_generated("ortho" + GetParam(), wide), InputError);
+}
+
+TEST_P(Cameras, AMirroringOrthographicCameraIsAClearError) {
+    GltfImportOptions options;
+    options.camera = "Mirrored";
     try {
-        import_generated("ortho" + GetParam());
+        import_generated("ortho" + GetParam(), options);
         FAIL() << "expected an error";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("orthographic"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("camera 'Mirrored': orthographic ymag -1 must be > 0"), std::string::npos)
+            << e.what();
     }
 }
 

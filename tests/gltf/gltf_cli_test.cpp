@@ -138,10 +138,10 @@ TEST(GltfCli, AChosenEnvironmentReplacesTheDefaultLight) {
 
 TEST(GltfCli, ErrorsAndUsage) {
     const fs::path out = scratch("bad.json");
-    ToolRun run = run_import(quote(generated("ortho.gltf")), out);
+    ToolRun run = run_import(quote(generated("ortho.gltf")) + " --camera Mirrored", out);
     EXPECT_EQ(run.status, 1);
     EXPECT_NE(run.err.find("orb-import: error:"), std::string::npos) << run.err;
-    EXPECT_NE(run.err.find("orthographic"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("orthographic ymag -1 must be > 0"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
 
     run = run_import(quote(generated("non_sphere.gltf")) + " --non-spheres error", out);

@@ -413,9 +413,15 @@ def cameras(out):
     o = Asset()
     o.mesh("Ball", *uv_sphere(1.0))
     o.node(name="Ball", mesh=0)
-    o.gltf["cameras"] = [{"name": "Ortho", "type": "orthographic",
-                          "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 100}}]
+    # xmag/ymag 4/3 is Orb's default 640x480; 1000 is wider than any image Orb makes.
+    o.gltf["cameras"] = [
+        {"name": "Ortho", "type": "orthographic", "orthographic": {"xmag": 2, "ymag": 1.5, "znear": 0.1, "zfar": 100}},
+        {"name": "Wide", "type": "orthographic", "orthographic": {"xmag": 1000, "ymag": 1, "znear": 0.1, "zfar": 100}},
+        {"name": "Mirrored", "type": "orthographic", "orthographic": {"xmag": 1, "ymag": -1, "znear": 0.1, "zfar": 100}},
+    ]
     o.node(name="OrthoCam", translation=[0, 0, 10], camera=0)
+    o.node(name="WideCam", translation=[10, 0, 0], rotation=quat_axis_angle((0, 1, 0), 90), camera=1)
+    o.node(name="MirroredCam", translation=[0, 0, 10], camera=2)
     o.write_all(out, "ortho")
 
     n = Asset()

@@ -77,6 +77,18 @@ TEST(SimdKernel, SamePathsAsRenderPassOnEveryBranch)
     render_both_expecting_same_paths(scene, config, {3, 13}, "16", "every branch");
 }
 
+// The orthographic camera, through a thin lens and as a pinhole:
+// v_begin_camera_paths restates camera_ray's parallel rays.
+TEST(SimdKernel, SamePathsAsRenderPassWithAnOrthographicCamera)
+{
+    Scene scene = every_branch_scene();
+    scene.camera.orthographic_height = 6.0;
+    const RenderConfig config = small_config(37, 23, 5);
+    render_both_expecting_same_paths(scene, config, {2, 14}, "16", "orthographic thin lens");
+    scene.camera.aperture = 0.0;
+    render_both_expecting_same_paths(scene, config, {2, 14}, "16", "orthographic pinhole");
+}
+
 TEST(SimdKernel, SamePathsAsRenderPassOnSmallptGpuScenes)
 {
     for (const char* name : {"cornell.scn", "caustic3.scn"}) {

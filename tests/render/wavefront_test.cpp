@@ -63,6 +63,14 @@ TEST(Wavefront, SamePathsAsRenderPassWithGlassMirrorsAndALens)
     expect_same_paths_as_render_pass(scene, independent, 8, "independent");
 }
 
+// wavefront_begin starts its paths with render_pass's camera_ray, orthographic too.
+TEST(Wavefront, SamePathsAsRenderPassWithAnOrthographicThinLens)
+{
+    Scene scene = scene_with(0);
+    scene.camera.orthographic_height = 6.0;
+    expect_same_paths_as_render_pass(scene, small_config(40, 30, 3), 8, "orthographic");
+}
+
 TEST(Wavefront, SamePathsAsRenderPassThroughATree)
 {
     const Scene scene = scene_with(600);

@@ -130,6 +130,23 @@ TEST_F(RenderFinish, AnotherSceneOrCameraIsRenderedAgain) {
     // The camera moved.
     const auto aimed = render_edited([](nlohmann::json& g) { g["nodes"][4]["translation"][1] = 2.0; }, true);
     EXPECT_EQ(count_lines(aimed.err, ": rendered from another camera"), 1) << aimed.err;
+
+    // Only the projection changed: the same node, an orthographic camera (its worldToNDC tells them apart).
+    const auto orthographic = [](nlohmann::json& g) {
+        g["cameras"][0] = {{"name", "Camera"},
+                           {"type", "orthographic"},
+                           {"orthographic", {{"xmag", 2.4}, {"ymag", 1.8}, {"znear", 0.1}, {"zfar", 100}}}};
+    };
+    const auto flattened = render_edited(orthographic, true);
+    EXPECT_EQ(count_lines(flattened.err, ": rendered from another camera (perspective, an orthographic one asked): "
+                                         "rendering again"),
+              1)
+        << flattened.err;
+    EXPECT_TRUE(orb::exr::is_orthographic(read_film_exr(frame_file(path("shots"), 1)).metadata.world_to_ndc));
+    EXPECT_EQ(count_lines(render_edited(orthographic, true).err, "finished (1 spp); skipped"), 1);
+    const auto back = render_edited(nothing, true);
+    EXPECT_EQ(count_lines(back.err, ": rendered from another camera (orthographic, a perspective one asked)"), 1)
+        << back.err;
 }
 
 TEST_F(RenderFinish, FramesStoppedByTimeOrSigtermAreContinuedToTheUninterruptedImage) {

@@ -64,6 +64,11 @@ INSTANTIATE_TEST_SUITE_P(
              "camera.up: the view direction"},
         Case{"fov", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,1], "target": [0,0,0], "vfov_deg": 0 }, "materials": [], "spheres": [] })",
              "camera.vfov_deg: must be in (0, 180)"},
+        Case{"orthographic_negative", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,1], "target": [0,0,0], "orthographic_height": -2 }, "materials": [], "spheres": [] })",
+             "camera.orthographic_height: must be 0 (a perspective camera) or in [1e-18, 1e+18] (an orthographic view that "
+             "many units high) (the renderer computes in 32-bit floats), got -2"},
+        Case{"orthographic_not_number", R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,1], "target": [0,0,0], "orthographic_height": "2" }, "materials": [], "spheres": [] })",
+             "camera.orthographic_height: expected a number"},
         Case{"render_width", kHead + R"("render": { "width": 0 }, "materials": [], "spheres": [] })",
              "render.width: must be in [1, 65536], got 0"},
         Case{"render_spp_fraction", kHead + R"("render": { "spp": 2.5 }, "materials": [], "spheres": [] })",

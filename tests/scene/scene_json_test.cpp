@@ -179,6 +179,46 @@ TEST(SceneJson, ValidationRejectsParametersAMaterialDoesNotHave) {
     EXPECT_THROW(orb::validate_scene(s, "mem"), orb::InputError);
 }
 
+// The orthographic height round-trips exactly; a perspective scene is written
+// (and hashed) without the key, as before it existed.
+TEST(SceneJson, OrthographicHeightRoundTripsAndPerspectiveScenesKeepTheirForm) {
+    orb::Scene s = sample_scene();
+    const std::string perspective = orb::write_scene_json(s);
+    EXPECT_EQ(perspective.find("orthographic_height"), std::string::npos) << perspective;
+
+    s.camera.orthographic_height = 0.1 + 0.2;  // an awkward double
+    const std::string text = orb::write_scene_json(s);
+    EXPECT_NE(text.find("\"orthographic_height\": 0.30000000000000004"), std::string::npos) << text;
+    EXPECT_EQ(orb::load_scene_json(text, "mem"), s);
+    EXPECT_NE(orb::scene_content_hash(s), orb::scene_content_hash(sample_scene()));
+
+    const orb::Scene file =
+        orb::load_scene_json(read_file(ORB_TEST_DATA_DIR "/scene/valid/orthographic.json"), "orthographic.json");
+    EXPECT_EQ(file.camera.orthographic_height, 2.5);
+    EXPECT_EQ(orb::load_scene_json(read_file(ORB_TEST_DATA_DIR "/scene/valid/minimal.json"), "minimal.json")
+                  .camera.orthographic_height,
+              0.0);
+}
+
+// Values no JSON text can hold (NaN, infinity) reach validate_scene from
+// importers; it names the field.
+TEST(SceneJson, ValidationRejectsAnOrthographicHeightThatIsNotALength) {
+    for (const double bad : {-1.0, std::nan(""), double(INFINITY), 1e-300, 1e300}) {
+        orb::Scene s = sample_scene();
+        s.camera.orthographic_height = bad;
+        try {
+            orb::validate_scene(s, "mem");
+            ADD_FAILURE() << "expected an error for " << bad;
+        } catch (const orb::InputError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("mem: camera.orthographic_height: must be 0 (a perspective camera) or in "
+                                                  "[1e-18, 1e+18]",
+                                                  0),
+                      0u)
+                << e.what();
+        }
+    }
+}
+
 TEST(SceneJson, SmallptGpuFieldOfView) {
     EXPECT_NEAR(orb::smallptgpu_vfov_deg(), 42.8798, 1e-4);
     EXPECT_NEAR(orb::Camera{}.vfov_deg, orb::smallptgpu_vfov_deg(), 1e-12);

@@ -99,6 +99,15 @@ TEST(SceneBinaryErrors, HeaderProblems) {
     ASSERT_NE(vfov, std::string::npos);
     camera.replace(vfov, 15, "\"vfov_deg\":-3.3");
     EXPECT_EQ(error_of(camera), "big.orb: camera.vfov_deg: must be in (0, 180), got -3.3");
+    // So does a negative orthographic height (same length of text: the header size stays right).
+    Scene orthographic = unnamed_scene();
+    orthographic.camera.orthographic_height = 2.5;
+    std::string height = write_scene_binary(orthographic);
+    const std::size_t at = height.find("\"orthographic_height\":2.5");
+    ASSERT_NE(at, std::string::npos);
+    height.replace(at + 22, 3, "-25");
+    EXPECT_THAT(error_of(height), StartsWith("big.orb: camera.orthographic_height: must be 0 (a perspective camera) or "
+                                             "in [1e-18, 1e+18]"));
 }
 
 TEST(SceneBinaryErrors, NamesMustBeUtf8) {

@@ -21,6 +21,16 @@ TEST(SceneBinary, JsonToBinaryToJsonIsByteForByteTheSame) {
     EXPECT_EQ(write_scene_json(through_binary), json);
 }
 
+TEST(SceneBinary, OrthographicCameraRoundTrips) {
+    Scene scene = test::every_feature_scene();
+    scene.camera.orthographic_height = 1.0 / 3.0;
+    const std::string bytes = write_scene_binary(scene);
+    EXPECT_NE(bytes.find("\"orthographic_height\":0.3333333333333333"), std::string::npos);
+    EXPECT_EQ(load_scene_binary(bytes, "s.orb"), scene);
+    // A perspective camera's header has no such key, as before it existed.
+    EXPECT_EQ(write_scene_binary(test::every_feature_scene()).find("orthographic_height"), std::string::npos);
+}
+
 TEST(SceneBinary, UnnamedSpheresStoreNoNames) {
     Scene scene = test::every_feature_scene();
     for (Sphere& s : scene.spheres) s.name.clear();

@@ -43,6 +43,14 @@ TEST(ScnWrite, FovWithinAHundredthOfADegreeIsSmallptGpus) {
     EXPECT_THAT(write_scn(scene).lossy, ElementsAre(HasSubstr("camera vfov_deg 40 is not SmallptGPU's fixed 42.879")));
 }
 
+TEST(ScnWrite, AnOrthographicCameraIsNamedInsteadOfItsFieldOfView) {
+    Scene scene = simple_scene();
+    scene.camera.orthographic_height = 2.5;
+    scene.camera.vfov_deg = 40;  // does not apply to an orthographic camera, so not named
+    EXPECT_THAT(write_scn(scene).lossy,
+                ElementsAre(HasSubstr("camera is orthographic (a view 2.5 units high); .scn cameras are perspective")));
+}
+
 TEST(ScnWrite, ListsEverythingScnCannotExpress) {
     Scene scene = simple_scene();
     scene.camera.up = {0, 0, 1};

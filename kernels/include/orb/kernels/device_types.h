@@ -89,6 +89,13 @@ ORB_ENUM(SamplerKind){
     ORB_ENUMERATOR(SamplerKind, Sobol, 1),       /* Owen-scrambled Sobol for the first bounces */
 };
 
+/* How camera rays leave the film (kernels/camera.cl): from one point
+ * through the image plane, or parallel along the view direction. */
+ORB_ENUM(CameraProjection){
+    ORB_ENUMERATOR(CameraProjection, Perspective, 0),  /* pinhole or thin lens */
+    ORB_ENUMERATOR(CameraProjection, Orthographic, 1), /* parallel rays, telecentric thin lens */
+};
+
 /* ---- Scene tables: read-only buffers, __constant or __global ---- */
 
 /* Four spheres in structure-of-arrays form, for the intersection loop: CPUs
@@ -187,7 +194,9 @@ typedef struct EnvironmentCdf {
 /* ---- The parameter struct of render_pass, passed by value ---- */
 
 /* Pinhole or thin lens: an orthonormal frame and the half extents of the
- * image plane at unit distance, tan(vfov / 2) * aspect and tan(vfov / 2). */
+ * image: perspective, of the image plane at unit distance, tan(vfov / 2) *
+ * aspect and tan(vfov / 2); orthographic, of the view itself in scene units,
+ * orthographic_height / 2 * aspect and orthographic_height / 2. */
 typedef struct CameraParams {
     float4 origin;  /* xyz; w: 0 */
     float4 right;   /* unit; w: 0 */
@@ -197,6 +206,8 @@ typedef struct CameraParams {
     float half_height;
     float lens_radius; /* 0 for a pinhole */
     float focus_distance;
+    int projection; /* a CameraProjection */
+    int pad0, pad1, pad2;
 } CameraParams;
 
 /* Lengths of the scene tables (a table with no records still holds one
@@ -292,11 +303,11 @@ typedef struct RenderPassParams {
     SIZE(LightRecord, 16)                                                                                  \
     FIELD(LightRecord, sphere, 0) FIELD(LightRecord, probability, 4)                                       \
     FIELD(LightRecord, alias_threshold, 8) FIELD(LightRecord, alias, 12)                                   \
-    SIZE(CameraParams, 80)                                                                                 \
+    SIZE(CameraParams, 96)                                                                                 \
     FIELD(CameraParams, origin, 0) FIELD(CameraParams, right, 16) FIELD(CameraParams, up, 32)              \
     FIELD(CameraParams, forward, 48) FIELD(CameraParams, half_width, 64)                                   \
     FIELD(CameraParams, half_height, 68) FIELD(CameraParams, lens_radius, 72)                              \
-    FIELD(CameraParams, focus_distance, 76)                                                                \
+    FIELD(CameraParams, focus_distance, 76) FIELD(CameraParams, projection, 80)                            \
     SIZE(SceneCounts, 32)                                                                                  \
     FIELD(SceneCounts, packet_count, 0) FIELD(SceneCounts, sphere_count, 4)                                \
     FIELD(SceneCounts, light_count, 8) FIELD(SceneCounts, outside_packet_count, 12)                        \
@@ -316,10 +327,10 @@ typedef struct RenderPassParams {
     SIZE(EnvironmentParams, 32)                                                                            \
     FIELD(EnvironmentParams, rotation, 0) FIELD(EnvironmentParams, width, 16)                              \
     FIELD(EnvironmentParams, height, 20) FIELD(EnvironmentParams, light_probability, 24)                   \
-    SIZE(RenderPassParams, 192)                                                                            \
-    FIELD(RenderPassParams, camera, 0) FIELD(RenderPassParams, scene, 80)                                  \
-    FIELD(RenderPassParams, settings, 112) FIELD(RenderPassParams, pass, 144)                              \
-    FIELD(RenderPassParams, environment, 160)
+    SIZE(RenderPassParams, 208)                                                                            \
+    FIELD(RenderPassParams, camera, 0) FIELD(RenderPassParams, scene, 96)                                  \
+    FIELD(RenderPassParams, settings, 128) FIELD(RenderPassParams, pass, 160)                              \
+    FIELD(RenderPassParams, environment, 176)
 
 #define ORB_CHECK_SIZE(type, size) static_assert(sizeof(type) == (size), "sizeof " #type);
 #define ORB_CHECK_FIELD(type, field, offset) static_assert(offsetof(type, field) == (offset), #type "." #field);

@@ -15,6 +15,10 @@ namespace orb::exr {
 using Matrix44 = std::array<std::array<float, 4>, 4>;  // [row][column], Imath layout
 
 Matrix44 world_to_camera(const Camera& camera);
+// Perspective: projective, W = depth along the view. Orthographic
+// (orthographic_height > 0): affine, the view's rectangle onto [0,1]², W = 1.
 Matrix44 world_to_ndc(const Camera& camera, int width, int height);
+// Whether a worldToNDC is an orthographic camera's (affine) rather than a perspective one's.
+bool is_orthographic(const Matrix44& world_to_ndc);
 
 }  // namespace orb::exr
