@@ -303,11 +303,24 @@ Pass shown_pass(const LoadedImage& loaded, const std::string& name, const Settin
     return prepare_alpha(pass, loaded, s.alpha());
 }
 
-// Prepares the output, writes the picture with its record.
-struct Output {
-    WriteOptions options;
-    orb::cli::OutputFile file;
-};
+// For a sheet of passes: the input with its beauty R, G, B (and A) replaced
+// by what the beauty pass shows (with --background, the spheres over it).
+Image with_beauty_shown(const LoadedImage& loaded, const Settings& s, const std::string& input) {
+    if (s.background.empty()) return loaded.image;
+    const Pass shown = shown_pass(loaded, "beauty", s, input);
+    Image image = loaded.image;
+    const int r = image.find_channel("R"), g = image.find_channel("G"), b = image.find_channel("B");
+    const int a = image.find_channel("A");
+    if (r < 0 || g < 0 || b < 0) return image;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            image.at(x, y, r) = shown.image.at(x, y, 0);
+            image.at(x, y, g) = shown.image.at(x, y, 1);
+            image.at(x, y, b) = shown.image.at(x, y, 2);
+            if (a >= 0) image.at(x, y, a) = 1.0f;
+        }
+    return image;
+}
 
 WriteOptions output_options(const Job& job, const Settings& s) {
     WriteOptions options = checked_write_options(write_options_for(job, s));
@@ -340,7 +353,7 @@ void tonemap_one(const Job& job, const Settings& s, const ColorConfig& config) {
             const Pass beauty = shown_pass(loaded, "beauty", s, job.input);
             view.exposure_stops = exposure_for(s, {&beauty.image}, config, display_name(job.input));
         }
-        picture = make_contact_sheet(loaded.image, config, view);
+        picture = make_contact_sheet(with_beauty_shown(loaded, s, job.input), config, view);
     } else {
         const Pass pass = shown_pass(loaded, s.pass, s, job.input);
         if (pass.kind == PassKind::Color) view.exposure_stops = exposure_for(s, {&pass.image}, config, display_name(job.input));
