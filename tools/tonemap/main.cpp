@@ -414,7 +414,7 @@ int main(int argc, char** argv) {
             app.add_option("-o,--output", s.output, "Output file ('-' = stdout, needs --format), or a directory for several inputs")
                 ->option_text("OUT");
             app.add_option("--pass", s.pass,
-                           "Pass to show: beauty, direct, indirect, emission, albedo, normal, depth, variance, id, or any layer name")
+                           "Pass to show: beauty, direct, indirect, emission, albedo, normal, depth, variance, id, background, or any layer name")
                 ->option_text("NAME");
             // +-100 stops keeps the gain 2^STOPS a normal float (7.9e-31 ... 1.3e30).
             app.add_option("--exposure", s.exposure, "Exposure adjustment in stops (-100 ... 100), applied in scene-linear")
@@ -439,13 +439,12 @@ int main(int argc, char** argv) {
             app.add_flag("--contact-sheet", s.contact_sheet,
                          "Lay out all passes of the input in one labelled image; with --frames and an output "
                          "without a frame number, or several inputs and an output file, one pass of every frame");
-            auto* transparent = app.add_flag(
+            app.add_flag(
                 "--transparent", s.transparent,
                 "Show the spheres alone, their coverage as alpha (default: opaque, what the camera sees)");
             app.add_option("--background", s.background,
                            "Show the spheres over this colour, opaque: R,G,B scene-linear, or #rrggbb sRGB")
                 ->option_text("COLOR")
-                ->excludes(transparent)
                 ->check([](const std::string& text) {
                     try {
                         parse_background_color(text);
@@ -487,6 +486,8 @@ int main(int argc, char** argv) {
             const std::vector<SheetSource> sheet_sources = frame_sheet_sources(s);
             if (s.contact_sheet && sheet_sources.empty() && s.pass != "beauty")
                 throw UsageError("--contact-sheet shows every pass; drop --pass");
+            if (s.transparent && !s.background.empty())
+                throw UsageError("--transparent keeps the uncovered parts transparent, --background fills them: give one");
             if (s.contact_sheet && s.transparent)
                 throw UsageError("a contact sheet is opaque; drop --transparent (--background shows the spheres over a colour)");
             if (!sheet_sources.empty()) {
