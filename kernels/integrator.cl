@@ -36,6 +36,7 @@ typedef struct {
     float3 indirect;  // paths with two or more non-delta vertices
     float3 albedo;    // specular tints times the reflectance of the first non-delta vertex
     float3 normal;    // normal at the first hit, facing the camera ray
+    float3 background;  // the environment's radiance when the camera ray hit nothing
     float alpha;      // 1 when the camera ray hit something
 } PathSample;
 
@@ -79,7 +80,7 @@ inline void begin_path(PathState* path, PathSample* out, float3 o, float3 d)
     path->from_pdf = 0.0f;
     path->from_point = o;
     path->from_self = -1;
-    out->emission = out->direct = out->indirect = out->albedo = out->normal = (float3)(0.0f);
+    out->emission = out->direct = out->indirect = out->albedo = out->normal = out->background = (float3)(0.0f);
     out->alpha = 0.0f;
 }
 
@@ -142,11 +143,13 @@ inline bool follow_hit(const SceneView* scene, PathState* path, PathSample* out,
 {
     if (hit.id < 0) {
         // Escaped: the environment's radiance (kernels/environment.cl). Alpha
-        // stays 0: it is the coverage of spheres, so a render composites over a plate.
+        // stays 0: it is the coverage of spheres, so a render composites over
+        // a plate once the background (the camera ray's escape) is taken out.
         const float env_pick_pdf = mode == IntegratorMode_Direct ? 1.0f : scene->environment.light_probability;
-        add_by_vertex_count(out, path->nondelta_vertices,
-                            path->beta * escaped_radiance(scene, path->d, path->from_density, path->from_pdf,
-                                                          env_pick_pdf));
+        const float3 seen =
+            path->beta * escaped_radiance(scene, path->d, path->from_density, path->from_pdf, env_pick_pdf);
+        add_by_vertex_count(out, path->nondelta_vertices, seen);
+        if (ORB_FILM_BUILT(background) && path->depth == 0) out->background = seen;
         return false;
     }
     const ShadingSphere m = load_sphere(scene, hit.id);
@@ -273,9 +276,9 @@ inline bool extend_path(const SceneView* scene, PathState* path, PathSample* out
 // pixel's sums for good, so it adds no light at all.
 inline void film_add_sample(FilmSums* sums, const PathSample* s)
 {
-    float3 emission = s->emission, direct = s->direct, indirect = s->indirect;
+    float3 emission = s->emission, direct = s->direct, indirect = s->indirect, background = s->background;
     float3 radiance = (emission + direct) + indirect;
-    if (!all(isfinite(radiance))) emission = direct = indirect = radiance = (float3)(0.0f);
+    if (!all(isfinite(radiance))) emission = direct = indirect = radiance = background = (float3)(0.0f);
     sums->radiance += radiance;
     sums->alpha += s->alpha;
     sums->direct += direct;
@@ -284,6 +287,7 @@ inline void film_add_sample(FilmSums* sums, const PathSample* s)
     sums->albedo += s->albedo;
     sums->normal += s->normal;
     sums->radiance_sq += radiance * radiance;
+    sums->background += background;
 }
 
 // The centre-ray channels: not averages, but what the ray through the pixel

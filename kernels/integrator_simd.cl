@@ -489,6 +489,7 @@ typedef struct {
 
 typedef struct {
     v3 emission, direct, indirect, albedo, normal;
+    v3 background;  // the environment's radiance where the camera ray hit nothing
     vfloat alpha;
 } VPathSample;
 
@@ -785,8 +786,9 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         const vfloat weight = select((vfloat)(1.0f),
                                      v_power_heuristic(path->from_pdf, (vfloat)(environment_pick * texel.w)),
                                      path->from_density);
-        v_add_by_vertex_count(out, path->nondelta_vertices, v3_scale(v3_mul(path->beta, v3_splat(texel.xyz)), weight),
-                              escaped);
+        const v3 seen = v3_scale(v3_mul(path->beta, v3_splat(texel.xyz)), weight);
+        v_add_by_vertex_count(out, path->nondelta_vertices, seen, escaped);
+        if (ORB_FILM_BUILT(background)) out->background = v3_select(out->background, seen, escaped & (path->depth == 0));
     } else if (ORB_ENVIRONMENT && scene->environment.width > 0 && any(escaped)) {
         float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH], pdf_lane[ORB_SIMD_WIDTH];
         float er[ORB_SIMD_WIDTH], eg[ORB_SIMD_WIDTH], eb[ORB_SIMD_WIDTH];
@@ -800,8 +802,9 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
                                              : (float3)(0.0f);
             er[l] = e.x, eg[l] = e.y, eb[l] = e.z;
         }
-        const v3 radiance = v3_load_lanes(er, eg, eb);
-        v_add_by_vertex_count(out, path->nondelta_vertices, v3_mul(path->beta, radiance), escaped);
+        const v3 seen = v3_mul(path->beta, v3_load_lanes(er, eg, eb));
+        v_add_by_vertex_count(out, path->nondelta_vertices, seen, escaped);
+        if (ORB_FILM_BUILT(background)) out->background = v3_select(out->background, seen, escaped & (path->depth == 0));
     }
     const vint hit = active & (id >= 0);
     if (!any(hit)) return hit;
@@ -1034,6 +1037,7 @@ SIMD_FN void v_film_add_sample(VFilmSums* sums, const VPathSample* s, vint lanes
     direct = v3_select(v3_zero(), direct, finite);
     indirect = v3_select(v3_zero(), indirect, finite);
     radiance = v3_select(v3_zero(), radiance, finite);
+    const v3 background = v3_select(v3_zero(), s->background, finite);
     sums->radiance = v3_add_where(sums->radiance, radiance, lanes);
     sums->alpha = select(sums->alpha, sums->alpha + s->alpha, lanes);
     sums->direct = v3_add_where(sums->direct, direct, lanes);
@@ -1042,6 +1046,7 @@ SIMD_FN void v_film_add_sample(VFilmSums* sums, const VPathSample* s, vint lanes
     sums->albedo = v3_add_where(sums->albedo, s->albedo, lanes);
     sums->normal = v3_add_where(sums->normal, s->normal, lanes);
     sums->radiance_sq = v3_add_where(sums->radiance_sq, v3_mul(radiance, radiance), lanes);
+    sums->background = v3_add_where(sums->background, background, lanes);
 }
 
 // Lane l of a VFilmSums into the FilmSums `sums` that ORB_FILM_ADD_SUMS reads:
@@ -1110,7 +1115,7 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
     path.o = path.d = path.beta = path.from_point = v3_zero();
     path.self = path.depth = path.nondelta_vertices = path.albedo_set = path.from_density = (vint)(0);
     path.eta2 = path.from_pdf = (vfloat)(0.0f);
-    s.emission = s.direct = s.indirect = s.albedo = s.normal = v3_zero();
+    s.emission = s.direct = s.indirect = s.albedo = s.normal = s.background = v3_zero();
     s.alpha = (vfloat)(0.0f);
     vint index = (vint)(0);
     vint active = in_image & (vint)(sample_count > 0 ? -1 : 0);
@@ -1122,6 +1127,9 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
         active = alive;
         if (any(done)) {
             v_film_add_sample(&vsums, &s, done);
+            // The camera path's start (v_begin_camera_paths) clears the other
+            // fields; the background is set only by an escape, so it is cleared here.
+            s.background = v3_select(s.background, v3_zero(), done);
             index -= done;  // done lanes are -1
             const vint next = done & (index < sample_count);
             if (any(next)) {

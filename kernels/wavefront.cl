@@ -171,7 +171,7 @@ __kernel void wavefront_shade(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB
     shadow.pending = 0;
     scene.deferred_shadow = &shadow;
     PathSample s;
-    s.emission = s.direct = s.indirect = s.albedo = s.normal = (float3)(0.0f);
+    s.emission = s.direct = s.indirect = s.albedo = s.normal = s.background = (float3)(0.0f);
     s.alpha = 0.0f;
     const bool alive = follow_hit(&scene, &path, &s, &coords, hit, params.settings.max_depth, params.settings.mode);
 

@@ -70,10 +70,8 @@ cat > "$work/scene.json" <<'EOF'
   ] }
 EOF
 "$build/bin/orb-render" "$work/scene.json" -o "$work/render.exr" --seed 1
-# Alpha is the spheres' coverage, 0 where the camera sees the environment:
-# keep the colour only, so the PNG shows the sky instead of transparency.
-oiiotool "$work/render.exr" --ch R,G,B -o "$work/opaque.exr"
-"$build/bin/orb-tonemap" "$work/opaque.exr" -o "$out/environment-render.png"
+# orb-tonemap shows what the camera sees, the sky included, opaque.
+"$build/bin/orb-tonemap" "$work/render.exr" -o "$out/environment-render.png"
 "$build/bin/orb-tonemap" "$work/test-map.exr" -o "$work/test-map-full.png"
 oiiotool "$work/test-map-full.png" --resize 512x256 -o "$out/environment-map.png"
 echo "wrote $out/environment-map.png and $out/environment-render.png"

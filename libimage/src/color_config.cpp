@@ -109,6 +109,12 @@ std::string ColorConfig::scene_linear() const {
     throw InputError(source_ + ": the config defines no scene_linear role; pass --input-space");
 }
 
+std::array<double, 3> ColorConfig::luma_coefficients() const {
+    std::array<double, 3> rgb{};
+    impl_->config->getDefaultLumaCoefs(rgb.data());
+    return rgb;
+}
+
 std::string ColorConfig::encoded_input_space(const std::string& file_tag) const {
     for (const std::string& candidate : {file_tag, std::string("sRGB - Texture"), std::string("sRGB"),
                                          std::string("srgb_tx"), std::string("Utility - sRGB - Texture")}) {

@@ -110,6 +110,8 @@ std::string format_display_record(const DisplayRecord& r) {
     line("view", s.view);
     line("look", s.look);
     line("exposure", shortest_text(s.exposure));
+    line("auto-exposure", s.auto_exposure ? "1" : "0");
+    line("alpha", s.alpha);
     line("config", s.config);
     line("format", s.format);
     line("bits", std::to_string(s.bits));
@@ -159,6 +161,8 @@ std::optional<DisplayRecord> parse_display_record(const std::string& text) {
     s.view = f.text("view");
     s.look = f.text("look");
     s.exposure = f.number("exposure");
+    s.auto_exposure = f.flag("auto-exposure");
+    s.alpha = f.text("alpha");
     s.config = f.text("config");
     s.format = f.text("format");
     s.bits = static_cast<int>(f.integer("bits"));

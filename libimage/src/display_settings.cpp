@@ -31,6 +31,10 @@ std::vector<std::string> settings_differences(const DisplaySettings& made, const
     differ("--look", shown(made.look, "(the view's own)"), shown(asked.look, "(the view's own)"));
     if (made.exposure != asked.exposure)
         differ("--exposure", shortest_text(made.exposure), shortest_text(asked.exposure));
+    if (made.auto_exposure != asked.auto_exposure)
+        out.push_back(made.auto_exposure ? "made with --auto-exposure, a fixed exposure asked"
+                                         : "made with a fixed exposure, --auto-exposure asked");
+    if (made.alpha != asked.alpha) out.push_back("made " + made.alpha + ", " + asked.alpha + " asked");
     if (made.config != asked.config) out.push_back("made with another colour config (its content differs)");
     // Bits follow from the format, and dithering from the bits: only the first of them that differs is named.
     if (made.format != asked.format)

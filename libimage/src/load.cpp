@@ -122,6 +122,7 @@ LoadedImage load_image(const std::string& path) {
                          std::to_string(spec0.height) + "x" + std::to_string(spec0.nchannels) + ")");
     result.color_space = spec0.get_string_attribute("oiio:ColorSpace");
     result.display_referred = !is_float_type(spec0.format) && result.format_name != "openexr";
+    result.orb_passes = spec0.get_string_attribute("orb:passes");
 
     Image& image = result.image;
     image.width = spec0.width;

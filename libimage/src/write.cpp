@@ -121,6 +121,9 @@ std::string encode_image(const Image& source, const WriteOptions& options) {
     spec.channelnames = {};
     for (const std::string& name : image.channel_names) spec.channelnames.push_back(name);
     if (n == 4) spec.alpha_channel = 3;
+    // Straight (unassociated) colour as it is: without this OpenImageIO's PNG
+    // and TIFF writers take colour for premultiplied and divide it by alpha.
+    if (n == 4 && !options.premultiply_alpha) spec.attribute("oiio:UnassociatedAlpha", 1);
     if (options.format == "exr") spec.attribute("compression", "zip");
     if (const std::string carrier = record_attribute_for(options.format); !carrier.empty() && !options.record.empty())
         spec.attribute(carrier, options.record);

@@ -108,7 +108,7 @@ TEST(FilmExr, WritesExactlyTheDocumentedChannelsAndAttributes) {
                                          "emission.B", "albedo.R",   "albedo.G",   "albedo.B",
                                          "N.X",        "N.Y",        "N.Z",        "orb.normalLength",
                                          "Z",          "variance.R", "variance.G", "variance.B",
-                                         "id"};
+                                         "id",         "background.R", "background.G", "background.B"};
     EXPECT_EQ(names, expected);
 
     EXPECT_EQ(header.typedAttribute<Imf::IntAttribute>("orb:spp").value(), 3);
@@ -123,7 +123,7 @@ TEST(FilmExr, WritesExactlyTheDocumentedChannelsAndAttributes) {
     EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>("orb:version").value(), "0.1.0");
     EXPECT_EQ(header.typedAttribute<Imf::DoubleAttribute>("orb:sceneTime").value(), 0.25);
     EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>("orb:passes").value(),
-              "beauty,direct,indirect,emission,albedo,normal,depth,variance,id");
+              "beauty,direct,indirect,emission,albedo,normal,depth,variance,id,background");
     EXPECT_EQ(header.typedAttribute<Imf::IntAttribute>("orb:filmFormat").value(), kFilmFormatVersion);
     EXPECT_TRUE(Imf::hasWorldToCamera(header));
     EXPECT_TRUE(Imf::hasWorldToNDC(header));

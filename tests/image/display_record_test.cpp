@@ -26,6 +26,8 @@ DisplayRecord sample_record() {
     s.format = "png";
     s.bits = 8;
     s.dither = true;
+    s.auto_exposure = true;
+    s.alpha = "over 0.18,0.5,1e-05";
     return r;
 }
 
@@ -34,7 +36,7 @@ DisplayRecord sample_record() {
 TEST(DisplayRecord, RoundTripsEveryField) {
     const DisplayRecord r = sample_record();
     const std::string text = format_display_record(r);
-    EXPECT_EQ(text.rfind("orb-tonemap display image 1\n", 0), 0u) << text;
+    EXPECT_EQ(text.rfind("orb-tonemap display image 2\n", 0), 0u) << text;
     EXPECT_NE(text.find("\nexposure=0.1\n"), std::string::npos) << "exposure as typed: " << text;
     const auto back = parse_display_record(text);
     ASSERT_TRUE(back);

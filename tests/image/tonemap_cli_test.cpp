@@ -96,15 +96,17 @@ TEST_F(TonemapCli, FormatsWithoutAlphaGetRgb) {
     write_exr(with_alpha, make_multipass(16, 8));  // has an A channel
     // The writers OIIO says cannot hold alpha, and BMP (whose alpha readers ignore).
     for (const std::string name : {"a.hdr", "a.jpg", "a.ppm", "a.pnm", "a.bmp"}) {
-        const auto r = run(kTonemap + " " + quote(with_alpha) + " -o " + quote(dir.path(name)));
+        const auto r = run(kTonemap + " " + quote(with_alpha) + " --transparent -o " + quote(dir.path(name)));
         ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
         EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
         EXPECT_EQ(read_image(dir.path(name)).channels(), 3) << name;
     }
-    // Formats that hold alpha keep it.
+    // Formats that hold alpha keep it with --transparent; by default every image is opaque.
     for (const std::string name : {"a.png", "a.tif", "a.exr"}) {
-        ASSERT_EQ(run(kTonemap + " " + quote(with_alpha) + " -o " + quote(dir.path(name)) + " -q").exit_code, 0) << name;
+        ASSERT_EQ(run(kTonemap + " " + quote(with_alpha) + " --transparent -o " + quote(dir.path(name)) + " -q").exit_code, 0) << name;
         EXPECT_EQ(read_image(dir.path(name)).channels(), 4) << name;
+        ASSERT_EQ(run(kTonemap + " " + quote(with_alpha) + " -o " + quote(dir.path(name)) + " -q").exit_code, 0) << name;
+        EXPECT_EQ(read_image(dir.path(name)).channels(), 3) << name;
     }
 }
 

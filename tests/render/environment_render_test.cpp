@@ -105,6 +105,8 @@ void expect_background(const Film& film, const Vec3& radiance, const std::string
         }
         ASSERT_EQ(film.alpha[p], 0.0f) << what << ", pixel " << p;
         ASSERT_EQ(film.albedo[p * 3], 0.0f) << what << ", pixel " << p;
+        // The background layer holds what alpha does not cover: here, all of it.
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(film.background[p * 3 + c], film.radiance[p * 3 + c]) << what;
     }
 }
 
@@ -136,6 +138,27 @@ TEST_P(BallUnderUniformEnvironment, BallIsAlbedoTimesRadiance)
         EXPECT_EQ(film.alpha[p], 128.0f);  // 128 samples, every one covered
     }
     expect_background(film, sky, "background");
+}
+
+// The background layer is the environment seen by camera rays that hit
+// nothing: under a uniform sky L each such sample adds exactly L, so every
+// pixel, the ball's edges included, holds (n - alpha) L, and RGB - background
+// is the ball's own colour premultiplied by its coverage. Sums of equal
+// values round by at most n ulps of the total.
+TEST_P(BallUnderUniformEnvironment, BackgroundIsTheSkyWhereTheBallDoesNotCover)
+{
+    const Vec3 sky{1.0, 2.0, 0.5};
+    const Film film = render(ball_under(uniform(sky), {0.5, 0.3, 0.8}), small_config(32, 32, 5, 6, GetParam()), {64});
+    const double n = static_cast<double>(film.samples_per_pixel);
+    std::size_t edges = 0;
+    for (std::size_t p = 0; p < film.alpha.size(); ++p) {
+        const double uncovered = n - film.alpha[p];
+        if (film.alpha[p] > 0.0f && uncovered > 0.0) ++edges;
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(film.background[p * 3 + c], uncovered * sky[c], float_rounding_bound(n * sky[c], film.samples_per_pixel))
+                << "pixel " << p << ", coverage " << film.alpha[p] / n;
+    }
+    EXPECT_GT(edges, 20u) << "the ball's edge pixels, partly covered";
 }
 
 // A constant map is the same light as the uniform colour, whatever its

@@ -41,7 +41,8 @@ TEST_F(RenderCli, WritesEveryDocumentedChannelAndAttribute) {
                                      "direct.G",   "direct.B",   "indirect.R", "indirect.G", "indirect.B",
                                      "emission.R", "emission.G", "emission.B", "albedo.R",   "albedo.G",
                                      "albedo.B",   "N.X",        "N.Y",        "N.Z",        "orb.normalLength",
-                                     "Z",          "variance.R", "variance.G", "variance.B", "id"}));
+                                     "Z",          "variance.R", "variance.G", "variance.B", "id",
+                                     "background.R", "background.G", "background.B"}));
     for (const auto& [name, type] : raw.channel_types) EXPECT_EQ(type, "FLOAT") << name;
 
     const std::map<std::string, std::string> expected_attributes{

@@ -61,7 +61,8 @@
     LAYER(Normal, normal, Normal)       \
     LAYER(Depth, depth, Depth)          \
     LAYER(Variance, variance, Variance) \
-    LAYER(Id, id, Id)
+    LAYER(Id, id, Id)                   \
+    LAYER(Background, background, Color)
 
 /* radiance     the sample's radiance L
  * alpha        1 when the camera ray hit a sphere, 0 for a miss
@@ -72,7 +73,10 @@
  * normal       world normal at the first hit, facing the camera ray; 0 for a miss
  * depth        distance along the pixel-centre ray to the first hit, +inf for a miss
  * radiance_sq  L^2 per component, for the variance of the pixel mean
- * object_id    the scene index of the sphere the pixel-centre ray hits, -1 for none */
+ * object_id    the scene index of the sphere the pixel-centre ray hits, -1 for none
+ * background   the environment's radiance brought by a camera ray that hits no sphere (0 for one that hits):
+ *              the part of `radiance` that `alpha` does not cover, so radiance - background is the
+ *              spheres' colour premultiplied by alpha (docs/design/background-and-alpha.md) */
 #define ORB_FILM_CHANNELS(CHANNEL)                                                                                    \
     CHANNEL(radiance, 3, 0.0f, Sum, Sum, Beauty, Mean, none, ("R", "G", "B"))                                           \
     CHANNEL(alpha, 1, 0.0f, Sum, Sum, Beauty, Mean, none, ("A"))                                                        \
@@ -84,7 +88,8 @@
     CHANNEL(depth, 1, ORB_FILM_INFINITY, CentreRay, Same, Depth, Value, none, ("Z"))                                    \
     CHANNEL(radiance_sq, 3, 0.0f, Sum, Sum, Variance, VarianceOfMean, radiance, ("variance.R", "variance.G",           \
             "variance.B"))                                                                                             \
-    CHANNEL(object_id, 1, -1.0f, CentreRay, Same, Id, Value, none, ("id"))
+    CHANNEL(object_id, 1, -1.0f, CentreRay, Same, Id, Value, none, ("id"))                                              \
+    CHANNEL(background, 3, 0.0f, Sum, Sum, Background, Mean, none, ("background.R", "background.G", "background.B"))
 
 #ifdef __OPENCL_VERSION__
 

@@ -2,6 +2,7 @@
 // Orb's own config in share/orb/ocio. Hides OCIO types from the tools.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +30,10 @@ public:
 
     // Canonical name of a colour space, role or alias; empty if unknown.
     std::string resolve_color_space(const std::string& name) const;
+    // The weights of R, G, B in luminance Y for the scene_linear space (the
+    // config's luma coefficients; Rec. 709's 0.2126, 0.7152, 0.0722 in Orb's).
+    std::array<double, 3> luma_coefficients() const;
+
     // The scene_linear role (or the default role) resolved to a colour space.
     std::string scene_linear() const;
     // Best guess for 8/16-bit display-encoded files: their tag, else an sRGB space.

@@ -23,8 +23,9 @@
 namespace orb::image {
 
 // Bumped whenever orb-tonemap changes how it turns a source and settings into
-// pixels, so that images made the old way count as stale.
-inline constexpr int kDisplayRecordVersion = 1;
+// pixels, so that images made the old way count as stale. 2: images are
+// opaque by default (the environment shown), with auto-exposure and alpha recorded.
+inline constexpr int kDisplayRecordVersion = 2;
 
 // The first line of every record, without the version number.
 inline constexpr const char* kDisplayRecordMagic = "orb-tonemap display image";

@@ -16,7 +16,9 @@ struct DisplaySettings {
     std::string display;      // resolved: the config's default display when not given
     std::string view;         // resolved: the display's default view when not given
     std::string look;         // --look as given; "" = the view's own looks
-    double exposure = 0.0;    // stops
+    double exposure = 0.0;    // stops (with auto_exposure: added to the automatic exposure)
+    bool auto_exposure = false;  // --auto-exposure (the stops it comes to follow from the source's pixels)
+    std::string alpha = "opaque";  // alpha_output_text: "opaque", "transparent" or "over R,G,B"
     std::string config;       // identity of the colour config's content (ColorConfig::content_hash)
     std::string format;       // normalised output format: "png", "jpg", "tif", "exr", ...
     int bits = 0;             // resolved bits per channel

@@ -13,6 +13,10 @@ struct LoadedImage {
     std::string format_name;    // OIIO's format name, e.g. "openexr", "png"
     std::string color_space;    // the file's oiio:ColorSpace tag, if any
     bool display_referred = false;  // integer pixels (8/16-bit): values are display-encoded
+    // The orb:passes header attribute: the layers of an orb-render EXR, whose
+    // RGB holds the environment the camera sees where alpha does not cover it
+    // (docs/design/background-and-alpha.md); "" for any other file.
+    std::string orb_passes;
     Image image;                // all channels, EXR layer names kept ("direct.R")
 };
 

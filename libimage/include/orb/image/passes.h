@@ -3,6 +3,7 @@
 // kernels/include/orb/kernels/film_channels.h) is
 //   beauty R,G,B,A   direct.R/G/B   indirect.R/G/B   emission.R/G/B
 //   albedo.R/G/B     N.X/Y/Z        Z                variance.R/G/B   id
+//   background.R/G/B
 // and any other "layer.channel" group counts as a pass named after its layer.
 #pragma once
 

@@ -11,7 +11,10 @@ struct WriteOptions {
     std::string format;  // "png", "jpg", "tif", "exr", ... (OIIO format or extension)
     int bits = 0;        // 0: the format's default (8; EXR: 16-bit half)
     bool dither = true;  // dither when quantising to 8 bits
-    bool premultiply_alpha = false;  // for formats that store associated alpha (EXR, TIFF)
+    // Colour with alpha comes straight (unassociated). true: premultiply it, for
+    // formats that store associated alpha (EXR); false: write it straight and
+    // say so in the file (PNG; TIFF's ExtraSamples "unassociated alpha").
+    bool premultiply_alpha = false;
     // The display record (display_record.h) to keep in the image's metadata,
     // where the format has a carrier for it (record_carrier.h); "" for none.
     std::string record;
