@@ -7,6 +7,7 @@
 #include "orb/cli/messages.h"
 #include "orb/exr/camera_matrices.h"
 #include "orb/exr/environment_map.h"
+#include "orb/image/texture_decoder.h"
 #include "orb/scene/animation.h"
 #include "orb/scene/import.h"
 #include "orb/scene/scene_json.h"
@@ -20,7 +21,9 @@ Scene read_scene(const std::string& path, std::string& label) {
     const std::string bytes = cli::read_input(path);
     const std::string base_dir =
         cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
-    ImportResult imported = import_scene(bytes, label, base_dir);
+    ImportOptions options;
+    options.gltf.image_decoder = image::texture_decoder();  // glTF textures, through OpenImageIO
+    ImportResult imported = import_scene(bytes, label, base_dir, options);
     for (const std::string& message : imported.warnings) cli::warning(message);
     for (const std::string& message : imported.notices) cli::warning(message);
     // The map's texels join the scene before it is hashed (they are part of its identity) and rendered.
