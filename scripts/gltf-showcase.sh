@@ -3,7 +3,9 @@
 # roughness, the Khronos sample asset MetalRoughSpheresNoTextures (CC0,
 # tests/data/gltf-sample-assets/), imported by orb-import, lit by a studio
 # environment map made here, rendered by orb-render, and set beside the
-# asset's own reference screenshot.
+# asset's own reference screenshot. Then the same for the Khronos sample
+# EnvironmentTest, whose spheres take their roughness and metallic from a
+# texture atlas (docs/gltf.md, "Textures").
 #
 #   scripts/gltf-showcase.sh [BUILD_DIR] [OUT_DIR] [SPP]
 #
@@ -46,4 +48,13 @@ oiiotool "$asset/screenshot.png" --ch R,G,B --resize 512x512 -o "$work/reference
 oiiotool "$work/orb.png" "$work/reference.png" --mosaic 2x1 -o "$out/gltf-metal-rough-spheres.png"
 "$build/bin/orb-tonemap" -q "$work/studio.exr" -o "$work/studio-full.png"
 oiiotool "$work/studio-full.png" --resize 512x256 -o "$out/gltf-studio-map.png"
-echo "wrote $out/gltf-metal-rough-spheres.png and $out/gltf-studio-map.png"
+
+# EnvironmentTest: its own camera (4:3), the same studio behind it.
+textured=$root/tests/data/gltf-sample-assets/EnvironmentTest
+"$build/bin/orb-import" -q "$textured/EnvironmentTest.gltf" --environment "$work/studio.exr" -o "$work/textured.json"
+"$build/bin/orb-render" "$work/textured.json" --width 480 --height 360 --spp "$spp" --seed 1 -o "$work/textured.exr" -q
+oiiotool "$work/textured.exr" --ch R,G,B -o "$work/textured-opaque.exr"
+"$build/bin/orb-tonemap" -q "$work/textured-opaque.exr" -o "$work/textured.png"
+oiiotool "$textured/screenshot.jpg" --ch R,G,B --fit:pad=1 480x360 -o "$work/textured-reference.png"
+oiiotool "$work/textured.png" "$work/textured-reference.png" --mosaic 2x1 -o "$out/gltf-environment-test.png"
+echo "wrote $out/gltf-metal-rough-spheres.png, $out/gltf-studio-map.png and $out/gltf-environment-test.png"
