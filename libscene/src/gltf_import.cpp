@@ -411,6 +411,8 @@ private:
                     texcoords.emplace(set, std::move(uvs));
             const std::vector<std::uint32_t> indices = read_indices(model_, primitive, positions.size(), what, diagnostics_);
             if (mode == TINYGLTF_MODE_POINTS) {
+                if (!textures_.texcoord_sets(primitive.material).empty())
+                    diagnostics_.lossy(what + ": POINTS take their material's factors; its textures are not read");
                 MeshPoints points;
                 points.material = primitive.material;
                 auto radius = primitive.attributes.find("_RADIUS");

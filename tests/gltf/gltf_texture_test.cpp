@@ -79,6 +79,10 @@ TEST_P(Textures, AtlasCellsBecomeOneMaterialPerDistinctValue) {
     EXPECT_NEAR(gradient.metallic, 0.5, kTexelRounding);
     expect_color(gradient.color, {1.0, 1.0, 1.0});
 
+    // Glow: emissiveFactor x the sRGB-decoded emissive texel.
+    const Material& glow = material_of(scene, "Glow");
+    expect_color(glow.emission, {srgb_to_linear(188.0 / 255.0), 0.5 * srgb_to_linear(94.0 / 255.0), 0.25});
+
     // Two warnings: the averaged sphere, and the normal texture that is not read.
     ASSERT_EQ(result.warnings.size(), 2u) << ::testing::PrintToString(result.warnings);
     EXPECT_TRUE(any_warning_contains(result, "textures vary over 1 sphere (Gradient; Gradient #1): each takes its "
@@ -112,7 +116,7 @@ TEST(Textures, WithoutADecoderOnlyTheFactorsCountAndTheWarningSaysWhy) {
     ASSERT_EQ(result.warnings.size(), 1u) << ::testing::PrintToString(result.warnings);
     EXPECT_EQ(result.warnings[0], generated("textures.glb") +
                                       ": ignored: 1 base-colour texture, 2 metallic-roughness textures, 1 normal "
-                                      "texture (textures are read only when the importer is given an image decoder)");
+                                      "texture, 1 emissive texture (textures are read only when the importer is given an image decoder)");
 }
 
 // Four broken images: each is named in a warning and its material keeps its factor.

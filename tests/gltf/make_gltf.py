@@ -651,12 +651,14 @@ def textures(out):
     "Gradient" spans a whole 2 x 2 metallic-roughness texture, columns (0, 0, 0)
     and (0, 255, 255), by projecting x -> u: the sphere's halves x < 0 and
     x > 0 have equal areas, so its averages are roughness 0.5 and metallic 0.5.
-    It also has a normal texture (not read)."""
+    It also has a normal texture (not read).
+    "Glow" (emissiveFactor (1, 0.5, 0.25)) has a 1 x 1 emissive texture (188, 94, 255)."""
     a = Asset()
     pts, idx = uv_sphere(1.0, segments=32, rings=16)
     mr = a.texture(a.image(png([[(0, 51, 255), (0, 102, 0)], [(0, 153, 128), (0, 204, 64)]]), "atlas_mr"), 10497)
     base = a.texture(a.image(png([[(255, 255, 255), (188, 0, 0)], [(0, 0, 0), (0, 188, 0)]]), "atlas_base"), 33071)
     gradient = a.texture(a.image(png([[(0, 0, 0), (0, 255, 255)], [(0, 0, 0), (0, 255, 255)]]), "gradient"))
+    glow = a.texture(a.image(png([[(188, 94, 255)]]), "glow"))
     a.extension_used("KHR_texture_transform")
     a.gltf["materials"] = [
         {"name": "Atlas", "pbrMetallicRoughness": {
@@ -666,6 +668,8 @@ def textures(out):
                 "KHR_texture_transform": {"offset": [0.5, 0]}}}}},
         {"name": "Gradient", "pbrMetallicRoughness": {"metallicRoughnessTexture": {"index": gradient}},
          "normalTexture": {"index": gradient}},
+        {"name": "Glow", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1]},
+         "emissiveFactor": [1, 0.5, 0.25], "emissiveTexture": {"index": glow}},
     ]
     # One mesh, one primitive, four spheres (connected parts) at x = 0, 3, 6, 9.
     positions, indices, uv0, uv1 = [], [], [], []
@@ -679,6 +683,8 @@ def textures(out):
     gradient_uvs = {"TEXCOORD_0": a.accessor(projected_uvs(pts, (0, 1), (0, 1)), "VEC2")}
     a.node(name="Gradient", translation=[0, -3, 0],
            mesh=a.mesh("Gradient", pts, idx, material=1, extra_attributes=gradient_uvs))
+    a.node(name="Glow", translation=[0, -6, 0],
+           mesh=a.mesh("Glow", pts, idx, material=2, extra_attributes=gradient_uvs))
     a.write_all(out, "textures")
     a.write_images_apart(out, "textures_data_uri", as_files=False)
     a.write_images_apart(out, "textures_files", as_files=True)
