@@ -486,15 +486,18 @@ private:
             any_colors = any_colors || !s.colors.empty();
         }
         const std::vector<SurfacePart> parts = connected_parts(all.points, all.triangles);
-        // Each part's triangles with their texture coordinates, when textures are read.
+        // Each part's triangles of textured materials with their texture coordinates.
         std::vector<SpherePatch> patches(parts.size());
         if (textures_.active()) {
             std::vector<std::size_t> part_of(all.points.size(), parts.size());
             for (std::size_t k = 0; k < parts.size(); ++k)
                 for (std::uint32_t v : parts[k].source_vertices) part_of[v] = k;
+            std::vector<bool> textured(surfaces.size());
+            for (std::size_t i = 0; i < surfaces.size(); ++i)
+                textured[i] = !textures_.texcoord_sets(surfaces[i].material).empty();
             for (const auto& t : all.triangles) {
-                if (part_of[t[0]] == parts.size()) continue;
                 const std::size_t o = owner[t[0]];
+                if (part_of[t[0]] == parts.size() || !textured[o]) continue;
                 patches[part_of[t[0]]].add(all.points, t, surfaces[o].material, surfaces[o].texcoords, first_point[o]);
             }
         }
