@@ -46,4 +46,5 @@ oiiotool "$asset/screenshot.png" --ch R,G,B --resize 512x512 -o "$work/reference
 oiiotool "$work/orb.png" "$work/reference.png" --mosaic 2x1 -o "$out/gltf-metal-rough-spheres.png"
 "$build/bin/orb-tonemap" -q "$work/studio.exr" -o "$work/studio-full.png"
 oiiotool "$work/studio-full.png" --resize 512x256 -o "$out/gltf-studio-map.png"
+
 echo "wrote $out/gltf-metal-rough-spheres.png and $out/gltf-studio-map.png"

@@ -29,13 +29,18 @@ bool is_texture_key(const std::string& key) {
 
 }  // namespace
 
-void IgnoredFeatures::add_material(const tinygltf::Material& material) {
+void IgnoredFeatures::add_material(const tinygltf::Material& material, bool textures_read) {
     const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
     const int core[kCoreTextureKinds] = {pbr.baseColorTexture.index, pbr.metallicRoughnessTexture.index,
                                          material.normalTexture.index, material.occlusionTexture.index,
                                          material.emissiveTexture.index};
-    for (std::size_t k = 0; k < kCoreTextureKinds; ++k)
-        if (core[k] >= 0) ++core_textures_[k];
+    // Base colour, metallic-roughness and emissive are read given a decoder.
+    const bool readable[kCoreTextureKinds] = {true, true, false, false, true};
+    for (std::size_t k = 0; k < kCoreTextureKinds; ++k) {
+        if (core[k] < 0 || (readable[k] && textures_read)) continue;
+        ++core_textures_[k];
+        if (readable[k]) unread_for_want_of_decoder_ = true;
+    }
     for (const auto& [name, value] : material.extensions) {
         if (!kReadMaterialExtensions.count(name)) {
             ++material_extensions_[name];
@@ -81,6 +86,7 @@ std::string IgnoredFeatures::summary(const tinygltf::Model& model) const {
     if (items.empty()) return "";
     std::string text = "ignored: ";
     for (std::size_t i = 0; i < items.size(); ++i) text += (i ? ", " : "") + items[i];
+    if (unread_for_want_of_decoder_) text += " (textures are read only when the importer is given an image decoder)";
     return text;
 }
 

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "gltf_internal.h"
+#include "gltf_textures.h"
 #include "orb/scene/error.h"
 #include "orb/scene/gltf.h"
 #include "orb/scene/scene_json.h"
@@ -109,6 +110,7 @@ struct MeshSphere {
     int material = -1;
     AnimVec3 color_scale{1, 1, 1};
     bool vertex_colors = false;
+    TextureValues textures;  // the material's textures averaged over this sphere
 };
 
 struct MeshPoints {
@@ -128,7 +130,8 @@ struct MeshContent {
 class Importer {
 public:
     Importer(const tinygltf::Model& model, const GltfImportOptions& options, Diagnostics& diagnostics)
-        : model_(model), options_(options), diagnostics_(diagnostics), materials_(model, scene_, diagnostics) {}
+        : model_(model), options_(options), diagnostics_(diagnostics), materials_(model, scene_, diagnostics),
+          textures_(model, options.image_decoder, diagnostics) {}
 
     Scene run() {
         if (const std::optional<std::size_t> clip = choose_animation())
@@ -143,6 +146,7 @@ public:
         choose_camera();
         report_non_spheres();
         report_scales();
+        averaged_textures_.report(diagnostics_);
         report_ignored();
         if (content_spheres == 0) no_spheres_ = why_no_spheres(scene_.spheres.size());
         return std::move(scene_);
@@ -391,6 +395,7 @@ private:
             std::vector<AnimVec3> points;  // referenced vertices only
             std::vector<std::array<std::uint32_t, 3>> triangles;
             std::vector<AnimVec3> colors;
+            std::map<int, std::vector<Uv>> texcoords;  // TEXCOORD_n that the material's textures read
             int material = -1;
         };
         std::vector<Surface> surfaces;
@@ -407,8 +412,14 @@ private:
             if (mode > TINYGLTF_MODE_TRIANGLE_FAN) diagnostics_.fail(what + ": unknown mode " + std::to_string(mode));
             std::vector<AnimVec3> positions = read_positions(position->second, what + " POSITION");
             std::vector<AnimVec3> colors = read_colors(primitive, positions.size(), what);
+            std::map<int, std::vector<Uv>> texcoords;
+            for (int set : textures_.texcoord_sets(primitive.material))
+                if (auto uvs = read_texcoords(model_, primitive, set, positions.size(), what, diagnostics_); !uvs.empty())
+                    texcoords.emplace(set, std::move(uvs));
             const std::vector<std::uint32_t> indices = read_indices(model_, primitive, positions.size(), what, diagnostics_);
             if (mode == TINYGLTF_MODE_POINTS) {
+                if (!textures_.texcoord_sets(primitive.material).empty())
+                    diagnostics_.lossy(what + ": POINTS take their material's factors; its textures are not read");
                 MeshPoints points;
                 points.material = primitive.material;
                 auto radius = primitive.attributes.find("_RADIUS");
@@ -440,6 +451,7 @@ private:
                     remap[i] = std::uint32_t(surface.points.size());
                     surface.points.push_back(positions[i]);
                     if (!colors.empty()) surface.colors.push_back(colors[i]);
+                    for (const auto& [set, uvs] : texcoords) surface.texcoords[set].push_back(uvs[i]);
                 }
                 local_indices.push_back(remap[i]);
             }
@@ -462,14 +474,16 @@ private:
         // one primitive may hold several spheres.
         Surface all;
         std::vector<std::size_t> owner;  // surface of each point of `all`
+        std::vector<std::uint32_t> first_point(surfaces.size(), 0);  // of each surface in `all`
         bool any_colors = false;
         for (std::size_t i = 0; i < surfaces.size(); ++i) {
             const Surface& s = surfaces[i];
             if (s.triangles.empty()) {
-                not_a_sphere(s.points, {{}, s.material, mean_color(s.colors), !s.colors.empty()});
+                not_a_sphere(s.points, {{}, s.material, mean_color(s.colors), !s.colors.empty(), {}});
                 continue;
             }
             const auto offset = std::uint32_t(all.points.size());
+            first_point[i] = offset;
             all.points.insert(all.points.end(), s.points.begin(), s.points.end());
             owner.insert(owner.end(), s.points.size(), i);
             for (auto t : s.triangles) all.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
@@ -478,7 +492,24 @@ private:
             else all.colors.insert(all.colors.end(), s.colors.begin(), s.colors.end());
             any_colors = any_colors || !s.colors.empty();
         }
-        for (const SurfacePart& part : connected_parts(all.points, all.triangles)) {
+        const std::vector<SurfacePart> parts = connected_parts(all.points, all.triangles);
+        // Each part's triangles of textured materials with their texture coordinates.
+        std::vector<SpherePatch> patches(parts.size());
+        if (textures_.active()) {
+            std::vector<std::size_t> part_of(all.points.size(), parts.size());
+            for (std::size_t k = 0; k < parts.size(); ++k)
+                for (std::uint32_t v : parts[k].source_vertices) part_of[v] = k;
+            std::vector<bool> textured(surfaces.size());
+            for (std::size_t i = 0; i < surfaces.size(); ++i)
+                textured[i] = !textures_.texcoord_sets(surfaces[i].material).empty();
+            for (const auto& t : all.triangles) {
+                const std::size_t o = owner[t[0]];
+                if (part_of[t[0]] == parts.size() || !textured[o]) continue;
+                patches[part_of[t[0]]].add(all.points, t, surfaces[o].material, surfaces[o].texcoords, first_point[o]);
+            }
+        }
+        for (std::size_t part_index = 0; part_index < parts.size(); ++part_index) {
+            const SurfacePart& part = parts[part_index];
             // The part takes the material of its first primitive.
             std::set<std::size_t> owners;
             AnimVec3 color_sum{0, 0, 0};
@@ -490,7 +521,8 @@ private:
             AnimVec3 color{1, 1, 1};
             if (any_colors)
                 for (int c = 0; c < 3; ++c) color[c] = color_sum[c] / double(part.source_vertices.size());
-            const MeshSphere look{{}, first.material, color, any_colors};
+            const MeshSphere look{{}, first.material, color, any_colors,
+                                  textures_.sample(first.material, patches[part_index])};
             std::optional<FittedSphere> fit = fit_sphere(part.points, part.triangles, options_.sphere_tolerance);
             if (!fit) {
                 not_a_sphere(part.points, look);
@@ -534,7 +566,9 @@ private:
                 const MeshSphere& s = content.spheres[k];
                 const std::string name =
                     content.spheres.size() > 1 ? instance_name + "." + std::to_string(k) : instance_name;
-                add_sphere(name, node, instances[i], s.shape, materials_.get(s.material, s.color_scale, s.vertex_colors));
+                const std::uint32_t material = materials_.get(s.material, s.color_scale, s.vertex_colors, &s.textures);
+                add_sphere(name, node, instances[i], s.shape, material);
+                if (s.textures.varies) averaged_textures_.add(name, scene_.materials[material].name);
             }
             for (const MeshPoints& points : content.points) add_points(instance_name, node, instances[i], points);
         }
@@ -798,7 +832,8 @@ private:
     }
 
     void report_ignored() {
-        for (int material : materials_.used()) ignored_.add_material(model_.materials[std::size_t(material)]);
+        for (int material : materials_.used())
+            ignored_.add_material(model_.materials[std::size_t(material)], textures_.active());
         const std::string summary = ignored_.summary(model_);
         if (!summary.empty()) diagnostics_.lossy_for_asset(summary);
     }
@@ -832,6 +867,8 @@ private:
     std::string no_spheres_;
     std::set<std::string> non_uniform_;
     IgnoredFeatures ignored_;
+    TextureReader textures_;
+    AveragedTextures averaged_textures_;
     std::set<std::size_t> distant_;  // scene_.spheres indices of directional-light emitters
 };
 

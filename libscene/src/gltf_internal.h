@@ -63,8 +63,10 @@ void add_default_light(Scene& scene, const std::string& source, std::vector<std:
 class IgnoredFeatures {
 public:
     // A glTF material that imported content uses: its textures and the
-    // material extensions Orb does not read.
-    void add_material(const tinygltf::Material& material);
+    // material extensions Orb does not read. `textures_read`: the importer
+    // reads base-colour, metallic-roughness and emissive textures (it has an
+    // image decoder), so only the others are ignored.
+    void add_material(const tinygltf::Material& material, bool textures_read);
     void add_spot_cone() { ++spot_cones_; }
     void add_range() { ++ranges_; }
     // "ignored: ..." naming everything counted plus the asset's extensions
@@ -77,6 +79,7 @@ private:
     std::array<std::size_t, kCoreTextureKinds> core_textures_{};
     std::map<std::string, std::size_t> extension_textures_;   // "kind texture|extension" -> references
     std::map<std::string, std::size_t> material_extensions_;  // name -> materials
+    bool unread_for_want_of_decoder_ = false;  // textures Orb reads with a decoder were ignored
     std::size_t spot_cones_ = 0;
     std::size_t ranges_ = 0;
 };
@@ -144,6 +147,8 @@ std::vector<std::array<std::uint32_t, 3>> triangles_of(int mode, const std::vect
 
 // ---- materials (gltf_materials.cpp) ----
 
+struct TextureValues;  // gltf_textures.h
+
 class MaterialTable {
 public:
     MaterialTable(const tinygltf::Model& model, Scene& scene, Diagnostics& diagnostics)
@@ -152,7 +157,10 @@ public:
     // material) with its base colour multiplied by `color_scale`.
     // `vertex_colors`: the primitive has COLOR_0, which then colours a
     // primitive without a material on its own (white base, as glTF says).
-    std::uint32_t get(int index, const AnimVec3& color_scale = {1.0, 1.0, 1.0}, bool vertex_colors = false);
+    // `textures`: what the material's textures give one sphere, multiplying
+    // the factors; each distinct result is one Orb material, "NAME #k".
+    std::uint32_t get(int index, const AnimVec3& color_scale = {1.0, 1.0, 1.0}, bool vertex_colors = false,
+                      const TextureValues* textures = nullptr);
     // A black emitter of radiance `emission` (lights).
     std::uint32_t emitter(const std::string& name, const Vec3& emission);
     // glTF material indices that imported content uses.
@@ -165,6 +173,7 @@ private:
     Scene& scene_;
     Diagnostics& diagnostics_;
     std::map<std::string, std::uint32_t> by_key_;
+    std::map<int, std::map<std::string, std::uint32_t>> textured_;  // glTF material -> values -> index
     std::set<int> used_;
 };
 

@@ -2,7 +2,8 @@
 // the GLB container and the JSON nesting depth are checked before tinygltf
 // sees them, external files are read only from inside the asset's directory
 // (through our own file-system callbacks, never the network), and images are
-// never decoded (textures are not supported, so stb never sees their bytes).
+// never decoded here: their bytes are kept for the importer's ImageDecoder
+// (gltf_textures.cpp), so stb never sees them.
 #include <tiny_gltf.h>
 
 #include <cstring>
@@ -73,8 +74,14 @@ bool refuse_write(std::string* err, const std::string&, const std::vector<unsign
     return false;
 }
 
-// Images are kept undecoded: Orb has no textures.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Keeps the encoded bytes of an image given by a data: URI or an external
+// file (tinygltf read them into a buffer of exactly `size` bytes). Images in
+// a bufferView are left alone: tinygltf hands those over without checking
+// the view against its buffer, so gltf_textures.cpp reads them itself.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+    image->as_is = true;  // encoded bytes, not pixels
+    if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
     return true;
 }
 
@@ -146,7 +153,7 @@ tinygltf::Model load_model(std::string_view bytes, const std::string& source, co
 
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&sandbox_file_exists, &sandbox_expand, &sandbox_read, &refuse_write, &sandbox});
-    loader.SetImageLoader(&skip_image, nullptr);
+    loader.SetImageLoader(&keep_image_bytes, nullptr);
     loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
 
     tinygltf::Model model;

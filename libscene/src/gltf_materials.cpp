@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "gltf_internal.h"
+#include "gltf_textures.h"
 
 namespace orb::gltf {
 namespace {
@@ -18,6 +19,15 @@ constexpr double kTransmissiveThreshold = 0.5;
 constexpr double kDefaultGrey = 0.8;
 
 double clamp01(double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0; }
+
+// Everything that tells two materials apart but their name.
+std::string value_key(const Material& material) {
+    char key[256];
+    std::snprintf(key, sizeof key, "%d|%.17g,%.17g,%.17g|%.17g,%.17g,%.17g|%.17g|%.17g|%.17g|", int(material.type),
+                  material.color[0], material.color[1], material.color[2], material.emission[0], material.emission[1],
+                  material.emission[2], material.ior, material.roughness, material.metallic);
+    return key;
+}
 
 }  // namespace
 
@@ -36,11 +46,7 @@ void MaterialTable::note_volume(const tinygltf::Material& m, const std::string& 
 }
 
 std::uint32_t MaterialTable::add(Material material) {
-    char key[256];
-    std::snprintf(key, sizeof key, "%d|%.17g,%.17g,%.17g|%.17g,%.17g,%.17g|%.17g|%.17g|%.17g|", int(material.type),
-                  material.color[0], material.color[1], material.color[2], material.emission[0], material.emission[1],
-                  material.emission[2], material.ior, material.roughness, material.metallic);
-    const std::string full_key = key + material.name;
+    const std::string full_key = value_key(material) + material.name;
     auto it = by_key_.find(full_key);
     if (it != by_key_.end()) return it->second;
     const auto index = std::uint32_t(scene_.materials.size());
@@ -49,7 +55,8 @@ std::uint32_t MaterialTable::add(Material material) {
     return index;
 }
 
-std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool vertex_colors) {
+std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool vertex_colors,
+                                 const TextureValues* textures) {
     Material out;
     if (index < 0) {
         out.name = "default";
@@ -65,17 +72,22 @@ std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool ve
     out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
     const std::string label = "material '" + out.name + "'";
 
+    // glTF multiplies each factor by its texture (docs/gltf.md, "Textures").
+    const bool textured = textures && textures->any();
     const std::vector<double>& base = m.pbrMetallicRoughness.baseColorFactor;
     for (int c = 0; c < 3; ++c) {
         const double factor = base.size() == 4 ? base[std::size_t(c)] : 1.0;
-        out.color[c] = clamp01(factor * color_scale[c]);
+        const double texture = textured && textures->base_color ? (*textures->base_color)[std::size_t(c)] : 1.0;
+        out.color[c] = clamp01(factor * texture * color_scale[c]);
     }
 
     double transmission = 0.0;
     if (const tinygltf::Value* ext = extension(m.extensions, "KHR_materials_transmission"))
         transmission = clamp01(number_at(*ext, "transmissionFactor").value_or(0.0));
-    const double metallic = clamp01(m.pbrMetallicRoughness.metallicFactor);
-    out.roughness = clamp01(m.pbrMetallicRoughness.roughnessFactor);
+    const double metallic =
+        clamp01(m.pbrMetallicRoughness.metallicFactor * (textured ? textures->metallic.value_or(1.0) : 1.0));
+    out.roughness =
+        clamp01(m.pbrMetallicRoughness.roughnessFactor * (textured ? textures->roughness.value_or(1.0) : 1.0));
     if ((1.0 - metallic) * transmission >= kTransmissiveThreshold) {
         out.type = MaterialType::Dielectric;
         out.ior = 1.5;  // the KHR_materials_ior default
@@ -96,7 +108,8 @@ std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool ve
         strength = number_at(*ext, "emissiveStrength").value_or(1.0);
     for (int c = 0; c < 3; ++c) {
         const double factor = m.emissiveFactor.size() == 3 ? m.emissiveFactor[std::size_t(c)] : 0.0;
-        const double e = factor * strength;
+        const double texture = textured && textures->emission ? (*textures->emission)[std::size_t(c)] : 1.0;
+        const double e = factor * strength * texture;
         if (!std::isfinite(e) || e < 0) {
             diagnostics_.lossy(label + ": emission must be finite and >= 0; using 0");
             out.emission[c] = 0.0;
@@ -105,7 +118,16 @@ std::uint32_t MaterialTable::get(int index, const AnimVec3& color_scale, bool ve
         }
     }
 
-    return add(std::move(out));
+    if (!textured) return add(std::move(out));
+    // One Orb material per distinct textured result of this glTF material,
+    // shared by every sphere that gets it.
+    std::map<std::string, std::uint32_t>& variants = textured_[index];
+    const std::string key = value_key(out);
+    if (auto it = variants.find(key); it != variants.end()) return it->second;
+    out.name += " #" + std::to_string(variants.size() + 1);
+    const std::uint32_t added = add(std::move(out));
+    variants.emplace(key, added);
+    return added;
 }
 
 std::uint32_t MaterialTable::emitter(const std::string& name, const Vec3& emission) {

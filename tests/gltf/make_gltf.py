@@ -13,6 +13,7 @@ import math
 import os
 import struct
 import sys
+import zlib
 
 FLOAT, UBYTE, USHORT, UINT = 5126, 5121, 5123, 5125
 TYPE_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
@@ -65,6 +66,48 @@ class Asset:
         if root:
             self.gltf["scenes"][0]["nodes"].append(index)
         return index
+
+    def image(self, data, name, mime="image/png"):
+        """Encoded image bytes stored in a bufferView; returns the image index."""
+        while len(self.blob) % 4:
+            self.blob.append(0)
+        offset = len(self.blob)
+        self.blob += data
+        self.gltf["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": len(data)})
+        self.gltf.setdefault("images", []).append(
+            {"name": name, "bufferView": len(self.gltf["bufferViews"]) - 1, "mimeType": mime})
+        return len(self.gltf["images"]) - 1
+
+    def texture(self, image, wrap=None):
+        """A texture of `image`; `wrap` (a glTF wrap mode) for both axes, else the default sampler."""
+        texture = {"source": image}
+        if wrap is not None:
+            self.gltf.setdefault("samplers", []).append({"wrapS": wrap, "wrapT": wrap})
+            texture["sampler"] = len(self.gltf["samplers"]) - 1
+        self.gltf.setdefault("textures", []).append(texture)
+        return len(self.gltf["textures"]) - 1
+
+    def write_images_apart(self, out_dir, name, as_files):
+        """NAME.gltf (external .bin) whose bufferView images are instead data:
+        URIs, or (as_files) PNG files beside it, NAME_image<i>.png."""
+        doc = self._clean()
+        for i, image in enumerate(doc.get("images", [])):
+            if "bufferView" not in image:
+                continue
+            view = doc["bufferViews"][image.pop("bufferView")]
+            data = bytes(self.blob[view["byteOffset"]:view["byteOffset"] + view["byteLength"]])
+            if as_files:
+                image["uri"] = "%s_image%d.png" % (name, i)
+                with open(os.path.join(out_dir, image["uri"]), "wb") as f:
+                    f.write(data)
+            else:
+                image["uri"] = "data:%s;base64,%s" % (image["mimeType"], base64.b64encode(data).decode())
+            del image["mimeType"]
+        doc["buffers"] = [{"byteLength": len(self.blob), "uri": name + ".bin"}]
+        with open(os.path.join(out_dir, name + ".bin"), "wb") as f:
+            f.write(self.blob)
+        with open(os.path.join(out_dir, name + ".gltf"), "w") as f:
+            json.dump(doc, f, indent=1)
 
     def extension_used(self, name):
         self.gltf.setdefault("extensionsUsed", [])
@@ -192,6 +235,27 @@ def ico_sphere(radius=1.0, subdivisions=2):
             new_faces += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
         faces = new_faces
     return [tuple(radius * c for c in v) for v in verts], [i for f in faces for i in f]
+
+
+def png(rows):
+    """An 8-bit RGB PNG of rows (top first) of (r, g, b) texels."""
+    raw = b"".join(b"\0" + bytes(c for texel in row for c in texel) for row in rows)
+
+    def chunk(tag, data):
+        return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF)
+
+    header = struct.pack(">IIBBBBB", len(rows[0]), len(rows), 8, 2, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
+
+
+def projected_uvs(pts, u_range, v_range):
+    """Texture coordinates by projecting a unit sphere's points along z onto
+    the rectangle u_range x v_range (x -> u, -y -> v)."""
+    uvs = []
+    for x, y, _ in pts:
+        uvs += [u_range[0] + (x + 1) / 2 * (u_range[1] - u_range[0]),
+                v_range[0] + (1 - y) / 2 * (v_range[1] - v_range[0])]
+    return uvs
 
 
 def cube(half=1.0):
@@ -576,11 +640,93 @@ def sandbox(out):
     json.dump(doc, open(os.path.join(out, "sub", "absolute.gltf"), "w"))
 
 
+def textures(out):
+    """Spheres whose materials come from textures (tests/gltf/gltf_texture_test.cpp).
+
+    "Atlas" (baseColorFactor (1, 0.5, 1), metallicFactor 0.5) reads two 2 x 2
+    atlases, one texel per cell, [row][column], rows top (v < 0.5) first:
+      metallic-roughness (R, G, B): [[(0, 51, 255), (0, 102, 0)], [(0, 153, 128), (0, 204, 64)]]
+        through TEXCOORD_0, KHR_texture_transform offset (0.5, 0), REPEAT;
+      base colour (sRGB): [[(255, 255, 255), (188, 0, 0)], [(0, 0, 0), (0, 188, 0)]]
+        through TEXCOORD_1 (= TEXCOORD_0 + (0.5, 0)), CLAMP_TO_EDGE.
+    Each sphere's TEXCOORD_0 covers [u0, u0 + 0.3] x [v0, v0 + 0.3]:
+      A0, A1: (0.1, 0.1)  MR cell [0][1] (G 102, B 0)   base [0][1] (188, 0, 0)
+      A2:     (0.6, 0.1)  MR cell [0][0] (G 51, B 255)  base [0][1] (clamped)
+      A3:     (1.6, 0.6)  MR cell [1][0] (G 153, B 128) base [1][1] (0, 188, 0)
+    so A0 and A1 share one material and there are three in all.
+    "Gradient" spans a whole 2 x 2 metallic-roughness texture, columns (0, 0, 0)
+    and (0, 255, 255), by projecting x -> u: the sphere's halves x < 0 and
+    x > 0 have equal areas, so its averages are roughness 0.5 and metallic 0.5.
+    It also has a normal texture (not read).
+    "Glow" (emissiveFactor (1, 0.5, 0.25)) has a 1 x 1 emissive texture (188, 94, 255)."""
+    a = Asset()
+    pts, idx = uv_sphere(1.0, segments=32, rings=16)
+    mr = a.texture(a.image(png([[(0, 51, 255), (0, 102, 0)], [(0, 153, 128), (0, 204, 64)]]), "atlas_mr"), 10497)
+    base = a.texture(a.image(png([[(255, 255, 255), (188, 0, 0)], [(0, 0, 0), (0, 188, 0)]]), "atlas_base"), 33071)
+    gradient = a.texture(a.image(png([[(0, 0, 0), (0, 255, 255)], [(0, 0, 0), (0, 255, 255)]]), "gradient"))
+    glow = a.texture(a.image(png([[(188, 94, 255)]]), "glow"))
+    a.extension_used("KHR_texture_transform")
+    a.gltf["materials"] = [
+        {"name": "Atlas", "pbrMetallicRoughness": {
+            "baseColorFactor": [1, 0.5, 1, 1], "metallicFactor": 0.5, "roughnessFactor": 1,
+            "baseColorTexture": {"index": base, "texCoord": 1},
+            "metallicRoughnessTexture": {"index": mr, "extensions": {
+                "KHR_texture_transform": {"offset": [0.5, 0]}}}}},
+        {"name": "Gradient", "pbrMetallicRoughness": {"metallicRoughnessTexture": {"index": gradient}},
+         "normalTexture": {"index": gradient}},
+        {"name": "Glow", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1]},
+         "emissiveFactor": [1, 0.5, 0.25], "emissiveTexture": {"index": glow}},
+    ]
+    # One mesh, one primitive, four spheres (connected parts) at x = 0, 3, 6, 9.
+    positions, indices, uv0, uv1 = [], [], [], []
+    for k, (u0, v0) in enumerate([(0.1, 0.1), (0.1, 0.1), (0.6, 0.1), (1.6, 0.6)]):
+        indices += [i + len(positions) for i in idx]
+        positions += [(x + 3 * k, y, z) for x, y, z in pts]
+        uv0 += projected_uvs(pts, (u0, u0 + 0.3), (v0, v0 + 0.3))
+        uv1 += projected_uvs(pts, (u0 + 0.5, u0 + 0.8), (v0, v0 + 0.3))
+    texcoords = {"TEXCOORD_0": a.accessor(uv0, "VEC2"), "TEXCOORD_1": a.accessor(uv1, "VEC2")}
+    a.node(name="A", mesh=a.mesh("Atlas", positions, indices, material=0, extra_attributes=texcoords))
+    gradient_uvs = {"TEXCOORD_0": a.accessor(projected_uvs(pts, (0, 1), (0, 1)), "VEC2")}
+    a.node(name="Gradient", translation=[0, -3, 0],
+           mesh=a.mesh("Gradient", pts, idx, material=1, extra_attributes=gradient_uvs))
+    a.node(name="Glow", translation=[0, -6, 0],
+           mesh=a.mesh("Glow", pts, idx, material=2, extra_attributes=gradient_uvs))
+    a.write_all(out, "textures")
+    a.write_images_apart(out, "textures_data_uri", as_files=False)
+    a.write_images_apart(out, "textures_files", as_files=True)
+
+
+def bad_images(out):
+    """Four spheres whose base-colour textures cannot be used, each a way an
+    image can be broken: bytes that are no image (data: URI), a PNG cut
+    short, a PNG whose header claims 100000 x 100000 texels, and a file that
+    does not exist. Each material keeps its factor: colours (0.1 k, 0.5, 0.5)."""
+    a = Asset()
+    pts, idx = uv_sphere(1.0, segments=16, rings=8)
+    good = png([[(255, 0, 0)]])
+    a.image(good[:40], "truncated")
+    header = struct.pack(">IIBBBBB", 100000, 100000, 8, 2, 0, 0, 0)
+    huge = good[:8] + struct.pack(">I", 13) + b"IHDR" + header + struct.pack(">I", zlib.crc32(b"IHDR" + header))
+    a.image(huge + good[33:], "huge")
+    a.gltf["images"].insert(0, {"name": "garbage", "uri": "data:image/png;base64," +
+                                base64.b64encode(b"this is not an image").decode()})
+    a.gltf["images"].append({"name": "missing", "uri": "missing.png"})
+    uv = {"TEXCOORD_0": a.accessor(projected_uvs(pts, (0, 1), (0, 1)), "VEC2")}
+    a.gltf["materials"] = []
+    for k in range(4):
+        a.gltf["textures"] = a.gltf.get("textures", []) + [{"source": k}]
+        a.gltf["materials"].append({"name": a.gltf["images"][k]["name"], "pbrMetallicRoughness": {
+            "baseColorFactor": [0.1 * (k + 1), 0.5, 0.5, 1], "baseColorTexture": {"index": k}}})
+        a.node(name="Ball%d" % k, translation=[3 * k, 0, 0],
+               mesh=a.mesh("Ball%d" % k, pts, idx, material=k, extra_attributes=uv))
+    a.write_gltf(out, "bad_images")
+
+
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
     for make in (nested, instanced, points, parts, non_sphere, materials, glass_volumes, ignored, cameras, lights, animation, clips,
-                 compressed, implicit_shapes, non_uniform, scenes, sandbox):
+                 compressed, implicit_shapes, non_uniform, scenes, sandbox, textures, bad_images):
         make(out)
     with open(os.path.join(out, "stamp"), "w") as f:
         f.write("ok\n")

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "orb/scene/image_decoder.h"
 #include "orb/scene/scene.h"
 
 namespace orb {
@@ -46,6 +47,10 @@ struct GltfImportOptions {
     // emissive material on a sphere) gets the default environment,
     // kDefaultEnvironmentRadiance, with a warning (docs/gltf.md).
     bool default_light = true;
+    // Reads the base-colour, metallic-roughness and emissive textures into
+    // each sphere's material (docs/gltf.md, "Textures"); without one,
+    // textures are ignored with a warning.
+    ImageDecoder image_decoder;
 };
 
 // The default environment's uniform radiance: under it a diffuse surface of
