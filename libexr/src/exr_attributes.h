@@ -18,6 +18,7 @@ inline constexpr const char* kSceneHash = "orb:sceneHash";
 inline constexpr const char* kSceneTime = "orb:sceneTime";
 inline constexpr const char* kVersion = "orb:version";
 inline constexpr const char* kPasses = "orb:passes";
+inline constexpr const char* kEnvironmentSeen = "orb:environmentSeen";
 inline constexpr const char* kFrame = "orb:frame";
 inline constexpr const char* kFps = "orb:fps";
 

@@ -39,6 +39,7 @@ std::vector<HeaderAttribute> header_attributes(const render::Film& film, const E
         {attr::kSceneTime, m.scene_time},
         {attr::kVersion, m.version},
         {attr::kPasses, format_passes(passes)},
+        {attr::kEnvironmentSeen, m.environment_seen ? 1 : 0},
     };
     if (m.frame) {
         a.push_back({attr::kFrame, checked_int(m.frame->number, attr::kFrame)});

@@ -115,6 +115,8 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
     if (!Imf::hasWorldToNDC(header)) fail(path, "missing header attribute worldToNDC");
     m.world_to_camera = from_imath(Imf::worldToCamera(header));
     m.world_to_ndc = from_imath(Imf::worldToNDC(header));
+    if (const auto* seen = header.findTypedAttribute<Imf::IntAttribute>(attr::kEnvironmentSeen))
+        m.environment_seen = seen->value() != 0;
     if (const auto* frame = header.findTypedAttribute<Imf::IntAttribute>(attr::kFrame)) {
         const auto& fps = required<Imf::DoubleAttribute>(header, attr::kFps, path);
         m.frame = FrameInfo{frame->value(), fps.value()};

@@ -77,7 +77,8 @@ Pass prepare_alpha(const Pass& pass, const LoadedImage& loaded, const AlphaOutpu
     const Image& rgba = pass.image;
     const size_t n = rgba.pixel_count();
     // The environment the camera saw, to take out of RGB: orb-render's
-    // background layer; nothing for other files, whose RGB is premultiplied.
+    // background layer; nothing for other files, whose RGB is premultiplied,
+    // nor for an orb-render image of a scene without environment light.
     const bool from_orb_render = !loaded.orb_passes.empty();
     std::optional<Pass> background;
     if (from_orb_render) {
@@ -85,7 +86,7 @@ Pass prepare_alpha(const Pass& pass, const LoadedImage& loaded, const AlphaOutpu
         if (std::find(present.begin(), present.end(), "background") != present.end())
             background = extract_pass(loaded.image, "background", display_name(loaded.source));
     }
-    if (from_orb_render && !background) {
+    if (from_orb_render && !background && loaded.environment_seen) {
         for (size_t p = 0; p < n; ++p)
             if (rgba.pixels[p * 4 + 3] < 1.0f)
                 throw InputError(display_name(loaded.source) +

@@ -123,6 +123,7 @@ LoadedImage load_image(const std::string& path) {
     result.color_space = spec0.get_string_attribute("oiio:ColorSpace");
     result.display_referred = !is_float_type(spec0.format) && result.format_name != "openexr";
     result.orb_passes = spec0.get_string_attribute("orb:passes");
+    result.environment_seen = spec0.get_int_attribute("orb:environmentSeen", 1) != 0;
 
     Image& image = result.image;
     image.width = spec0.width;

@@ -15,6 +15,8 @@ namespace {
 
 bool any_positive(const Vec3& v) { return v[0] > 0 || v[1] > 0 || v[2] > 0; }
 
+}  // namespace
+
 bool environment_emits(const Environment& environment) {
     switch (environment.kind) {
         case EnvironmentKind::None: return false;
@@ -27,8 +29,6 @@ bool environment_emits(const Environment& environment) {
         if (value > 0) return true;
     return false;
 }
-
-}  // namespace
 
 bool scene_has_light(const Scene& scene) {
     if (environment_emits(scene.environment)) return true;

@@ -196,6 +196,7 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.sampler = sampler_name(plan.config.sampler);
     m.scene_file = plan.scene_label;
     m.scene_hash = plan.scene_hash;
+    m.environment_seen = environment_emits(plan.scene.environment);
     m.scene_time = plan.scene_time;
     m.version = cli::version_string();
     m.world_to_camera = exr::world_to_camera(plan.scene.camera);

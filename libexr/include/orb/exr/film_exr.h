@@ -48,6 +48,11 @@ struct ExrMetadata {
     Matrix44 world_to_camera{};    // worldToCamera (standard attribute)
     Matrix44 world_to_ndc{};       // worldToNDC (standard attribute)
     std::optional<FrameInfo> frame;  // orb:frame and orb:fps, present only for frames of an animation
+    // orb:environmentSeen (1 or 0): whether camera rays that miss every sphere
+    // see radiance. With 0, RGB is the spheres' colour premultiplied by A;
+    // with 1 it holds the environment too where A < 1 (the background layer
+    // takes it out). Files without it count as 1.
+    bool environment_seen = true;
 };
 
 // Only lossless compressions: a resumed or merged render rebuilds the

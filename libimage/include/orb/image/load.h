@@ -17,6 +17,9 @@ struct LoadedImage {
     // RGB holds the environment the camera sees where alpha does not cover it
     // (docs/design/background-and-alpha.md); "" for any other file.
     std::string orb_passes;
+    // orb:environmentSeen of an orb-render EXR: false when no environment
+    // light was behind the spheres, so RGB is premultiplied as it stands.
+    bool environment_seen = true;
     Image image;                // all channels, EXR layer names kept ("direct.R")
 };
 

@@ -106,6 +106,10 @@ struct Scene {
     bool operator==(const Scene&) const = default;
 };
 
+// Whether the environment gives any light: a colour that is not black, or a
+// map whose intensity is positive (and whose texels, once loaded, are not all 0).
+bool environment_emits(const Environment& environment);
+
 // Whether anything in the scene emits light: a sphere whose material has
 // emission, or an environment that is not black (a map counts unless its
 // intensity is 0 or its attached texels are all 0). A scene without light
