@@ -207,5 +207,38 @@ TEST(GltfCli, WholeValidatorCorpus) {
     EXPECT_EQ(ok + refused, files);
 }
 
+// orb-import decodes textures through the module it loads from
+// ../lib/orb beside its own folder (the tools do not link OpenImageIO); a
+// copy of the tool without that module imports the factors alone and says
+// why, and --strict refuses.
+TEST(GltfCli, TexturesAreReadThroughTheLoadedDecoderAndItsAbsenceIsNamed) {
+    const fs::path out = scratch("textured.json");
+    ToolRun run = run_import(quote(generated("textures.glb")), out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    const Scene scene = load_scene_json(run.out, "textured");
+    const Sphere& a0 = sphere_named(scene, "A.0");
+    EXPECT_NEAR(scene.materials[a0.material].roughness, 102.0 / 255.0, 1e-6) << "the atlas cell, not the factor 1";
+
+    const fs::path bin = scratch("lonely") / "bin";
+    fs::create_directories(bin);
+    fs::copy_file(ORB_IMPORT_EXE, bin / "orb-import", fs::copy_options::overwrite_existing);
+    const fs::path err = scratch("lonely.err");
+    const std::string command = quote((bin / "orb-import").string()) + " " + quote(generated("textures.glb")) + " -o " +
+                                quote(out.string()) + " 2> " + quote(err.string());
+    int raw = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << read_file(err.string());
+    const std::string message = read_file(err.string());
+    EXPECT_NE(message.find("textures cannot be decoded here: the texture decoder (OpenImageIO) did not load ("),
+              std::string::npos) << message;
+    EXPECT_NE(message.find("lib/orb/orb_texture_decoder.so"), std::string::npos) << message;
+    EXPECT_EQ(sphere_named(load_scene_json(read_file(out.string()), "factors"), "A.0").name, "A.0");
+
+    fs::remove(out);
+    raw = std::system((command + " --strict").c_str());
+    EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 1) << read_file(err.string());
+    EXPECT_FALSE(fs::exists(out));
+    fs::remove_all(bin.parent_path());
+}
+
 }  // namespace
 }  // namespace orb::gltf_test

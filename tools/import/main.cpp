@@ -15,7 +15,7 @@
 #include "orb/cli/output_file.h"
 #include "orb/cli/output_overlap.h"
 #include "orb/cli/tool_main.h"
-#include "orb/image/texture_decoder.h"
+#include "orb/cli/texture_decoder_loader.h"
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
 #include "orb/scene/scene_binary.h"
@@ -88,7 +88,7 @@ int run(Arguments& args) {
     // Without --from, the content (and the name's extension) says the format (orb::import_scene).
     if (!args.from.empty()) args.import_options.format = orb::scene_format_from_name(args.from);
     args.import_options.gltf.strict = args.strict;
-    args.import_options.gltf.image_decoder = orb::image::texture_decoder();  // glTF textures, through OpenImageIO
+    args.import_options.gltf.image_decoder = orb::cli::texture_decoder();  // glTF textures, through OpenImageIO, loaded when needed
     // A chosen environment lights the scene: no default light for a glTF asset.
     if (!args.environment.value.empty()) args.import_options.gltf.default_light = false;
 

@@ -7,7 +7,7 @@
 #include "orb/cli/messages.h"
 #include "orb/exr/camera_matrices.h"
 #include "orb/exr/environment_map.h"
-#include "orb/image/texture_decoder.h"
+#include "orb/cli/texture_decoder_loader.h"
 #include "orb/scene/animation.h"
 #include "orb/scene/import.h"
 #include "orb/scene/scene_json.h"
@@ -23,7 +23,7 @@ Scene read_scene(const std::string& path, std::string& label, bool allow_empty) 
         cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
     ImportOptions options;
     options.allow_empty = allow_empty;
-    options.gltf.image_decoder = image::texture_decoder();  // glTF textures, through OpenImageIO
+    options.gltf.image_decoder = cli::texture_decoder();  // glTF textures, through OpenImageIO, loaded when needed
     ImportResult imported = import_scene(bytes, label, base_dir, options);
     for (const std::string& message : imported.warnings) cli::warning(message);
     for (const std::string& message : imported.notices) cli::warning(message);
