@@ -106,6 +106,18 @@ TEST(CameraOptions, BadValuesNameTheOption) {
     }
 }
 
+TEST(CameraOptions, PerspectiveTurnsAnOrthographicSceneCameraBack) {
+    Camera camera;
+    camera.orthographic_height = 7;
+    apply_camera_options(parse({"--perspective"}).camera, camera, "s.json");
+    EXPECT_EQ(camera.orthographic_height, 0);
+    camera.orthographic_height = 7;
+    apply_camera_options(parse({}).camera, camera, "s.json");
+    EXPECT_EQ(camera.orthographic_height, 7) << "without the flag the scene's camera stays";
+    EXPECT_NE(parse_error({"--perspective", "--orthographic", "2"}).find("excludes"), std::string::npos)
+        << parse_error({"--perspective", "--orthographic", "2"});
+}
+
 TEST(CameraOptions, GivenPartsReplaceTheCamerasOthersStay) {
     Camera camera;
     camera.position = {0, 1, 6};

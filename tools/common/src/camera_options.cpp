@@ -92,11 +92,18 @@ void add_camera_options(CLI::App& app, CameraOptions& o) {
                              "a distance > 0"))
         ->option_text("D")
         ->group("Camera");
-    app.add_option("--orthographic", o.orthographic_height,
-                   "An orthographic camera whose view is HEIGHT scene units high (default: the scene's)")
-        ->check(number_where([](double v) { return v >= kMinScenePositive && v <= kMaxSceneMagnitude; },
-                             "a height > 0 in scene units"))
-        ->option_text("HEIGHT")
+    CLI::Option* orthographic =
+        app.add_option("--orthographic", o.orthographic_height,
+                       "An orthographic camera whose view is HEIGHT scene units high (default: the scene's)")
+            ->check(number_where([](double v) { return v >= kMinScenePositive && v <= kMaxSceneMagnitude; },
+                                 "a height > 0 in scene units"))
+            ->option_text("HEIGHT")
+            ->group("Camera");
+    // The way back from a scene whose camera is orthographic (height 0 is the
+    // scene format's perspective camera).
+    app.add_flag_callback("--perspective", [&o] { o.orthographic_height = 0.0; },
+                          "A perspective camera, even where the scene's is orthographic")
+        ->excludes(orthographic)
         ->group("Camera");
     app.add_flag("--auto-camera", o.auto_camera,
                  "Frame the scene's spheres anew for this image (stray points left out), from the camera's "
