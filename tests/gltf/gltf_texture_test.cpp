@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <string>
@@ -16,6 +17,8 @@
 
 #include <filesystem>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "gltf_test_util.h"
 #include "orb/image/texture_decoder.h"
@@ -197,4 +200,38 @@ TEST(TextureDecoder, CorruptBytesGiveAnErrorOrTexels) {
 
 
 }  // namespace
+// A real textured asset: the Khronos sample BoxTextured (a cube whose six
+// faces each carry the whole Cesium logo, REPEAT over u in [0, 6]), its cube
+// kept as a bounding sphere. The texture varies over that sphere, so its
+// material is the texture's mean, sRGB-decoded, with one warning. Each face
+// covers the texture once, so the area-weighted mean is the mean of the
+// texels; the importer samples nearest texels at 2 x 32 x 32 points a face
+// (0.00017 from the exact mean here), hence the 1e-3.
+TEST(Textures, ARealTexturedBoxTakesItsTexturesMean) {
+    const std::string path = std::string(ORB_GLTF_SAMPLE_ASSETS_DIR) + "/BoxTextured/BoxTextured.glb";
+    GltfImportOptions options = with_decoder();
+    options.non_spheres = NonSpherePolicy::Bound;
+    const GltfImportResult result = import_gltf(read_file(path), path, "", options);
+    ASSERT_EQ(result.scene.spheres.size(), 1u);
+    const Material& m = result.scene.materials.at(result.scene.spheres[0].material);
+    EXPECT_TRUE(any_warning_contains(result, "textures vary over 1 sphere (Mesh; Texture #1)"))
+        << ::testing::PrintToString(result.warnings);
+
+    // The embedded PNG's texels, decoded on their own and averaged.
+    const std::string glb = read_file(path);
+    const std::uint32_t json_length = *reinterpret_cast<const std::uint32_t*>(glb.data() + 12);
+    const nlohmann::json json = nlohmann::json::parse(glb.substr(20, json_length));
+    const nlohmann::json& view = json["bufferViews"][json["images"][0]["bufferView"].get<int>()];
+    const std::size_t binary = 20 + json_length + 8;
+    const DecodedImage logo = image::decode_texture(
+        std::string_view(glb).substr(binary + view.value("byteOffset", 0), view["byteLength"].get<std::size_t>()),
+        "image/png", "logo");
+    ASSERT_GE(logo.channels, 3);
+    double mean[3] = {0, 0, 0};
+    const std::size_t texels = std::size_t(logo.width) * std::size_t(logo.height);
+    for (std::size_t t = 0; t < texels; ++t)
+        for (int c = 0; c < 3; ++c) mean[c] += srgb_to_linear(logo.texels[t * logo.channels + c]) / double(texels);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(m.color[c], mean[c], 1e-3) << "channel " << c;
+}
+
 }  // namespace orb::gltf_test
