@@ -112,7 +112,7 @@ inline float3 sample_environment(const SceneView* scene, float u, float v, float
 // the viewer, n the normal on wo's side; the interface of kernels/bsdf.cl)
 // from the environment, chosen with probability `pick_pdf`, weighted against
 // BSDF sampling by the power heuristic. The shadow ray must escape: it may
-// hit nothing at all (light_visible with light -1, through shadow_ray_unblocked).
+// hit nothing at all (light_visible with light -1).
 inline float3 estimate_environment_light(const SceneView* scene, float pick_pdf, float3 p, int self, const Bsdf* bsdf,
                                          float3 wo, float3 n, bool outside, float u, float v)
 {
@@ -123,7 +123,7 @@ inline float3 estimate_environment_light(const SceneView* scene, float pick_pdf,
     const float3 f_cos = bsdf_eval(bsdf, wo, wi, n, outside, &bsdf_pdf);
     // Nothing to carry (below the surface, outside every lobe, or black): no shadow ray.
     if (!(f_cos.x + f_cos.y + f_cos.z > 0.0f)) return (float3)(0.0f);
-    if (!shadow_ray_unblocked(scene, p, wi, self, -1)) return (float3)(0.0f);
+    if (!light_visible(scene, p, wi, self, -1)) return (float3)(0.0f);
     const float light_pdf = pick_pdf * texel.w;
     const float weight = power_heuristic(light_pdf, continuation_pdf(scene, p, bsdf_pdf, wi));
     return texel.xyz * f_cos * (weight / light_pdf);

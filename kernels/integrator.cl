@@ -213,12 +213,7 @@ inline bool follow_hit(const SceneView* scene, PathState* path, PathSample* out,
         }
         const float3 light_sample =
             path->beta * sample_lights(scene, p, hit.id, &m.bsdf, wo, n, outside, ORB_LIGHT_PAIR, mode);
-#if ORB_WAVEFRONT
-        // Counted only once its shadow ray is found unblocked (wavefront.cl).
-        scene->deferred_shadow->contribution = light_sample;
-#else
         add_by_vertex_count(out, path->nondelta_vertices + 1, light_sample);
-#endif
         u_direction = ORB_DIRECTION_PAIR;
     }
 #undef ORB_LIGHT_PAIR
@@ -331,9 +326,6 @@ inline FilmCentre film_centre_ray(const SceneView* scene, const CameraParams* ca
     scene.bvh_node_count = params.scene.bvh_node_count;                                              \
     scene.caster_count = params.scene.caster_count;                                                  \
     scene.environment = params.environment;
-// Not in the wavefront prototype's program, whose next-event estimates queue
-// their shadow rays instead of casting them (wavefront.cl).
-#if !ORB_WAVEFRONT
 __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG))
 {
     const int width = params.settings.width;
@@ -386,4 +378,3 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     }
     ORB_FILM_ADD_SUMS
 }
-#endif

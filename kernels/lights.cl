@@ -10,21 +10,6 @@
 // light_direction_pdf() gives the same density for a direction reached by BSDF
 // sampling, for multiple importance sampling; both use the same test.
 
-// A next-event estimate's visibility test. The megakernels cast the shadow
-// ray at once; the wavefront prototype records it and counts the light as
-// visible, and its shadow kernel adds the estimate only if it is.
-#if ORB_WAVEFRONT
-inline bool shadow_ray_unblocked(const SceneView* scene, float3 p, float3 wi, int self, int light)
-{
-    scene->deferred_shadow->direction = wi;
-    scene->deferred_shadow->light = light;
-    scene->deferred_shadow->pending = 1;
-    return true;
-}
-#else
-#define shadow_ray_unblocked light_visible
-#endif
-
 inline bool light_surrounds(float3 p, int self, int light_id, float3 centre, float radius)
 {
     const float3 pc = centre - p;
@@ -68,7 +53,7 @@ inline float3 estimate_direct_light(const SceneView* scene, int light_id, float 
     const float3 f_cos = bsdf_eval(bsdf, wo, wi, n, outside, &bsdf_pdf);
     // Nothing to carry (below the surface, outside every lobe, or black): no shadow ray.
     if (!(f_cos.x + f_cos.y + f_cos.z > 0.0f)) return (float3)(0.0f);
-    if (!shadow_ray_unblocked(scene, p, wi, self, light_id)) return (float3)(0.0f);
+    if (!light_visible(scene, p, wi, self, light_id)) return (float3)(0.0f);
     const float light_pdf = pick_pdf * direction_pdf;
     // BSDF sampling's side of the pair is the continuation's mixture (caustic_casters.cl).
     const float weight = power_heuristic(light_pdf, continuation_pdf(scene, p, bsdf_pdf, wi));

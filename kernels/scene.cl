@@ -13,22 +13,6 @@
 #define ORB_UNIFORM_LIGHTS 0
 #endif
 
-// 1 in the wavefront prototype's program (kernels/wavefront.cl): a path's
-// next-event estimate does not cast its shadow ray but records it for a
-// kernel of its own (lights.cl, shadow_ray_unblocked).
-#ifndef ORB_WAVEFRONT
-#define ORB_WAVEFRONT 0
-#endif
-#if ORB_WAVEFRONT
-// The shadow ray of one next-event estimate, left for later.
-typedef struct {
-    float3 direction;
-    float3 contribution;  // the estimate if the light is visible, path throughput included
-    int light;            // sphere slot, -1 the environment
-    int pending;          // 1 when the estimate asked for a shadow ray
-} DeferredShadowRay;
-#endif
-
 // One pointer per scene table of render_pass's argument list, plus the
 // tables' lengths; generated from the list so that a new table needs no edit here.
 #define ORB_SCENE_VIEW_FILM(name, components, clear, accumulate, merge, layer, stored_as, paired, names)
@@ -43,9 +27,6 @@ typedef struct {
     int bvh_node_count;
     int caster_count;
     EnvironmentParams environment;  // width 0: none
-#if ORB_WAVEFRONT
-    DeferredShadowRay* deferred_shadow;  // where this work-item's next-event estimate leaves its shadow ray
-#endif
 } SceneView;
 
 // A hit sphere with its material, unpacked for shading.

@@ -12,8 +12,6 @@ cp "$build/bin/orb-render" "$out/"
 if [[ -x "$build/bin/orb-trace-benchmark" ]]; then cp "$build/bin/orb-trace-benchmark" "$out/"; fi
 # And the CUDA replay of a captured pass, for Nsight Compute ("Nsight Compute through a CUDA replay").
 if [[ -x "$build/bin/orb-cuda-replay" ]]; then cp "$build/bin/orb-cuda-replay" "$out/"; fi
-# And the wavefront prototype against render_pass (docs/performance.md, "A wavefront renderer, measured").
-if [[ -x "$build/bin/orb-wavefront-benchmark" ]]; then cp "$build/bin/orb-wavefront-benchmark" "$out/"; fi
 # And the host BVH build's benchmark, to time the tree on the node's cores.
 if [[ -x "$build/bin/orb-bvh-benchmark" ]]; then cp "$build/bin/orb-bvh-benchmark" "$out/"; fi
 cp -L /usr/lib/x86_64-linux-gnu/libOpenCL.so.1 "$out/"

@@ -36,8 +36,7 @@ std::string with_development_options(std::string options);
 // The options render_pass is built with for `scene` under `config` on the
 // session's device (render_pass_simd with `simd_lanes` > 0): where the scene
 // lives, the traversal, only the code the scene and the film use, the
-// register cap. Other programs that run render_pass's code take them too
-// (the wavefront prototype, wavefront_renderer.h).
+// register cap.
 std::string render_program_options(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
                                    int simd_lanes);
 

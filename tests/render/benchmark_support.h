@@ -1,6 +1,6 @@
 #pragma once
 // What the development benchmarks in tests/render (orb-bvh-benchmark,
-// orb-bvh-refit-benchmark, orb-trace-benchmark, orb-wavefront-benchmark)
+// orb-bvh-refit-benchmark, orb-trace-benchmark)
 // share: reading a scene file of any format orb-import reads, and wall time.
 #include <chrono>
 #include <fstream>

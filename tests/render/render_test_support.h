@@ -17,7 +17,7 @@ int add_sphere(Scene& scene, Vec3 centre, double radius, std::uint32_t material)
 
 // Diffuse, mirror and glass balls on a huge floor, three lights of unequal
 // power (the alias table picks them), seen through a thin lens: every branch
-// of the path tracer's kernels (simd_kernel_test.cpp, wavefront_test.cpp).
+// of the path tracer's kernels (simd_kernel_test.cpp).
 Scene every_branch_scene();
 
 RenderConfig small_config(int width, int height, std::uint64_t seed = 7, int max_depth = 6,
@@ -75,7 +75,7 @@ void expect_same_up_to_rounding(const std::vector<float>& a, const std::vector<f
 void expect_same_films_up_to_rounding(const Film& a, const Film& b);
 
 // Two kernels that render the same paths of the same samples (render_pass
-// and render_pass_simd, or the wavefront prototype): only where float
+// and render_pass_simd): only where float
 // rounding differs (fused multiply-adds, a reciprocal square root for a
 // normalize) can a path take another branch near an edge or a roulette
 // threshold. Expects at most a tenth of the values `a` and `b` (sums of a
