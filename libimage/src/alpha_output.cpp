@@ -6,15 +6,11 @@
 #include <optional>
 
 #include "number_text.h"
+#include "srgb.h"
 #include "orb/scene/error.h"
 
 namespace orb::image {
 namespace {
-
-// The sRGB transfer function's inverse (IEC 61966-2-1): encoded V in [0, 1] -> linear.
-float srgb_to_linear(float v) {
-    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
 
 int hex_digit(char c) {
     if (c >= '0' && c <= '9') return c - '0';

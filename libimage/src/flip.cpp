@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "orb/scene/error.h"
+#include "srgb.h"
 
 namespace orb::image {
 namespace {
@@ -29,10 +30,6 @@ constexpr float kWhite[3] = {0.9504559f, 1.0f, 1.0890578f};
 
 void mat3(const float m[3][3], const float in[3], float out[3]) {
     for (int i = 0; i < 3; ++i) out[i] = m[i][0] * in[0] + m[i][1] * in[1] + m[i][2] * in[2];
-}
-
-float srgb_to_linear(float v) {
-    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
 // Linear RGB -> YCxCz, the linearised CIELAB the paper filters in.

@@ -6,6 +6,8 @@
 #include <exception>
 #include <limits>
 
+#include "srgb.h"
+
 namespace orb::gltf {
 namespace {
 
@@ -17,11 +19,8 @@ constexpr int kMaxSubdivision = 32;
 // file (millions of triangles, each across the whole texture) can ask for.
 constexpr double kMaxSamplesPerSphere = 4.0e6;
 
-// IEC 61966-2-1 sRGB decoding: glTF's base-colour and emissive textures are
-// sRGB-encoded, their factors linear.
-double srgb_to_linear(double encoded) {
-    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
+// glTF's base-colour and emissive textures are sRGB-encoded, their factors linear.
+using detail::srgb_to_linear;
 
 // Wraps a texture coordinate into [0, 1] as the sampler says.
 double wrap(double t, int mode) {

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "json_text.h"
+#include "srgb.h"
 #include "orb/scene/auto_framing.h"
 #include "orb/scene/error.h"
 
@@ -23,9 +24,7 @@ struct Bounds {
 
 // PLY colours are display values (what point-cloud viewers show as is), so
 // they are sRGB-encoded; the scene holds linear Rec.709 reflectance.
-double srgb_to_linear(double encoded) {
-    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
+using detail::srgb_to_linear;
 
 struct ColorHash {
     std::size_t operator()(const Vec3& c) const {

@@ -1,5 +1,7 @@
 #include "exr_channels.h"
 
+#include <gtest/gtest.h>
+
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -27,6 +29,16 @@ RawExr read_raw_exr(const std::string& path) {
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
     return raw;
+}
+
+void expect_same_pixels(const RawExr& a, const RawExr& b) {
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    ASSERT_EQ(a.channels.size(), b.channels.size());
+    for (const auto& [name, values] : a.channels) {
+        ASSERT_TRUE(b.channels.count(name)) << name;
+        EXPECT_EQ(values, b.channels.at(name)) << "channel " << name;
+    }
 }
 
 }  // namespace orb::exr::testing

@@ -18,4 +18,8 @@ struct RawExr {
 
 RawExr read_raw_exr(const std::string& path);
 
+// Every channel of two images equal bit for bit (two renders of the same
+// samples), with gtest failures naming the channel.
+void expect_same_pixels(const RawExr& a, const RawExr& b);
+
 }  // namespace orb::exr::testing

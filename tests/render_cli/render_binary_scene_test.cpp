@@ -7,6 +7,7 @@
 #include "orb/scene/scene_binary.h"
 
 using namespace orb::test;
+using orb::exr::testing::expect_same_pixels;
 using orb::exr::testing::read_raw_exr;
 
 TEST_F(RenderCli, BinarySceneRendersTheSamePixelsAsJson) {
@@ -21,15 +22,7 @@ TEST_F(RenderCli, BinarySceneRendersTheSamePixelsAsJson) {
     const auto from_binary = render({binary_file, "-o", path("binary.exr"), "--seed", "11", "--spp", "3"});
     ASSERT_EQ(from_binary.exit_code, 0) << from_binary.err;
 
-    const auto a = read_raw_exr(path("json.exr"));
-    const auto b = read_raw_exr(path("binary.exr"));
-    ASSERT_EQ(a.width, b.width);
-    ASSERT_EQ(a.height, b.height);
-    ASSERT_EQ(a.channels.size(), b.channels.size());
-    for (const auto& [name, values] : a.channels) {
-        ASSERT_TRUE(b.channels.count(name)) << name;
-        EXPECT_EQ(values, b.channels.at(name)) << "channel " << name;
-    }
+    expect_same_pixels(read_raw_exr(path("json.exr")), read_raw_exr(path("binary.exr")));
 }
 
 TEST_F(RenderCli, BrokenBinarySceneIsOneErrorAndNoImage) {

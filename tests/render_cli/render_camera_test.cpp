@@ -11,22 +11,11 @@
 #include "orb/scene/scene_binary.h"
 
 using namespace orb::test;
-using orb::exr::testing::RawExr;
+using orb::exr::testing::expect_same_pixels;
 using orb::exr::testing::read_raw_exr;
 namespace fs = std::filesystem;
 
 namespace {
-
-// Every channel of two renders of the same samples, bit for bit.
-void expect_same_pixels(const RawExr& a, const RawExr& b) {
-    ASSERT_EQ(a.width, b.width);
-    ASSERT_EQ(a.height, b.height);
-    ASSERT_EQ(a.channels.size(), b.channels.size());
-    for (const auto& [name, values] : a.channels) {
-        ASSERT_TRUE(b.channels.count(name)) << name;
-        EXPECT_EQ(values, b.channels.at(name)) << "channel " << name;
-    }
-}
 
 int count_lines(const std::string& text, const std::string& what) {
     int n = 0;
