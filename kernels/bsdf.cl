@@ -1,52 +1,57 @@
-// The BSDF interface (conventions in bsdf_types.cl): one switch per entry
-// point over the material kinds, each case calling the material's own file.
-// Adding a material is a MaterialKind, its file, and one line in each switch.
+// The BSDF interface (conventions in bsdf_types.cl): each entry point
+// dispatches over the rows of ORB_MATERIAL_TABLE (material_kinds.h) to the
+// kind's own file. Adding a material is a row there and its file; no switch
+// here names a kind.
 //
 // A program carries only the kinds its scene uses: the host passes
 // -DORB_MATERIAL_KINDS, bit k for MaterialKind k (all kinds when absent, as
-// in the BSDF tests). A kind left out is never asked for; its case falls
-// back to diffuse, and its code is gone from the program.
+// in the BSDF tests). A kind left out is never asked for; its case is gone
+// from the program, and asking for it anyway is a host error (the kinds
+// mask is made from the scene).
 #ifndef ORB_MATERIAL_KINDS
 #define ORB_MATERIAL_KINDS 0xffffffffu
 #endif
 #define ORB_KIND_BUILT(kind) ((((uint)(ORB_MATERIAL_KINDS)) >> (kind)) & 1u)
-#define ORB_BSDF_CASE(kind, call) \
-    case kind:                    \
-        if (ORB_KIND_BUILT(kind)) return call; \
-        break;
 
+#define ORB_BSDF_CASE_HAS_DENSITY(member, value, name, scn_word, prefix, caster_rule) \
+    case MaterialKind_##member:                                                       \
+        if (ORB_KIND_BUILT(MaterialKind_##member)) return prefix##_has_density(b);   \
+        break;
 inline bool bsdf_has_density(const Bsdf* b)
 {
     switch (b->kind) {
-        ORB_BSDF_CASE(MaterialKind_Mirror, mirror_has_density(b))
-        ORB_BSDF_CASE(MaterialKind_Dielectric, dielectric_has_density(b))
-        ORB_BSDF_CASE(MaterialKind_Pbr, pbr_has_density(b))
+        ORB_MATERIAL_TABLE(ORB_BSDF_CASE_HAS_DENSITY)
         default: break;
     }
-    return diffuse_has_density(b);
+    return false;
 }
 
+#define ORB_BSDF_CASE_SAMPLE(member, value, name, scn_word, prefix, caster_rule)                     \
+    case MaterialKind_##member:                                                                     \
+        if (ORB_KIND_BUILT(MaterialKind_##member)) return prefix##_sample(b, wo, n, outside, u, v, choice); \
+        break;
 inline BsdfSample bsdf_sample(const Bsdf* b, float3 wo, float3 n, bool outside, float u, float v, float* choice)
 {
     switch (b->kind) {
-        ORB_BSDF_CASE(MaterialKind_Mirror, mirror_sample(b, wo, n, outside, u, v, choice))
-        ORB_BSDF_CASE(MaterialKind_Dielectric, dielectric_sample(b, wo, n, outside, u, v, choice))
-        ORB_BSDF_CASE(MaterialKind_Pbr, pbr_sample(b, wo, n, outside, u, v, choice))
+        ORB_MATERIAL_TABLE(ORB_BSDF_CASE_SAMPLE)
         default: break;
     }
-    return diffuse_sample(b, wo, n, outside, u, v, choice);
+    return bsdf_no_sample();
 }
 
 // f(wo, wi) |cos(wi, n)| over the lobes with a density; *pdf: the density of wi under bsdf_sample.
+#define ORB_BSDF_CASE_EVAL(member, value, name, scn_word, prefix, caster_rule)                     \
+    case MaterialKind_##member:                                                                   \
+        if (ORB_KIND_BUILT(MaterialKind_##member)) return prefix##_eval(b, wo, wi, n, outside, pdf); \
+        break;
 inline float3 bsdf_eval(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outside, float* pdf)
 {
     switch (b->kind) {
-        ORB_BSDF_CASE(MaterialKind_Mirror, mirror_eval(b, wo, wi, n, outside, pdf))
-        ORB_BSDF_CASE(MaterialKind_Dielectric, dielectric_eval(b, wo, wi, n, outside, pdf))
-        ORB_BSDF_CASE(MaterialKind_Pbr, pbr_eval(b, wo, wi, n, outside, pdf))
+        ORB_MATERIAL_TABLE(ORB_BSDF_CASE_EVAL)
         default: break;
     }
-    return diffuse_eval(b, wo, wi, n, outside, pdf);
+    *pdf = 0.0f;
+    return (float3)(0.0f);
 }
 
 inline float bsdf_pdf(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outside)
@@ -56,13 +61,15 @@ inline float bsdf_pdf(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outsid
     return pdf;
 }
 
+#define ORB_BSDF_CASE_ALBEDO(member, value, name, scn_word, prefix, caster_rule)    \
+    case MaterialKind_##member:                                                     \
+        if (ORB_KIND_BUILT(MaterialKind_##member)) return prefix##_albedo(b, wo, n); \
+        break;
 inline float3 bsdf_albedo(const Bsdf* b, float3 wo, float3 n)
 {
     switch (b->kind) {
-        ORB_BSDF_CASE(MaterialKind_Mirror, mirror_albedo(b, wo, n))
-        ORB_BSDF_CASE(MaterialKind_Dielectric, dielectric_albedo(b, wo, n))
-        ORB_BSDF_CASE(MaterialKind_Pbr, pbr_albedo(b, wo, n))
+        ORB_MATERIAL_TABLE(ORB_BSDF_CASE_ALBEDO)
         default: break;
     }
-    return diffuse_albedo(b, wo, n);
+    return (float3)(0.0f);
 }

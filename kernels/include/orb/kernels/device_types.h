@@ -6,8 +6,9 @@
  * 1.2 program starts with it: kernels/CMakeLists.txt lists it first among the
  * kernel files, which are concatenated into one program (embedded, from
  * --kernel-dir, or from <prefix>/share/orb/kernels, which mirrors kernels/).
- * It therefore includes nothing on the OpenCL side (film_channels.h, which the
- * host includes below, comes before it in the program).
+ * It therefore includes nothing on the OpenCL side (film_channels.h and
+ * material_kinds.h, which the host includes below, come before it in the
+ * program).
  *
  * Rules that keep the host's and the device's layouts identical:
  *  - Fields are int, uint, float (4 bytes, 4-aligned on both sides), float4
@@ -40,6 +41,7 @@
 #include <cstdint>
 
 #include "orb/kernels/film_channels.h"
+#include "orb/kernels/material_kinds.h"
 
 namespace orb::device {
 
@@ -64,15 +66,14 @@ static_assert(sizeof(int4) == 16 && alignof(int4) == 16, "OpenCL C's int4 is 16 
 
 /* ---- Enums (struct fields hold them as int) ---- */
 
-/* How a material scatters light (kernels/bsdf.cl dispatches to one
- * kernels/bsdf_NAME.cl per kind). Also the scene model's material type:
- * libscene's orb::MaterialType is this enum. */
-ORB_ENUM(MaterialKind){
-    ORB_ENUMERATOR(MaterialKind, Diffuse, 0),
-    ORB_ENUMERATOR(MaterialKind, Mirror, 1),
-    ORB_ENUMERATOR(MaterialKind, Dielectric, 2), /* smooth or rough glass */
-    ORB_ENUMERATOR(MaterialKind, Pbr, 3),        /* glTF 2.0 metallic-roughness */
-};
+/* How a material scatters light: one enumerator per row of
+ * ORB_MATERIAL_TABLE (material_kinds.h), which also names the kinds in the
+ * scene format and generates the kernels' dispatch. Also the scene model's
+ * material type: libscene's orb::MaterialType is this enum. */
+#define ORB_MATERIAL_KIND_ENUMERATOR(member, value, name, scn_word, prefix, caster_rule) \
+    ORB_ENUMERATOR(MaterialKind, member, value),
+ORB_ENUM(MaterialKind){ORB_MATERIAL_TABLE(ORB_MATERIAL_KIND_ENUMERATOR)};
+#undef ORB_MATERIAL_KIND_ENUMERATOR
 
 /* What the integrator estimates (docs/rendering.md); librender's public
  * orb::render::IntegratorMode is this enum. */
