@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Cost per sample against sphere count (docs/performance.md, issue 9).
+"""Cost per sample against sphere count (docs/performance.md, "Many spheres").
 
 Generates the benchmark scenes with scripts/orb-gen.py (fixed seeds, cached
 in --work), runs `orb-render --benchmark` on each in interleaved rounds (so a

@@ -5,7 +5,7 @@
 # aborts with Debian 12's libLLVM, 3.5.2's works.
 #
 #   scripts/compare-mitsuba.sh scenes/cornell.scn
-#   scripts/compare-mitsuba.sh scenes/*.scn --json docs/benchmarks/mitsuba.json
+#   scripts/compare-mitsuba.sh scenes/*.scn --json mitsuba.json
 # Arguments go to compare_mitsuba.py (--width, --height, --max-depth, --max-spp, --reference-spp, ...).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Two benchmark scenes that differ only in how many spheres emit (issue 9):
+"""Two benchmark scenes that differ only in how many spheres emit
+(docs/performance.md, "What affects speed"):
 10,000 small random spheres over a floor, of which 10 or all 10,000 glow.
 Same geometry, so the difference in cost per sample is the lights' alone.
 

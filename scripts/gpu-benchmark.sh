@@ -3,7 +3,7 @@
 # (the figures in docs/performance.md come from this script's output).
 # Usage on the node: scripts/gpu-benchmark.sh BUNDLE_DIR OUT_DIR
 # Registers NVIDIA's OpenCL driver with the ICD loader for this run only when
-# the node has it but no loader entry for it (see docs/performance.md).
+# the node has it but no loader entry for it (docs/performance.md, "How to reproduce").
 set -uo pipefail
 bundle=$(cd "$1" && pwd)
 out=$2

@@ -8,9 +8,9 @@ build=${ORB_BUILD_DIR:-$root/build}
 out=${1:-$root/.gpu}
 mkdir -p "$out"
 cp "$build/bin/orb-render" "$out/"
-# The ray-casting benchmark too, when built (docs/performance.md, "Why the 3× ratios stay out of reach").
+# The ray-casting benchmark too, when built (docs/design/bvh-traversal.md).
 if [[ -x "$build/bin/orb-trace-benchmark" ]]; then cp "$build/bin/orb-trace-benchmark" "$out/"; fi
-# And the CUDA replay of a captured pass, for Nsight Compute ("Nsight Compute through a CUDA replay").
+# And the CUDA replay of a captured pass, for Nsight Compute (librender/src/pass_capture.h).
 if [[ -x "$build/bin/orb-cuda-replay" ]]; then cp "$build/bin/orb-cuda-replay" "$out/"; fi
 # And the host BVH build's benchmark, to time the tree on the node's cores.
 if [[ -x "$build/bin/orb-bvh-benchmark" ]]; then cp "$build/bin/orb-bvh-benchmark" "$out/"; fi

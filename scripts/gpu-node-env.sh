@@ -1,8 +1,8 @@
 # Sourced by the scripts that run on a GPU node (gpu-benchmark.sh,
-# gpu-profile.sh, gpu-scaling.sh): puts the bundle's libraries
+# gpu-profile.sh), or by hand in a shell there: puts the bundle's libraries
 # (scripts/gpu-bundle.sh) on the loader's path and, where NVIDIA's OpenCL
 # driver is installed without an ICD entry, registers it for this run only
-# (docs/performance.md, "NVIDIA H100").
+# (docs/performance.md, "How to reproduce").
 # Usage: source scripts/gpu-node-env.sh BUNDLE_DIR
 export LD_LIBRARY_PATH=$1:${LD_LIBRARY_PATH:-}
 if [[ -e /usr/local/nvidia/lib64/libnvidia-opencl.so.1 ]]; then

@@ -3,7 +3,8 @@
 // once, then handed to OpenEXR's core library in order, which writes the
 // header and the offset table. OpenEXR's C++ writer compresses blocks on its
 // thread pool too, but fills them on one thread and with zlib; this is the
-// path a frame loop spends its writer time in (docs/performance.md, "Frames").
+// path a frame loop spends its writer time in (docs/performance.md,
+// "Animations and batches"; docs/design/default-layers-and-storage.md).
 #pragma once
 
 #include <cstdint>

@@ -5,7 +5,7 @@
 // difference from the previous one plus 128, and the result deflated in
 // zlib's format (RFC 1950). Compressed with libdeflate, which takes about
 // half zlib's time at the same ratio on rendered float data (the figures are
-// in docs/performance.md, "Frames"); any OpenEXR reader reads the result.
+// in docs/design/default-layers-and-storage.md); any OpenEXR reader reads the result.
 #pragma once
 
 #include <cstdint>

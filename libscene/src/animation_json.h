@@ -1,4 +1,4 @@
-// JSON form of the "animation" section (owned by the glTF import work, issue 5).
+// JSON form of the "animation" section (owned by the glTF import work).
 #pragma once
 
 #include <nlohmann/json.hpp>

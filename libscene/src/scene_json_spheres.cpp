@@ -64,7 +64,7 @@ void write_spheres_json(const std::vector<Sphere>& spheres, const JsonSink& sink
     } else {
         // The next piece is formatted on a second thread while the sink reads
         // this one: formatting and hashing 10 M spheres take about as long
-        // as each other (docs/performance.md, "The content hash without the text").
+        // as each other (docs/performance.md, "Big scenes").
         auto piece_from = [&spheres, count](std::size_t first) {
             return format_sphere_lines(spheres, first, std::min(first + kSpheresPerPiece, count));
         };

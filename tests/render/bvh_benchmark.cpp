@@ -1,4 +1,4 @@
-// Not a test: times the host BVH build (docs/performance.md).
+// Not a test: times the host BVH build (docs/design/bvh-layout.md).
 //   build/bin/orb-bvh-benchmark [spheres=1000000] [threads=0 (all)]
 //   build/bin/orb-bvh-benchmark --scene FILE [threads=0 (all)]
 // The first form builds over uniformly random spheres; the second over a

@@ -1,5 +1,5 @@
 // Not a test: refit or rebuild the sphere BVH between the frames of an
-// animation (docs/performance.md, "Refit or rebuild").
+// animation (docs/design/bvh-refit.md).
 //   build/bin/orb-bvh-refit-benchmark [spheres=1000000] [step=0.25] [frames=8] [spp=4]
 // N spheres of radius 0.2-0.5 (mean spacing about 2) in a 200-wide box on a
 // floor, lit by two sphere lights, each moving `step` per frame in its own

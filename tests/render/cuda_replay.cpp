@@ -1,7 +1,8 @@
 // Not a test: runs a render pass that orb-render captured (ORB_CAPTURE_PASS,
 // librender/src/pass_capture.h) again through CUDA's driver API, so that
 // Nsight Compute, which does not see OpenCL kernels, can profile the same
-// program (docs/performance.md, "Nsight Compute through a CUDA replay").
+// program (what it showed: docs/design/speculative-traversal.md,
+// docs/design/register-caps.md).
 // NVIDIA's OpenCL binaries are PTX; this loads that PTX with the register
 // cap of its build options, binds the captured buffers in order, launches
 // the pass with the captured work sizes and checks that the film it leaves

@@ -1,6 +1,6 @@
 // orb-render-benchmark: samples per second of the path tracer on one scene,
-// for docs/performance.md (orb-render --benchmark offers the same through
-// the CLI). Usage:
+// for the records in docs/design (orb-render --benchmark offers the same
+// through the CLI). Usage:
 //   orb-render-benchmark SCENE.scn [--width W] [--height H] [--seconds S]
 //                        [--device SEL] [--max-depth D] [--mode global|direct]
 //                        [--cpu-spp N [--pass-spp K]]  (N samples in passes of K, reports samples

@@ -1,6 +1,6 @@
 // Not a test: rays per second of ray casting alone on a device, for deciding
-// whether a wavefront renderer would pay (docs/performance.md, "Why the 3×
-// ratios stay out of reach"). A wavefront design casts each bounce's rays in
+// whether a wavefront renderer would pay (docs/design/bvh-traversal.md).
+// A wavefront design casts each bounce's rays in
 // a kernel of their own, which carries no path state and so needs few
 // registers; this measures that kernel's part, with the traversal
 // render_pass uses (trace_rays, librender/src/ray_caster.h).

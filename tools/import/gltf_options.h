@@ -1,4 +1,4 @@
-// orb-import's glTF options (owned by the glTF import work, issue 5).
+// orb-import's glTF options (owned by the glTF import work).
 #pragma once
 
 #include <CLI/CLI.hpp>

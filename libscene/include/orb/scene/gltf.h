@@ -20,7 +20,7 @@ enum class NonSpherePolicy {
 // How KHR_lights_punctual intensities become Orb radiance (docs/gltf.md, "Lights").
 enum class LightUnits {
     Photometric,  // candela and lux through 683 lm/W, as Blender's glTF importer does
-    Radiometric,  // 1 cd taken as 1 W/sr and 1 lux as 1 W/m^2 (Orb before issue 10)
+    Radiometric,  // 1 cd taken as 1 W/sr and 1 lux as 1 W/m^2 (Orb before photometric units)
 };
 
 struct GltfImportOptions {
