@@ -24,7 +24,7 @@
  *            suffix), Token (a word of OpenCL C pasted as it is, such as an
  *            address space; std::string on the host)
  *   default  as both languages spell it (a Token: the word itself)
- *   meaning  one line, for readers and for --help-like listings
+ *   meaning  one line, for readers (docs/rendering.md, "Kernel features")
  *
  * Like film_channels.h this file is one text for both compilers: the OpenCL
  * program has it before device_types.h (kernels/CMakeLists.txt), where it
