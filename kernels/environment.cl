@@ -18,11 +18,8 @@
 // density, proportional to each texel's radiance times its solid angle and
 // uniform in solid angle inside it, follows the radiance exactly.
 
-// -DORB_ENVIRONMENT=0 leaves the environment's code out: the host builds
-// such a program for a scene without an environment.
-#ifndef ORB_ENVIRONMENT
-#define ORB_ENVIRONMENT 1
-#endif
+// ORB_ENVIRONMENT 0 leaves the environment's code out: the host builds such
+// a program for a scene without an environment.
 inline bool has_environment(const SceneView* scene) { return ORB_ENVIRONMENT && scene->environment.width > 0; }
 
 // World -> map frame: the inverse turn about +y.

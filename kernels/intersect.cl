@@ -15,20 +15,17 @@
 //    would find.
 
 #define ORB_NO_HIT 1e30f
-// The host builds the program with -DORB_BVH=0 for a scene without a tree:
-// the traversal code (and its stacks) then does not exist, and the GPU's
-// register allocation for render_pass is what it was before there was a BVH
-// (on an H100 that is 5% of the Cornell box's speed).
-#ifndef ORB_BVH
-#define ORB_BVH 1
-#endif
+// The host builds the program with ORB_BVH 0 for a scene without a tree
+// (kernel_features.h): the traversal code (and its stacks) then does not
+// exist, and the GPU's register allocation for render_pass is what it was
+// before there was a BVH (on an H100 that is 5% of the Cornell box's speed).
 
 // Minimum and maximum of values that are never NaN here (distances from
 // finite boxes and spheres). OpenCL's fmin and fmax must return the other
 // operand of a NaN, which costs an x86 CPU a compare and a blend besides
 // each minps or maxps; a compare-select is the bare instruction. GPUs have
 // the NaN-aware instruction, so they keep fmin and fmax.
-#ifdef ORB_INTERSECT_SCALAR
+#if ORB_SCALAR_TRAVERSAL
 #define ORB_MIN(a, b) fmin(a, b)
 #define ORB_MAX(a, b) fmax(a, b)
 #else
@@ -61,7 +58,7 @@ inline float lane_distance(SCENE_MEM const SpherePacket* packet, int lane, int i
     return t > 0.0f ? t : ORB_NO_HIT;
 }
 
-#ifndef ORB_INTERSECT_SCALAR
+#if !ORB_SCALAR_TRAVERSAL
 // Four spheres per step in SIMD lanes: CPUs execute the float4 arithmetic as
 // one vector instruction each.
 typedef struct {
@@ -259,7 +256,7 @@ inline int hit_children(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, 
 // traffic. Returns the new top.
 inline int push_deferred(int* children, float* entries, int top, int4 c, float4 e, int count)
 {
-#ifdef ORB_INTERSECT_SCALAR
+#if ORB_SCALAR_TRAVERSAL
     if (count > 3) {
         children[top] = c.w;
         if (entries) entries[top] = e.w;
@@ -289,15 +286,13 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 #endif
 }
 
-// Development knob: -DORB_BVH_CHECK=1 (through ORB_CL_OPTIONS) checks every
-// index the traversals read (nodes, packets, stack entries) before reading,
-// and reports the first violation of a ray with printf and gives up the ray
-// instead of reading out of bounds. ORB_BVH_CHECK_STACK lowers the stack
-// limit it checks against (tests/render/bvh_render_test.cpp shows with a
-// small one that violations are reported). Off by default: no cost.
-#ifndef ORB_BVH_CHECK
-#define ORB_BVH_CHECK 0
-#endif
+// Development knob: ORB_BVH_CHECK 1 (-DORB_BVH_CHECK=1 through
+// ORB_CL_OPTIONS) checks every index the traversals read (nodes, packets,
+// stack entries) before reading, and reports the first violation of a ray
+// with printf and gives up the ray instead of reading out of bounds.
+// ORB_BVH_CHECK_STACK, when positive, lowers the stack limit it checks
+// against (tests/render/bvh_render_test.cpp shows with a small one that
+// violations are reported). Off by default: no cost.
 // Leaf runs (CPUs): a node whose children are all leaves tests their
 // packets straight away (BvhNodeRecord::leaf_run), four spheres per vector
 // instruction, instead of testing the four boxes, ordering the hit ones and
@@ -305,17 +300,9 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 // branches; the spheres are a few branch-free vector tests, more arithmetic
 // than the boxes would have let through but less time (docs/performance.md,
 // "Why the 3× ratios stay out of reach"). GPUs test one sphere at a time,
-// so for them the boxes stay.
-#ifndef ORB_BVH_LEAF_RUNS
-#ifdef ORB_INTERSECT_SCALAR
-#define ORB_BVH_LEAF_RUNS 0
-#else
-#define ORB_BVH_LEAF_RUNS 1
-#endif
-#endif
-#ifndef ORB_BVH_CHECK_STACK
-#define ORB_BVH_CHECK_STACK ORB_BVH_STACK_SIZE
-#endif
+// so for them the boxes stay: the host turns ORB_BVH_LEAF_RUNS off where it
+// turns ORB_SCALAR_TRAVERSAL on.
+#define ORB_BVH_STACK_LIMIT (ORB_BVH_CHECK_STACK > 0 ? ORB_BVH_CHECK_STACK : ORB_BVH_STACK_SIZE)
 #if ORB_BVH_CHECK
 #define ORB_BVH_EXPECT(ok, what, value, limit, give_up)                                        \
     if (!(ok)) {                                                                               \
@@ -326,13 +313,11 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 #define ORB_BVH_EXPECT(ok, what, value, limit, give_up)
 #endif
 
-// Development knob: -DORB_BVH_COUNT=1 (through ORB_CL_OPTIONS) prints, for
-// every ray that enters the tree, how many nodes and leaves its traversal
-// visited: "orb BVH visits: closest N" or "orb BVH visits: shadow N".
-// scripts/bvh-visits.sh sums them per sample. Off by default: no cost.
-#ifndef ORB_BVH_COUNT
-#define ORB_BVH_COUNT 0
-#endif
+// Development knob: ORB_BVH_COUNT 1 (-DORB_BVH_COUNT=1 through
+// ORB_CL_OPTIONS) prints, for every ray that enters the tree, how many nodes
+// and leaves its traversal visited: "orb BVH visits: closest N" or "orb BVH
+// visits: shadow N". scripts/bvh-visits.sh sums them per sample. Off by
+// default: no cost.
 // ORB_TRAVERSAL_RETURN ends a traversal (traverse_tree below), printing
 // its count first.
 #if ORB_BVH_COUNT
@@ -423,8 +408,8 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
             const int count =
                 hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light), &child, &entry);
             if (count > 0) {
-                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
-                               ORB_BVH_CHECK_STACK, return true)
+                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_STACK_LIMIT, "stack top", top + count - 1,
+                               ORB_BVH_STACK_LIMIT, return true)
                 top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
                 current = child.x;
             } else {
@@ -486,8 +471,8 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
                 const int count = hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light),
                                                &child, &entry);
                 if (count > 0) {
-                    ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_CHECK_STACK, "stack top", top + count - 1,
-                                   ORB_BVH_CHECK_STACK, return true)
+                    ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_STACK_LIMIT, "stack top", top + count - 1,
+                                   ORB_BVH_STACK_LIMIT, return true)
                     top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
                     current = child.x;
                     continue;

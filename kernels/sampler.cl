@@ -25,15 +25,10 @@
 // only on which sample indices were rendered, never on how passes, slices
 // or resumes split them.
 
-#ifndef ORB_SAMPLER_SOBOL
-#define ORB_SAMPLER_SOBOL 1
-#endif
-// Blocks [0, this) draw Sobol points (the camera and the first scattering
-// events, where stratification lowers the error most); later blocks draw
-// independent numbers, which cost less and lose little there.
-#ifndef ORB_SOBOL_BLOCKS
-#define ORB_SOBOL_BLOCKS 3
-#endif
+// ORB_SAMPLER_SOBOL chooses between the two (kernel_features.h). Blocks
+// [0, ORB_SOBOL_BLOCKS) draw Sobol points (the camera and the first
+// scattering events, where stratification lowers the error most); later
+// blocks draw independent numbers, which cost less and lose little there.
 
 // Bit reversal is nine of a block's steps: one instruction where the
 // compiler has it (clang's builtin, which NVIDIA's compiler also takes: 18%

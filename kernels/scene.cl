@@ -1,17 +1,11 @@
 // The scene as the kernels see it: the tables of device_types.h (written by
 // librender/src/scene_layout.cpp), in the address space the host chose:
-// __constant while the scene fits the device's constant buffer, __global beyond.
-
-#ifndef ORB_SCENE_SPACE
-#define ORB_SCENE_SPACE __constant
-#endif
+// __constant while the scene fits the device's constant buffer, __global beyond
+// (ORB_SCENE_SPACE, kernel_features.h).
 #define SCENE_MEM ORB_SCENE_SPACE
-// 1 when every light has the same power (one light, say): the host then
-// builds the program to pick lights uniformly, which is what the alias table
-// would do, without reading it.
-#ifndef ORB_UNIFORM_LIGHTS
-#define ORB_UNIFORM_LIGHTS 0
-#endif
+// ORB_UNIFORM_LIGHTS is 1 when every light has the same power (one light,
+// say): the host then builds the program to pick lights uniformly, which is
+// what the alias table would do, without reading it.
 
 // One pointer per scene table of render_pass's argument list, plus the
 // tables' lengths; generated from the list so that a new table needs no edit here.

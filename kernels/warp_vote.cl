@@ -3,15 +3,13 @@
 // PTX inline, where activemask and vote.sync give it (sm_70 and later). The
 // speculative traversal (intersect.cl) uses it to decide when a warp's
 // lanes test leaves together; the host sets ORB_WARP_VOTE for NVIDIA's
-// OpenCL only (traversal_options in librender/src/device_renderer.cpp).
+// OpenCL only (choose_traversal in librender/src/device_renderer.cpp).
 //   ORB_WARP_VOTE=0  no vote (every other device): the ordered traversal.
 //   ORB_WARP_VOTE=1  the PTX vote.
 //   ORB_WARP_VOTE=2  for tests on CPUs: every lane answers "yes", so each
 //                    lane speculates as far as it can; the same control flow
 //                    as on the GPU, run lane by lane.
-#ifndef ORB_WARP_VOTE
-#define ORB_WARP_VOTE 0
-#endif
+// (The default, 0, is kernel_features.h's.)
 
 #if ORB_WARP_VOTE == 1
 inline bool warp_any(bool p)

@@ -21,12 +21,12 @@ namespace {
 // over 80). Nsight Compute, through a CUDA replay of a pass, shows both
 // kinds' occupancy limited by these registers ("Nsight Compute through a
 // CUDA replay"); why the two kinds want different caps is not known.
-std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
+int nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
 {
     const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
-    if (extensions.find("cl_nv_compiler_options") == std::string::npos) return "";
-    if (scene.counts.bvh_node_count > 0) return " -cl-nv-maxrregcount=64";
-    return scene.counts.packet_count <= 2 ? " -cl-nv-maxrregcount=96" : " -cl-nv-maxrregcount=72";
+    if (extensions.find("cl_nv_compiler_options") == std::string::npos) return 0;
+    if (scene.counts.bvh_node_count > 0) return 64;
+    return scene.counts.packet_count <= 2 ? 96 : 72;
 }
 
 // The lanes of render_pass_simd (kernels/integrator_simd.cl) on this device,
@@ -68,15 +68,21 @@ DeviceFilm make_film(DeviceSession& session, const RenderConfig& config)
 
 }  // namespace
 
-std::string traversal_options(const DeviceInfo& device, const SceneLayout& scene)
+void choose_traversal(const DeviceInfo& device, const SceneLayout& scene, device::KernelFeatures& features)
 {
-    // A scene without a tree gets a program without traversal code. NVIDIA's
-    // own OpenCL takes the PTX of a warp vote (kernels/warp_vote.cl), with
-    // which the traversal speculates (docs/performance.md, "Speculative traversal").
+    // A GPU thread tests one sphere at a time, draws a vertex's numbers
+    // before its branches, and keeps the boxes where a CPU runs leaves
+    // (kernels/intersect.cl, integrator.cl). A scene without a tree gets a
+    // program without traversal code. NVIDIA's own OpenCL takes the PTX of a
+    // warp vote (kernels/warp_vote.cl), with which the traversal speculates
+    // (docs/performance.md, "Speculative traversal").
+    const bool tree = scene.counts.bvh_node_count > 0;
     const bool nvidia_opencl = device.is_gpu && device.platform.find("NVIDIA") != std::string::npos;
-    return std::string(device.is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
-           (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
-           (nvidia_opencl && scene.counts.bvh_node_count > 0 ? " -DORB_WARP_VOTE=1" : "");
+    features.scalar_traversal = device.is_gpu;
+    features.draw_all_numbers = device.is_gpu;
+    features.bvh_leaf_runs = !device.is_gpu;
+    features.bvh = tree;
+    features.warp_vote = nvidia_opencl && tree ? 1 : 0;
 }
 
 std::string with_development_options(std::string options)
@@ -110,8 +116,8 @@ std::string DeviceRenderer::build_options(const SceneLayout& scene) const
     return render_program_options(*session_, scene, config_, simd_lanes_);
 }
 
-std::string render_program_options(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
-                                   int simd_lanes)
+device::KernelFeatures render_features(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
+                                       int simd_lanes)
 {
     // Small scenes live in constant memory (cached, broadcast to a whole
     // warp on GPUs); larger ones in global memory. In constant memory
@@ -122,31 +128,33 @@ std::string render_program_options(DeviceSession& session, const SceneLayout& sc
     const cl_ulong constant_limit = device.getInfo<CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE>();
     const cl_uint constant_args = device.getInfo<CL_DEVICE_MAX_CONSTANT_ARGS>();
     const bool constant_scene = scene_table_bytes(scene.tables) <= constant_limit && kSceneTableCount <= constant_args;
-    std::string options = std::string(kKernelLanguageOptions) +
-                          " -DORB_SCENE_SPACE=" + (constant_scene ? "__constant" : "__global") +
-                          traversal_options(session.info(), scene) +
-                          (scene.uniform_lights ? " -DORB_UNIFORM_LIGHTS=1" : "") +
-                          // Only the code the scene uses: each material kind's, rough
-                          // glass's and the environment's cost registers on GPUs whether
-                          // a scene uses them or not (docs/performance.md; without the
-                          // environment's code, 1 M spheres on an H100 render 3.5%
-                          // faster, 1 k spheres 7%).
-                          " -DORB_MATERIAL_KINDS=" + std::to_string(scene.material_kinds) +
-                          (scene.environment.width > 0 ? "" : " -DORB_ENVIRONMENT=0") +
-                          // No aiming code without casters (4% of an H100's samples/s on
-                          // simple.scn), nor in direct mode, which counts no light that
-                          // passed a caster after the first diffuse vertex.
-                          (scene.counts.caster_count > 0 && config.mode == IntegratorMode::Global
-                               ? ""
-                               : " -DORB_CASTER_SHARE=0.0f") +
-                          " -DORB_ROUGH_DIELECTRIC=" + (scene.rough_dielectric ? "1" : "0") +
-                          (config.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
-                          " -DORB_FILM_CHANNELS_BUILT=" + std::to_string(config.film_channels) + "u" +
-                          nvidia_register_cap(device, scene) +
-                          (simd_lanes > 0
-                               ? " -DORB_SIMD_KERNEL=1 -DORB_SIMD_WIDTH=" + std::to_string(simd_lanes)
-                               : std::string());
-    return with_development_options(options);
+    device::KernelFeatures features;
+    features.scene_space = constant_scene ? "__constant" : "__global";
+    choose_traversal(session.info(), scene, features);
+    features.uniform_lights = scene.uniform_lights;
+    // Only the code the scene uses: each material kind's, rough glass's and
+    // the environment's cost registers on GPUs whether a scene uses them or
+    // not (docs/performance.md; without the environment's code, 1 M spheres
+    // on an H100 render 3.5% faster, 1 k spheres 7%).
+    features.material_kinds = scene.material_kinds;
+    features.environment = scene.environment.width > 0;
+    // No aiming code without casters (4% of an H100's samples/s on
+    // simple.scn), nor in direct mode, which counts no light that passed a
+    // caster after the first diffuse vertex.
+    if (scene.counts.caster_count == 0 || config.mode != IntegratorMode::Global) features.caster_share = 0.0f;
+    features.rough_dielectric = scene.rough_dielectric;
+    features.sampler_sobol = config.sampler == SamplerKind::Sobol;
+    features.film_channels_built = config.film_channels;
+    features.lanes = simd_lanes > 0 ? simd_lanes : 1;
+    return features;
+}
+
+std::string render_program_options(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
+                                   int simd_lanes)
+{
+    const ProgramOptions options{render_features(session, scene, config, simd_lanes),
+                                 nvidia_register_cap(session.device(), scene)};
+    return with_development_options(program_options_text(options));
 }
 
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)

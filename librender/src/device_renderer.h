@@ -14,6 +14,7 @@
 #include "device_session.h"
 #include "opencl.h"
 #include "orb/kernels/device_types.h"
+#include "orb/kernels/kernel_features.h"
 #include "orb/render/renderer.h"
 #include "pass_arguments.h"
 #include "pass_capture.h"
@@ -22,21 +23,26 @@
 
 namespace orb::render {
 
-// The build options that choose the traversal a device's programs use, for
-// `scene`: one sphere at a time on GPUs (-DORB_INTERSECT_SCALAR=1), packets
-// of four on CPUs; no traversal code for a scene without a tree. Every
+// Sets the features that choose the traversal a device's programs use, for
+// `scene`: one sphere at a time on GPUs (ORB_SCALAR_TRAVERSAL, with
+// ORB_DRAW_ALL_NUMBERS and without leaf runs), packets of four on CPUs; no
+// traversal code for a scene without a tree; NVIDIA's warp vote. Every
 // program that traces rays through a scene takes them (render_pass,
 // trace_rays).
-std::string traversal_options(const DeviceInfo& device, const SceneLayout& scene);
+void choose_traversal(const DeviceInfo& device, const SceneLayout& scene, device::KernelFeatures& features);
 
 // `options` with the development knob ORB_CL_OPTIONS appended, last, so
 // that its -D definitions win.
 std::string with_development_options(std::string options);
 
-// The options render_pass is built with for `scene` under `config` on the
+// The features render_pass is built with for `scene` under `config` on the
 // session's device (render_pass_simd with `simd_lanes` > 0): where the scene
-// lives, the traversal, only the code the scene and the film use, the
-// register cap.
+// lives, the traversal, only the code the scene and the film use, the lanes.
+device::KernelFeatures render_features(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
+                                       int simd_lanes);
+
+// Its build options: those features, the register cap, then the
+// development knob ORB_CL_OPTIONS.
 std::string render_program_options(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
                                    int simd_lanes);
 

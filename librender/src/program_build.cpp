@@ -40,7 +40,19 @@ std::string hex(std::uint64_t value)
     return text;
 }
 
-std::string cache_key(const cl::Device& device, const std::string& source, const std::string& options)
+}  // namespace
+
+std::string program_options_text(const ProgramOptions& options)
+{
+    std::string text = kKernelLanguageOptions;
+    const std::string features = device::kernel_feature_options(options.features);
+    if (!features.empty()) text += " " + features;
+    if (options.nvidia_max_registers > 0)
+        text += " -cl-nv-maxrregcount=" + std::to_string(options.nvidia_max_registers);
+    return text;
+}
+
+std::string program_cache_key(const cl::Device& device, const std::string& source, const std::string& options)
 {
     const cl::Platform platform(device.getInfo<CL_DEVICE_PLATFORM>());
     std::string identity;
@@ -53,6 +65,8 @@ std::string cache_key(const cl::Device& device, const std::string& source, const
     }
     return hex(fnv1a(identity, 0xcbf29ce484222325ULL)) + hex(fnv1a(identity, 0x84222325cbf29ce4ULL));
 }
+
+namespace {
 
 // File layout: magic, 32-char key, payload size (u64), payload FNV-1a (u64), payload.
 std::vector<unsigned char> read_cached_binary(const fs::path& path, const std::string& key)
@@ -162,7 +176,7 @@ ProgramBuild build_program(const cl::Context& context, const cl::Device& device,
     fs::path cache_file;
     std::string key;
     if (!cache_dir.empty()) {
-        key = cache_key(device, source, options);
+        key = program_cache_key(device, source, options);
         cache_file = fs::path(cache_dir) / (key + ".bin");
         const std::vector<unsigned char> binary = read_cached_binary(cache_file, key);
         if (!binary.empty())

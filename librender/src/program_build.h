@@ -4,6 +4,7 @@
 #include <string>
 
 #include "opencl.h"
+#include "orb/kernels/kernel_features.h"
 
 namespace orb::render {
 
@@ -12,6 +13,26 @@ namespace orb::render {
 // nothing measurable on PoCL; the analytic tests pass with it.
 inline constexpr const char* kKernelLanguageOptions =
     "-cl-std=CL1.2 -cl-mad-enable -cl-unsafe-math-optimizations";
+
+// What a program of the kernels is built with, typed: the kernel features
+// (orb/kernels/kernel_features.h) and NVIDIA's register cap, a compiler
+// option rather than a define.
+struct ProgramOptions {
+    device::KernelFeatures features;
+    int nvidia_max_registers = 0;  // -cl-nv-maxrregcount; 0 leaves it to the compiler
+};
+
+// The compiler's option string: kKernelLanguageOptions, the features that
+// differ from their defaults (kernel_feature_options, in table order), the
+// register cap. The development knob ORB_CL_OPTIONS goes after all of them
+// (with_development_options in device_renderer.h), so its -D's win.
+std::string program_options_text(const ProgramOptions& options);
+
+// The binary cache's key of a program: a 128-bit hash of the source (which
+// starts with the features' defaults), the option string (the features that
+// differ from them), the device and its driver. A feature that changes
+// changes the key.
+std::string program_cache_key(const cl::Device& device, const std::string& source, const std::string& options);
 
 // Directory of the binary cache: $XDG_CACHE_HOME/orb, else $HOME/.cache/orb;
 // empty if neither variable is set.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "orb/kernels/embedded.h"
+#include "orb/kernels/kernel_features.h"
 
 namespace orb::render {
 namespace {
@@ -27,7 +28,10 @@ std::string program_source(const std::string& kernel_dir)
     if (dir.empty())
         if (const char* env = std::getenv("ORB_KERNEL_DIR")) dir = env;
 
-    std::string source;
+    // The kernels' defaults come first, generated from the one table of
+    // kernel_features.h (the preprocessor cannot expand a table into
+    // #define lines), so every file may read every feature.
+    std::string source = "#line 1 \"kernel feature defaults\"\n" + device::kernel_feature_defaults();
     for (const kernels::EmbeddedKernel& kernel : kernels::embedded_kernels()) {
         const std::string name(kernel.file_name);
         // #line keeps build-log positions pointing into the right file.

@@ -18,8 +18,11 @@ constexpr cl_uint kTrailingArgs = 4;
 
 std::string trace_options(const DeviceInfo& info, const SceneLayout& scene, const std::string& extra)
 {
-    std::string options = std::string(kKernelLanguageOptions) + " -DORB_SCENE_SPACE=__global -DORB_TRACE_KERNEL=1" +
-                          traversal_options(info, scene);
+    ProgramOptions program;
+    program.features.scene_space = "__global";
+    program.features.trace_kernel = true;
+    choose_traversal(info, scene, program.features);
+    std::string options = program_options_text(program);
     if (!extra.empty()) options += " " + extra;
     return with_development_options(options);
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "orb/render/device.h"
+#include "program_build.h"
 #include "program_source.h"
 #include "opencl_devices.h"
 
@@ -100,8 +101,7 @@ BsdfProbe::BsdfProbe() : impl_(std::make_unique<Impl>())
     impl_->program = cl::Program(impl_->context, program_source("") + kProbeKernels);
     try {
         // The options render_pass is built with, so the probe sees the same arithmetic.
-        impl_->program.build({impl_->device},
-                             "-cl-std=CL1.2 -cl-mad-enable -cl-unsafe-math-optimizations -DORB_SCENE_SPACE=__constant");
+        impl_->program.build({impl_->device}, program_options_text(ProgramOptions{}).c_str());
     } catch (const cl::Error&) {
         throw std::runtime_error("probe kernels failed to build: " +
                                  impl_->program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(impl_->device));

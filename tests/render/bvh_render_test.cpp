@@ -125,11 +125,11 @@ TEST(BvhRender, LeafRunsNameExactlyTheLeavesOfAllLeafNodes) {
 }
 
 // GPUs build the kernels with one-sphere-at-a-time intersection
-// (ORB_INTERSECT_SCALAR); its traversal must find the same spheres too. Run
+// (ORB_SCALAR_TRAVERSAL); its traversal must find the same spheres too. Run
 // here on PoCL through the development knob ORB_CL_OPTIONS.
-void expect_same_with_and_without_tree_with_options(const char* options) {
+void expect_same_with_and_without_tree_in_gpu_traversal(int warp_vote) {
     const Scene scene = cloud_scene(300, 5);
-    ::setenv("ORB_CL_OPTIONS", options, 1);
+    ::setenv("ORB_CL_OPTIONS", device::kernel_feature_options(gpu_traversal(scene, warp_vote)).c_str(), 1);
     try {
         expect_same_with_and_without_tree(scene);
     } catch (...) {
@@ -140,21 +140,22 @@ void expect_same_with_and_without_tree_with_options(const char* options) {
 }
 
 TEST(BvhRender, SameImageWithAndWithoutTheTreeInTheGpuVariant) {
-    expect_same_with_and_without_tree_with_options("-DORB_INTERSECT_SCALAR=1");
+    expect_same_with_and_without_tree_in_gpu_traversal(0);
 }
 
 // NVIDIA GPUs traverse speculatively (a warp vote decides when lanes test
 // leaves: warp_vote.cl). ORB_WARP_VOTE=2 runs the same control flow here,
 // every lane speculating as far as it can.
 TEST(BvhRender, SameImageWithAndWithoutTheTreeInSpeculativeTraversal) {
-    expect_same_with_and_without_tree_with_options("-DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2");
+    expect_same_with_and_without_tree_in_gpu_traversal(2);
 }
 
-// What the kernels print while rendering `scene` with `options` added to
-// their build options (the development knob ORB_CL_OPTIONS).
-std::string kernel_output(const Scene& scene, const char* options)
+// What the kernels print while rendering `scene` with the kernel features
+// of `features` that differ from the defaults added to their build options
+// (the development knob ORB_CL_OPTIONS).
+std::string kernel_output(const Scene& scene, const device::KernelFeatures& features)
 {
-    ::setenv("ORB_CL_OPTIONS", options, 1);
+    ::setenv("ORB_CL_OPTIONS", device::kernel_feature_options(features).c_str(), 1);
     testing::internal::CaptureStdout();
     try {
         test::render(scene, small_config(48, 36, 11, 6), {4});
@@ -168,21 +169,31 @@ std::string kernel_output(const Scene& scene, const char* options)
     return testing::internal::GetCapturedStdout();
 }
 
-// With the traversal's bounds checks on (-DORB_BVH_CHECK=1), no node, packet
+// The features `base` with the traversal's bounds checks on, and the
+// checked stack limited to `stack_limit` (0: the traversal's own).
+device::KernelFeatures checked(device::KernelFeatures base, int stack_limit = 0)
+{
+    base.bvh_check = true;
+    base.bvh_check_stack = stack_limit;
+    return base;
+}
+
+// With the traversal's bounds checks on (ORB_BVH_CHECK), no node, packet
 // or stack index leaves its table, in the CPU variant and in the GPU variant
 // reading the scene from __global memory as GPUs do for large scenes, and in
 // the speculative traversal. With
 // the checked stack limit lowered to 2, the checks do report.
 TEST(BvhRender, TraversalIndicesStayInBoundsInBothVariants) {
     const Scene scene = cloud_scene(300, 5);
-    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1"), "");
-    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_SCENE_SPACE=__global"), "");
-    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2"), "");
-    EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2").find("orb BVH check: stack top"),
-              std::string::npos);
-    EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2 -DORB_WARP_VOTE=2")
-                  .find("orb BVH check: stack top"),
-              std::string::npos);
+    device::KernelFeatures gpu_global = gpu_traversal(scene);
+    gpu_global.scene_space = "__global";
+    device::KernelFeatures voting = device::KernelFeatures{};
+    voting.warp_vote = 2;
+    EXPECT_EQ(kernel_output(scene, checked({})), "");
+    EXPECT_EQ(kernel_output(scene, checked(gpu_global)), "");
+    EXPECT_EQ(kernel_output(scene, checked(gpu_traversal(scene, 2))), "");
+    EXPECT_NE(kernel_output(scene, checked({}, 2)).find("orb BVH check: stack top"), std::string::npos);
+    EXPECT_NE(kernel_output(scene, checked(voting, 2)).find("orb BVH check: stack top"), std::string::npos);
 }
 
 // The development counters (-DORB_BVH_COUNT=1, scripts/bvh-visits.sh)
@@ -196,9 +207,10 @@ TEST(BvhRender, VisitCountersReportEveryTracedRay) {
     for (const device::BvhNodeRecord& node : layout.tables.bvh_nodes)
         for (int child : {node.child.x, node.child.y, node.child.z, node.child.w}) leaves += child < 0;
     const long most = static_cast<long>(layout.tables.bvh_nodes.size() + leaves);
-    for (const char* options : {"-DORB_BVH_COUNT=1", "-DORB_BVH_COUNT=1 -DORB_INTERSECT_SCALAR=1",
-                                "-DORB_BVH_COUNT=1 -DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2"}) {
-        std::istringstream lines(kernel_output(scene, options));
+    for (device::KernelFeatures features : {device::KernelFeatures{}, gpu_traversal(scene), gpu_traversal(scene, 2)}) {
+        features.bvh_count = true;
+        const std::string options = device::kernel_feature_options(features);
+        std::istringstream lines(kernel_output(scene, features));
         std::map<std::string, long> rays;
         std::string line;
         while (std::getline(lines, line)) {

@@ -19,7 +19,12 @@ constexpr double kSigmas = 5.0;
 
 double rounding(double value, std::uint64_t samples) { return value * static_cast<double>(samples) * 0x1p-24; }
 
-constexpr const char* kNoAiming = "-DORB_CASTER_SHARE=0.0f";
+// The options (development knob) of a program that aims at no caster.
+const std::string kNoAiming = [] {
+    device::KernelFeatures unaimed;
+    unaimed.caster_share = 0.0f;
+    return device::kernel_feature_options(unaimed);
+}();
 
 // Mean over pixels of each pixel's variance of the mean, red channel.
 double mean_variance_of_mean(const Film& film, const std::vector<std::size_t>& pixels)
@@ -127,7 +132,7 @@ TEST(CausticCasters, AimingAtAGlassBallKeepsTheImageAndLowersTheCausticsNoise)
 
     const RenderConfig config = small_config(64, 48, 17, 6);
     const Film aimed = render_with_cl_options(scene, config, {128, 128}, nullptr);
-    const Film unaimed = render_with_cl_options(scene, config, {128, 128}, kNoAiming);
+    const Film unaimed = render_with_cl_options(scene, config, {128, 128}, kNoAiming.c_str());
     for (int id : {floor, glass}) {
         const std::vector<std::size_t> pixels = interior_pixels_of(aimed, id);
         ASSERT_GT(pixels.size(), 50u) << "sphere " << id;
@@ -158,12 +163,12 @@ TEST(CausticCasters, DirectModeDoesNotAim)
     ASSERT_EQ(layout_scene(scene).counts.caster_count, 1);
     const RenderConfig direct = small_config(32, 24, 5, 6, IntegratorMode::Direct);
     const Film built = render_with_cl_options(scene, direct, {16}, nullptr);
-    const Film unaimed = render_with_cl_options(scene, direct, {16}, kNoAiming);
+    const Film unaimed = render_with_cl_options(scene, direct, {16}, kNoAiming.c_str());
     EXPECT_EQ(built.radiance, unaimed.radiance);
     // In global mode the same scene's image does change.
     const RenderConfig global = small_config(32, 24, 5, 6, IntegratorMode::Global);
     EXPECT_NE(render_with_cl_options(scene, global, {16}, nullptr).radiance,
-              render_with_cl_options(scene, global, {16}, kNoAiming).radiance);
+              render_with_cl_options(scene, global, {16}, kNoAiming.c_str()).radiance);
 }
 
 }  // namespace orb::render::test

@@ -16,6 +16,7 @@
 #include "chi2.h"
 #include "environment_distribution.h"
 #include "environment_layout.h"
+#include "orb/kernels/kernel_features.h"
 #include "orb/render/device.h"
 #include "program_source.h"
 #include "opencl_devices.h"
@@ -68,7 +69,9 @@ Probe build_probe() {
     p.queue = cl::CommandQueue(p.context, p.device);
     p.program = cl::Program(p.context, program_source("") + kProbes);
     try {
-        p.program.build({p.device}, "-cl-std=CL1.2 -DORB_SCENE_SPACE=__global");
+        device::KernelFeatures features;
+        features.scene_space = "__global";
+        p.program.build({p.device}, ("-cl-std=CL1.2 " + device::kernel_feature_options(features)).c_str());
     } catch (const cl::Error&) {
         throw std::runtime_error(p.program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(p.device));
     }

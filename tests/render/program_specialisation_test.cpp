@@ -41,12 +41,26 @@ Scene room_with(std::initializer_list<MaterialType> kinds, double glass_roughnes
     return scene;
 }
 
-Film render_with_options(const Scene& scene, const char* options) {
-    return render_with_cl_options(scene, small_config(40, 30, 3), {4}, options);
+Film render_with_options(const Scene& scene, const std::string& options) {
+    return render_with_cl_options(scene, small_config(40, 30, 3), {4}, options.c_str());
 }
 
-// Every kind, rough glass and the environment built in (the later -D wins).
-constexpr const char* kEverything = "-DORB_MATERIAL_KINDS=4294967295 -DORB_ROUGH_DIELECTRIC=1 -DORB_ENVIRONMENT=1";
+// Every kind, rough glass and the environment built in (the later -D wins):
+// the options that turn a program built without them into one built with
+// them, which are the defaults.
+std::string everything_built_in() {
+    device::KernelFeatures without;
+    without.material_kinds = 0;
+    without.rough_dielectric = false;
+    without.environment = false;
+    return device::kernel_feature_options(device::KernelFeatures{}, without);
+}
+
+std::string only_diffuse() {
+    device::KernelFeatures diffuse;
+    diffuse.material_kinds = 1u << static_cast<int>(device::MaterialKind::Diffuse);
+    return device::kernel_feature_options(diffuse);
+}
 
 }  // namespace
 
@@ -78,8 +92,8 @@ TEST(ProgramSpecialisation, TheLayoutNamesWhatTheSceneUses) {
 TEST(ProgramSpecialisation, LeavingCodeOutChangesNoPixel) {
     for (const Scene& scene : {room_with({MaterialType::Mirror, MaterialType::Dielectric}),
                                room_with({MaterialType::Pbr}), room_with({MaterialType::Dielectric}, 0.3)}) {
-        const Film specialised = render_with_options(scene, nullptr);
-        const Film everything = render_with_options(scene, kEverything);
+        const Film specialised = render_with_options(scene, "");
+        const Film everything = render_with_options(scene, everything_built_in());
         EXPECT_EQ(specialised.radiance, everything.radiance);
         EXPECT_EQ(specialised.albedo, everything.albedo);
         EXPECT_EQ(specialised.direct, everything.direct);
@@ -91,7 +105,7 @@ TEST(ProgramSpecialisation, LeavingCodeOutChangesNoPixel) {
 // mirror and the glass ball as diffuse ones.
 TEST(ProgramSpecialisation, AKindLeftOutIsRenderedAsDiffuse) {
     const Scene scene = room_with({MaterialType::Mirror, MaterialType::Dielectric});
-    EXPECT_NE(render_with_options(scene, "-DORB_MATERIAL_KINDS=1").radiance, render_with_options(scene, nullptr).radiance);
+    EXPECT_NE(render_with_options(scene, only_diffuse()).radiance, render_with_options(scene, "").radiance);
 }
 
 // A run that writes only some layers computes only their channels

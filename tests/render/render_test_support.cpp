@@ -9,7 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "device_renderer.h"
 #include "orb/scene/scn.h"
+#include "scene_layout.h"
 
 namespace orb::render::test {
 
@@ -94,6 +96,17 @@ Film render_with_cl_options(const Scene& scene, const RenderConfig& config, cons
                             const char* cl_options)
 {
     return render_with_env(scene, config, passes, "ORB_CL_OPTIONS", cl_options);
+}
+
+device::KernelFeatures gpu_traversal(const Scene& scene, int warp_vote)
+{
+    DeviceInfo gpu;
+    gpu.platform = "a GPU's";
+    gpu.is_gpu = true;
+    device::KernelFeatures features;
+    choose_traversal(gpu, layout_scene(scene), features);
+    features.warp_vote = warp_vote;
+    return features;
 }
 
 Film render_with_simd_lanes(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "orb/kernels/kernel_features.h"
 #include "orb/render/renderer.h"
 #include "orb/scene/scene.h"
 
@@ -31,6 +32,13 @@ Film render(const Scene& scene, const RenderConfig& config, const std::vector<in
 // to compare a program with a variant of it.
 Film render_with_cl_options(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
                             const char* cl_options);
+
+// The features of a GPU's traversal for `scene` (choose_traversal on a GPU
+// that is not NVIDIA's), with ORB_WARP_VOTE `warp_vote` (2: every lane votes
+// yes, the speculative traversal run lane by lane), to run it on PoCL:
+// through render_with_cl_options, the knob takes the features that differ
+// from the defaults (device::kernel_feature_options).
+device::KernelFeatures gpu_traversal(const Scene& scene, int warp_vote = 0);
 
 // The same with the environment variable `name` set to `value` for this
 // render only (nullptr: left as it is).

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "orb/kernels/embedded.h"
+#include "orb/kernels/kernel_features.h"
 #include "orb/render/device.h"
 #include "opencl_devices.h"
 
@@ -32,8 +33,9 @@ public:
         device_ = opencl_device(info.index);
         context_ = cl::Context(device_);
         queue_ = cl::CommandQueue(context_, device_);
-        std::string source;
-        for (const char* file : {"include/orb/kernels/device_types.h", "rng.cl", "sampler.cl"})
+        std::string source = device::kernel_feature_defaults();
+        for (const char* file : {"include/orb/kernels/film_channels.h", "include/orb/kernels/material_kinds.h",
+                                 "include/orb/kernels/device_types.h", "rng.cl", "sampler.cl"})
             source += std::string(kernels::find_embedded_kernel(file)) + "\n";
         source += R"(
 __kernel void probe(__global float* out, uint first_pixel, uint first_lo, uint first_hi, int samples, uint block,
@@ -49,7 +51,9 @@ __kernel void probe(__global float* out, uint first_pixel, uint first_lo, uint f
 }
 )";
         program_ = cl::Program(context_, source);
-        const std::string options = std::string("-cl-std=CL1.2 -DORB_SAMPLER_SOBOL=") + (sobol ? "1" : "0");
+        device::KernelFeatures features;
+        features.sampler_sobol = sobol;
+        const std::string options = "-cl-std=CL1.2 " + device::kernel_feature_options(features);
         try {
             program_.build({device_}, options.c_str());
         } catch (const cl::Error&) {

@@ -2,7 +2,7 @@
 // kernel and RayCaster) against brute force in double precision, ray by ray:
 // closest hits and shadow rays, in a cloud with a tree and a huge floor kept
 // outside it, from free points and from sphere surfaces (the `self` rule),
-// in the CPU variant and in the GPU variant (-DORB_INTERSECT_SCALAR=1).
+// in the CPU variant and in the GPU variant (ORB_SCALAR_TRAVERSAL).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -157,16 +157,17 @@ BruteHit brute_force(const std::vector<SlotSphere>& spheres, const CastRay& ray)
     return best;
 }
 
-void expect_device_matches_brute_force(const char* options)
+// `gpu`: with the GPU's traversal (ORB_WARP_VOTE `warp_vote`).
+void expect_device_matches_brute_force(bool gpu, int warp_vote = 0)
 {
-    if (options) ::setenv("ORB_CL_OPTIONS", options, 1);
     const Scene scene = cloud(1500);
+    if (gpu) ::setenv("ORB_CL_OPTIONS", device::kernel_feature_options(test::gpu_traversal(scene, warp_vote)).c_str(), 1);
     const SceneLayout layout = layout_scene(scene);
     ASSERT_GT(layout.counts.bvh_node_count, 0);
     ASSERT_GT(layout.counts.outside_packet_count, 0) << "the floor should stay outside the tree";
     const std::vector<SlotSphere> spheres = slot_spheres(layout);
     RayCaster caster(DeviceSession::open(choose_device(""), {}), layout);
-    if (options) ::unsetenv("ORB_CL_OPTIONS");
+    if (gpu) ::unsetenv("ORB_CL_OPTIONS");
 
     // Closest hits.
     const std::vector<CastRay> rays = random_rays(spheres, 20000, 17);
@@ -228,13 +229,13 @@ void expect_device_matches_brute_force(const char* options)
 
 }  // namespace
 
-TEST(TraceKernel, ClosestHitsAndShadowRaysMatchBruteForce) { expect_device_matches_brute_force(nullptr); }
+TEST(TraceKernel, ClosestHitsAndShadowRaysMatchBruteForce) { expect_device_matches_brute_force(false); }
 
-TEST(TraceKernel, GpuVariantMatchesBruteForce) { expect_device_matches_brute_force("-DORB_INTERSECT_SCALAR=1"); }
+TEST(TraceKernel, GpuVariantMatchesBruteForce) { expect_device_matches_brute_force(true); }
 
 // The speculative traversal of NVIDIA GPUs (warp_vote.cl), every lane
 // speculating as far as it can.
 TEST(TraceKernel, SpeculativeTraversalMatchesBruteForce)
 {
-    expect_device_matches_brute_force("-DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2");
+    expect_device_matches_brute_force(true, 2);
 }
