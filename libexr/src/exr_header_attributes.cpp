@@ -21,7 +21,7 @@ int checked_count(std::uint64_t value, const char* what) {
 
 }  // namespace
 
-std::vector<HeaderAttribute> header_attributes(const render::Film& film, const ExrMetadata& m,
+std::vector<HeaderAttribute> header_attributes(const Film& film, const ExrMetadata& m,
                                                const std::vector<Pass>& passes) {
     std::vector<HeaderAttribute> a{
         {attr::kFilmFormat, kFilmFormatVersion},

@@ -17,7 +17,7 @@ struct HeaderAttribute {
 };
 
 // Throws std::invalid_argument for a value an EXR int cannot hold.
-std::vector<HeaderAttribute> header_attributes(const render::Film& film, const ExrMetadata& metadata,
+std::vector<HeaderAttribute> header_attributes(const Film& film, const ExrMetadata& metadata,
                                                const std::vector<Pass>& passes);
 
 }  // namespace orb::exr::detail

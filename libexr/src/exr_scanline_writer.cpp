@@ -148,7 +148,7 @@ bool scanline_writer_handles(ExrCompression compression) {
            compression == ExrCompression::Zip;
 }
 
-void write_scanline_exr(const render::Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
+void write_scanline_exr(const Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
                         bool half, ExrCompression compression, const std::vector<HeaderAttribute>& attributes,
                         ScanlineBuffers& buffers, std::string& bytes, std::size_t& size) {
     size = 0;

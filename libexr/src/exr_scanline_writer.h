@@ -25,7 +25,7 @@ struct ScanlineBuffers {
 // `compression` is None, Zips or Zip. `planes` as plane_layout made them, not
 // yet filled; `half` stores the planes not marked always_float as HALF. The
 // file goes to `bytes` (grown as needed), its length to `size`.
-void write_scanline_exr(const render::Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
+void write_scanline_exr(const Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
                         bool half, ExrCompression compression, const std::vector<HeaderAttribute>& attributes,
                         ScanlineBuffers& buffers, std::string& bytes, std::size_t& size);
 

@@ -130,7 +130,7 @@ std::size_t plane_count(const std::vector<Pass>& passes) {
     return count;
 }
 
-std::vector<Plane> plane_layout(const render::Film& film, const std::vector<Pass>& passes,
+std::vector<Plane> plane_layout(const Film& film, const std::vector<Pass>& passes,
                                 std::vector<float>& storage) {
     const std::size_t pixels = static_cast<std::size_t>(film.width) * static_cast<std::size_t>(film.height);
     if (storage.size() < plane_count(passes) * pixels) storage.resize(plane_count(passes) * pixels);
@@ -147,7 +147,7 @@ std::vector<Plane> plane_layout(const render::Film& film, const std::vector<Pass
     return planes;
 }
 
-void fill_planes(const render::Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
+void fill_planes(const Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
                  std::size_t first, std::size_t end) {
     if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
     const double n = static_cast<double>(film.samples_per_pixel);
@@ -178,7 +178,7 @@ void fill_planes(const render::Film& film, const std::vector<Pass>& passes, cons
     }
 }
 
-std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pass>& passes,
+std::vector<Plane> film_to_planes(const Film& film, const std::vector<Pass>& passes,
                                   std::vector<float>& storage) {
     if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
     std::vector<Plane> planes = plane_layout(film, passes, storage);
@@ -186,7 +186,7 @@ std::vector<Plane> film_to_planes(const render::Film& film, const std::vector<Pa
     return planes;
 }
 
-void planes_to_film(const Planes& planes, const std::vector<Pass>& passes, render::Film& film) {
+void planes_to_film(const Planes& planes, const std::vector<Pass>& passes, Film& film) {
     const double n = static_cast<double>(film.samples_per_pixel);
     for (Pass pass : passes) {
         for (const ChannelInfo* channel : pass_film_channels(pass)) {

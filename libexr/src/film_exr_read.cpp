@@ -77,12 +77,12 @@ void check_readable(const std::string& path) {
 
 // The samples the file holds: orb:sampleRanges (format 2 on), which must
 // count orb:spp samples; a format 1 file holds the first orb:spp.
-render::SampleRanges read_sample_ranges(const Imf::Header& header, int format, int spp, const std::string& path) {
-    if (format < 2) return render::SampleRanges(render::SampleRange{0, static_cast<std::uint64_t>(spp)});
+SampleRanges read_sample_ranges(const Imf::Header& header, int format, int spp, const std::string& path) {
+    if (format < 2) return SampleRanges(SampleRange{0, static_cast<std::uint64_t>(spp)});
     const std::string& text = required<Imf::StringAttribute>(header, attr::kSampleRanges, path).value();
-    render::SampleRanges ranges;
+    SampleRanges ranges;
     try {
-        ranges = render::SampleRanges::parse(text);
+        ranges = SampleRanges::parse(text);
     } catch (const std::invalid_argument& e) {
         fail(path, std::string(attr::kSampleRanges) + ": " + e.what());
     }
@@ -240,7 +240,7 @@ ExrFilm read_film_exr(const std::string& path) {
         file.setFrameBuffer(frame);
         file.readPixels(window.min.y, window.max.y);
 
-        render::Film& film = result.film;
+        Film& film = result.film;
         film.resize(static_cast<int>(width), static_cast<int>(height));
         film.samples_per_pixel = summary.samples_per_pixel;
         film.sample_ranges = summary.sample_ranges;

@@ -143,11 +143,11 @@ ExrEncoding& ExrEncoding::operator=(ExrEncoding&&) noexcept = default;
 // Fills an ExrEncoding (a class so that ExrEncoding can name it a friend).
 class ExrEncoder {
 public:
-    static void encode(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+    static void encode(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
                        ExrEncoding& into);
 };
 
-void ExrEncoder::encode(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+void ExrEncoder::encode(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
                         ExrEncoding& into) {
     if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("cannot write an empty film");
     if (options.passes.empty()) throw std::invalid_argument("no passes to write");
@@ -199,18 +199,18 @@ void ExrEncoder::encode(const render::Film& film, const ExrMetadata& metadata, c
     }
 }
 
-void encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+void encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
                      ExrEncoding& into) {
     ExrEncoder::encode(film, metadata, options, into);
 }
 
-std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options) {
+std::string encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options) {
     ExrEncoding encoding;
     encode_film_exr(film, metadata, options, encoding);
     return std::string(encoding.bytes());
 }
 
-void write_film_exr(const std::string& path, const render::Film& film, const ExrMetadata& metadata,
+void write_film_exr(const std::string& path, const Film& film, const ExrMetadata& metadata,
                     const ExrWriteOptions& options) {
     const std::string bytes = encode_film_exr(film, metadata, options);
     std::ofstream out(path, std::ios::binary | std::ios::trunc);

@@ -54,7 +54,7 @@ std::string mismatch(const ExrFilmSummary& file, const RenderRequest& r) {
 }
 
 OutputJudgement judge_samples(const ExrFilmSummary& file, const RenderRequest& r) {
-    const render::SampleRanges& held = file.sample_ranges;
+    const SampleRanges& held = file.sample_ranges;
     const std::uint64_t n = held.total();
     const bool one_range = held.ranges().size() == 1;
     // Half floats lose the sums: more samples cannot be added within float rounding.
@@ -64,7 +64,7 @@ OutputJudgement judge_samples(const ExrFilmSummary& file, const RenderRequest& r
     };
     if (r.slice) {
         const std::uint64_t count = r.spp.value_or(file.metadata.target_spp);
-        const render::SampleRange asked{r.first_sample, count};
+        const SampleRange asked{r.first_sample, count};
         if (one_range && held.ranges().front() == asked) return {OutputState::Finished, "", n};
         if (one_range && held.first() == asked.first && held.end() < asked.end())
             return continuable("holds the samples " + held.format() + " of " + text(asked.first) + ":" + text(count));

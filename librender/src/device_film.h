@@ -12,7 +12,7 @@
 
 #include "film_arrival.h"
 #include "opencl.h"
-#include "orb/render/film.h"
+#include "orb/film/film.h"
 
 namespace orb::render {
 

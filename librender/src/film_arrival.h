@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "opencl.h"
-#include "orb/render/film.h"
+#include "orb/film/film.h"
 
 namespace orb::render {
 

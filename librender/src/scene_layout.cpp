@@ -4,11 +4,12 @@
 #include "environment_layout.h"
 #include "sphere_bvh.h"
 
+#include "orb/scene/camera_frame.h"
+
 #include <algorithm>
 #include <array>
 #include <limits>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -32,13 +33,6 @@ bool is_caustic_caster(const device::MaterialRecord& m)
 
 float f(double value) { return static_cast<float>(value); }
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double length(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 device::float4 to_float4(const Vec3& a, double w) { return {f(a[0]), f(a[1]), f(a[2]), f(w)}; }
 
 // Lane `lane` of a packet's or a node's float4 or int4.
@@ -232,42 +226,22 @@ SceneLayout layout_scene(const Scene& scene, const SphereBvh& bvh)
 
 device::CameraParams layout_camera(const Camera& camera, int width, int height)
 {
-    const Vec3 towards = sub(camera.target, camera.position);
-    const double distance = length(towards);
-    if (!(distance > 0.0) || !std::isfinite(distance))
-        throw std::runtime_error("the camera's target equals its position, so it has no viewing direction");
-    const Vec3 forward = scaled(towards, 1.0 / distance);
-
-    // An up vector parallel to the view direction leaves the roll undefined:
-    // fall back to the world axis least aligned with the view.
-    Vec3 right = cross(forward, camera.up);
-    if (length(right) < 1e-9 * std::max(1.0, length(camera.up))) {
-        const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        int best = 0;
-        for (int a = 1; a < 3; ++a)
-            if (std::abs(forward[a]) < std::abs(forward[best])) best = a;
-        right = cross(forward, axes[best]);
-    }
-    right = scaled(right, 1.0 / length(right));
-    const Vec3 up = cross(right, forward);
-
-    // Perspective: the image plane at unit distance; orthographic: the view itself, in scene units.
-    const bool orthographic = camera.orthographic_height > 0.0;
-    const double half_height = orthographic ? 0.5 * camera.orthographic_height
-                                            : std::tan(camera.vfov_deg * std::numbers::pi / 360.0);
-    const double half_width = half_height * static_cast<double>(width) / static_cast<double>(height);
+    // One frame, view and lens for the image and the EXR's camera matrices (orb/scene/camera_frame.h).
+    const CameraFrame frame = camera_frame(camera);
+    const ViewExtents view = view_extents(camera, width, height);
+    const CameraLens lens = camera_lens(camera, frame);
 
     device::CameraParams params{};
     params.origin = to_float4(camera.position, 0.0);
-    params.right = to_float4(right, 0.0);
-    params.up = to_float4(up, 0.0);
-    params.forward = to_float4(forward, 0.0);
-    params.half_width = f(half_width);
-    params.half_height = f(half_height);
-    params.lens_radius = f(std::max(0.0, camera.aperture) * 0.5);
-    params.focus_distance = f(camera.focus_distance > 0.0 ? camera.focus_distance : distance);
-    params.projection = static_cast<int>(orthographic ? device::CameraProjection::Orthographic
-                                                      : device::CameraProjection::Perspective);
+    params.right = to_float4(frame.right, 0.0);
+    params.up = to_float4(frame.up, 0.0);
+    params.forward = to_float4(frame.forward, 0.0);
+    params.half_width = f(view.half_width);
+    params.half_height = f(view.half_height);
+    params.lens_radius = f(lens.radius);
+    params.focus_distance = f(lens.focus_distance);
+    params.projection = static_cast<int>(view.orthographic ? device::CameraProjection::Orthographic
+                                                           : device::CameraProjection::Perspective);
     return params;
 }
 

@@ -68,7 +68,9 @@ inline constexpr double kEnvironmentLightShare = 0.5;
 // caster's cone, and a cloud of glass beads gains little from aiming at each.
 inline constexpr std::size_t kMaxCausticCasters = 8;
 
-// Throws std::runtime_error for a camera without a direction.
+// The camera as the kernels read it (orb/scene/camera_frame.h). Throws
+// std::runtime_error for a camera without a direction, std::invalid_argument
+// for an image size that is not positive.
 device::CameraParams layout_camera(const Camera& camera, int width, int height);
 
 }  // namespace orb::render

@@ -8,16 +8,15 @@
 namespace orb {
 namespace {
 
+using vec3::cross;
+using vec3::dot;
+
+// std::hypot rather than vec3::normalized: the imported cameras (and so the
+// content hashes of imported scenes) keep the bits they had.
 Vec3 unit(const Vec3& v) {
     const double length = std::hypot(v[0], v[1], v[2]);
     return {v[0] / length, v[1] / length, v[2] / length};
 }
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // The k-th smallest and k-th largest of `values` (reordered).
 std::pair<double, double> trimmed_bounds(std::vector<double>& values, std::size_t k) {

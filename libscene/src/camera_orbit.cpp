@@ -29,13 +29,12 @@ Camera orbit_camera(const Camera& camera, double degrees) {
     const Vec3& u = camera.up;
     const double length = std::hypot(u[0], u[1], u[2]);
     const Vec3 k{u[0] / length, u[1] / length, u[2] / length};
-    const Vec3 v{camera.position[0] - camera.target[0], camera.position[1] - camera.target[1],
-                 camera.position[2] - camera.target[2]};
+    const Vec3 v = vec3::sub(camera.position, camera.target);
     double sine = 0, cosine = 1;
     sin_cos_degrees(degrees, sine, cosine);
     // Rodrigues' rotation formula: v cos + (k x v) sin + k (k . v)(1 - cos).
-    const Vec3 k_cross_v{k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0]};
-    const double k_dot_v = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
+    const Vec3 k_cross_v = vec3::cross(k, v);
+    const double k_dot_v = vec3::dot(k, v);
     Camera turned = camera;
     for (int c = 0; c < 3; ++c)
         turned.position[c] =

@@ -231,7 +231,7 @@ TEST(FilmExr, OneSampleRecoversSumOfSquaresExactly) {
 }
 
 TEST(FilmExr, RefusesAFilmWithoutSamples) {
-    orb::render::Film film;
+    orb::Film film;
     film.resize(4, 4);
     EXPECT_THROW(write_film_exr(scratch_path("empty.exr"), film, synthetic_metadata(), {}), std::invalid_argument);
 }
@@ -284,7 +284,7 @@ TEST(FilmExrRead, HeaderOnlyFragmentIsAClearInputError) {
 TEST(FilmExr, EveryCompressionStoresTheSameValues) {
     for (const auto [width, height] : {std::pair{97, 37}, std::pair{1, 19}, std::pair{300, 1}}) {
         for (const bool half : {false, true}) {
-            const orb::render::Film film = synthetic_film(width, height, 5, 7);
+            const orb::Film film = synthetic_film(width, height, 5, 7);
             ExrWriteOptions options;
             options.half = half;
             options.compression = ExrCompression::Piz;
@@ -317,7 +317,7 @@ TEST(FilmExr, EveryCompressionStoresTheSameValues) {
 TEST(FilmExr, AReusedEncodingWritesEachFilmWhole) {
     ExrEncoding encoding;
     ExrWriteOptions options;
-    const orb::render::Film big = synthetic_film(64, 48, 3, 1), small = synthetic_film(8, 6, 2, 2);
+    const orb::Film big = synthetic_film(64, 48, 3, 1), small = synthetic_film(8, 6, 2, 2);
     encode_film_exr(big, synthetic_metadata(), options, encoding);
     encode_film_exr(small, synthetic_metadata(), options, encoding);
     const std::string again(encoding.bytes());

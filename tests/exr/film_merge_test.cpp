@@ -12,7 +12,7 @@ using orb::exr::testing::synthetic_metadata;
 namespace {
 
 MergeInput slice(const char* name, const char* ranges, unsigned seed) {
-    const auto parsed = orb::render::SampleRanges::parse(ranges);
+    const auto parsed = orb::SampleRanges::parse(ranges);
     ExrFilm file;
     file.film = synthetic_film(5, 4, parsed.total(), seed);
     file.film.sample_ranges = parsed;

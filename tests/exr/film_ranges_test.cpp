@@ -49,9 +49,9 @@ void rewrite(const std::string& from, const std::string& to, const std::function
     out.writePixels(height);
 }
 
-orb::render::Film film_of(const char* ranges) {
-    const auto parsed = orb::render::SampleRanges::parse(ranges);
-    orb::render::Film film = synthetic_film(4, 3, parsed.total());
+orb::Film film_of(const char* ranges) {
+    const auto parsed = orb::SampleRanges::parse(ranges);
+    orb::Film film = synthetic_film(4, 3, parsed.total());
     film.sample_ranges = parsed;
     return film;
 }

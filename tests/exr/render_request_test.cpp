@@ -20,8 +20,8 @@ constexpr int kWidth = 8, kHeight = 6;
 
 // A file holding the samples `first`:`count`, stored as the options say.
 std::string file_with(const std::string& name, std::uint64_t first, std::uint64_t count, bool half = false) {
-    orb::render::Film film = synthetic_film(kWidth, kHeight, count);
-    film.sample_ranges = orb::render::SampleRanges(orb::render::SampleRange{first, count});
+    orb::Film film = synthetic_film(kWidth, kHeight, count);
+    film.sample_ranges = orb::SampleRanges(orb::SampleRange{first, count});
     ExrWriteOptions options;
     options.half = half;
     options.passes = {Pass::Beauty};

@@ -13,8 +13,8 @@
 
 namespace orb::exr::testing {
 
-render::Film synthetic_film(int width, int height, std::uint64_t spp, unsigned seed) {
-    render::Film film;
+Film synthetic_film(int width, int height, std::uint64_t spp, unsigned seed) {
+    Film film;
     film.resize(width, height);
     film.samples_per_pixel = spp;
     std::mt19937 rng(seed);

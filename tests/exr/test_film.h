@@ -5,14 +5,14 @@
 #include <string>
 
 #include "orb/exr/film_exr.h"
-#include "orb/render/film.h"
+#include "orb/film/film.h"
 
 namespace orb::exr::testing {
 
 // A film whose sums are consistent the way the renderer's are: radiance is
 // direct + indirect + emission, radiance_sq >= radiance^2 / n, |normal| <= n,
 // some pixels are misses (depth +inf, id -1, no alpha).
-render::Film synthetic_film(int width, int height, std::uint64_t spp, unsigned seed = 1);
+Film synthetic_film(int width, int height, std::uint64_t spp, unsigned seed = 1);
 
 ExrMetadata synthetic_metadata();
 

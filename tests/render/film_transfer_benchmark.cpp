@@ -73,7 +73,7 @@ int main(int argc, char** argv)
         for (std::size_t d = 0; d < renderer.devices().size(); ++d)
             devices += (d ? "; " : "") + renderer.devices()[d].name + " (" +
                        std::to_string(renderer.device_sample_ranges()[d].total()) + " spp)";
-        Film film;
+        orb::Film film;
         const Timing first = time_repeats(1, [&] { renderer.read_film(film); });
         const Timing reused = time_repeats(repeats, [&] { renderer.read_film(film); });
         const Timing upload = time_repeats(repeats, [&] { renderer.load_film(film); });

@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "orb/render/film.h"
+#include "orb/film/film.h"
 #include "orb/render/pass_renderer.h"
 
 namespace orb::render::fake {

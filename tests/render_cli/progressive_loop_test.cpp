@@ -37,7 +37,7 @@ TEST_F(LoopTest, FirstPassIsOneSampleThenSuggestedSizesClampedToTheTarget) {
 
 TEST_F(LoopTest, ResumedSamplesCountTowardTheTarget) {
     fake::FakeRenderer renderer = make_renderer();
-    Film resumed;
+    orb::Film resumed;
     resumed.samples_per_pixel = 9;
     renderer.load_film(resumed);
     ProgressiveLimits limits;

@@ -39,7 +39,7 @@ protected:
     }
 };
 
-double mean_alpha(const orb::render::Film& film) {
+double mean_alpha(const orb::Film& film) {
     double sum = 0;
     for (float a : film.alpha) sum += a;
     return sum / (double(film.samples_per_pixel) * film.width * film.height);

@@ -64,7 +64,7 @@ void BackgroundWriter::submit(Job job) {
     in_flight_.push_back(std::move(write));
 }
 
-render::Film BackgroundWriter::take_spare_film() {
+Film BackgroundWriter::take_spare_film() {
     // A frame already written gives its memory back without waiting for one.
     while (!in_flight_.empty() && spare_.empty()) {
         Write& oldest = in_flight_.front();
@@ -72,7 +72,7 @@ render::Film BackgroundWriter::take_spare_film() {
         wait_for_oldest();
     }
     if (spare_.empty()) return {};
-    render::Film film = std::move(spare_.back());
+    Film film = std::move(spare_.back());
     spare_.pop_back();
     return film;
 }

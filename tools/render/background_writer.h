@@ -49,7 +49,7 @@ public:
 
     // The film of a frame written already, for the next frame to read into
     // (its memory reused); an empty film when there is none.
-    render::Film take_spare_film();
+    Film take_spare_film();
 
 private:
     struct Write {
@@ -64,7 +64,7 @@ private:
     std::size_t max_in_flight_;
     std::deque<Write> in_flight_;  // oldest first
     std::exception_ptr error_;     // the first failure, reported once
-    std::vector<render::Film> spare_;
+    std::vector<Film> spare_;
     std::vector<std::shared_ptr<exr::ExrEncoding>> spare_encodings_;
     double waited_ = 0;
 };

@@ -19,7 +19,7 @@ public:
         options_.compression = plan.compression;
     }
 
-    FinalImage image(double seconds_this_run, render::Film reuse = {}, bool read_later = false) {
+    FinalImage image(double seconds_this_run, Film reuse = {}, bool read_later = false) {
         FinalImage image{std::move(reuse), metadata_, options_, std::nullopt};
         if (read_later)
             image.arriving = renderer_.read_film_later();
@@ -66,7 +66,7 @@ const char* stop_reason_name(render::StopReason reason) {
 }
 
 FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, const RenderOptions& options,
-                        cli::OutputFile& image, const std::string& label, FrameClaim* claim, render::Film reuse,
+                        cli::OutputFile& image, const std::string& label, FrameClaim* claim, Film reuse,
                         bool read_later) {
     const std::uint64_t start_spp = renderer.samples_per_pixel();
     ImageWriter writer(plan, image, renderer);
@@ -115,7 +115,7 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
 }
 
 std::string film_summary(const FilmOutcome& outcome, const render::Renderer& renderer, const cli::OutputFile& image) {
-    const render::SampleRanges& held = renderer.sample_ranges();
+    const SampleRanges& held = renderer.sample_ranges();
     const bool from_zero = held.ranges().size() == 1 && held.first() == 0;
     return std::to_string(outcome.stats.spp) + " spp" + (from_zero ? "" : " (samples " + held.format() + ")") +
            " in " + format_duration(outcome.stats.seconds) + " (" + format_rate(outcome.stats.samples_per_second) +

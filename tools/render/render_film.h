@@ -29,7 +29,7 @@ std::string kernel_builds_text(int builds);  // "1 kernel build", "2 kernel buil
 // The final image of a render, ready to be encoded and written once its
 // film has arrived (a frame's film travels back while the next frame renders).
 struct FinalImage {
-    render::Film film;
+    Film film;
     exr::ExrMetadata metadata;
     exr::ExrWriteOptions options;
     std::optional<render::PendingFilm> arriving;  // set while the film is on its way
@@ -65,7 +65,7 @@ struct FilmOutcome {
 // `claim` is refreshed while rendering.
 FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, const RenderOptions& options,
                         cli::OutputFile& image, const std::string& label, FrameClaim* claim,
-                        render::Film reuse = {}, bool read_later = false);
+                        Film reuse = {}, bool read_later = false);
 
 // "64 spp (samples 64:64) in 2.1 s (1.3 Msamples/s) -> out.exr"
 std::string film_summary(const FilmOutcome& outcome, const render::Renderer& renderer, const cli::OutputFile& image);

@@ -53,7 +53,7 @@ bool continue_from(RenderPlan& plan, const std::string& label, const std::string
     try {
         exr::ExrFilm file = exr::read_film_exr(output);
         exr::require_resumable(file, plan.passes, output);
-        const render::SampleRanges& held = file.film.sample_ranges;
+        const SampleRanges& held = file.film.sample_ranges;
         if (held.ranges().size() != 1 || held.first() != plan.first_sample ||
             held.total() >= plan.target_spp)
             throw InputError(output + ": holds the samples " + held.format() + " now");

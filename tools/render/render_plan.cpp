@@ -82,8 +82,8 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     plan.target_spp = o.spp ? *o.spp : m.target_spp;
     if (o.sample_range) {
         // Finishing an interrupted slice: the file must hold the start of it.
-        const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
-        const render::SampleRanges& held = file.film.sample_ranges;
+        const SampleRange slice = parse_sample_range(*o.sample_range);
+        const SampleRanges& held = file.film.sample_ranges;
         if (held.ranges().size() != 1 || held.first() != slice.first || held.end() > slice.end())
             throw InputError(path + ": holds the samples " + held.format() + ", not the start of --sample-range " +
                              *o.sample_range + "; drop --sample-range to continue the file after its last sample");

@@ -7,7 +7,7 @@
 
 #include "orb/cli/tool_main.h"
 #include "orb/exr/passes.h"
-#include "orb/render/sample_ranges.h"
+#include "orb/film/sample_ranges.h"
 
 namespace orb::request {
 namespace {
@@ -29,7 +29,7 @@ const CLI::Validator kSeed(
 const CLI::Validator kSampleRange(
     [](std::string& text) -> std::string {
         try {
-            const render::SampleRange range = render::parse_sample_range(text);
+            const SampleRange range = parse_sample_range(text);
             if (range.count > static_cast<std::uint64_t>(INT_MAX))
                 return "COUNT must be at most 2147483647 (orb:spp is an EXR int), got '" + text + "'";
         } catch (const std::invalid_argument& e) {

@@ -1,6 +1,6 @@
 #include "orb/request/request_settings.h"
 
-#include "orb/render/sample_ranges.h"
+#include "orb/film/sample_ranges.h"
 
 namespace orb::request {
 namespace {
@@ -61,7 +61,7 @@ RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* s
     if (o.spp) s.spp = *o.spp;
     else if (scene) s.spp = static_cast<std::uint64_t>(scene->spp);
     if (o.sample_range) {
-        const render::SampleRange slice = render::parse_sample_range(*o.sample_range);
+        const SampleRange slice = parse_sample_range(*o.sample_range);
         s.slice = true;
         s.first_sample = slice.first;
         s.spp = slice.count;

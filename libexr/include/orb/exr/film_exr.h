@@ -1,4 +1,4 @@
-// Writing a render::Film as one multi-pass OpenEXR file, and reading it back
+// Writing a Film as one multi-pass OpenEXR file, and reading it back
 // for --resume. Channel names, attributes and the resume rules are documented
 // in docs/orb-render.md.
 #pragma once
@@ -12,7 +12,7 @@
 
 #include "orb/exr/camera_matrices.h"
 #include "orb/exr/passes.h"
-#include "orb/render/film.h"
+#include "orb/film/film.h"
 
 namespace orb::exr {
 
@@ -94,18 +94,18 @@ private:
 // writes them safely (tools use orb::cli::OutputFile), into `into` (its
 // bytes() until the next call). Throws std::invalid_argument for an empty
 // film, std::runtime_error if OpenEXR fails.
-void encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+void encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
                      ExrEncoding& into);
 // The same into fresh memory, for a single image.
-std::string encode_film_exr(const render::Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options);
+std::string encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options);
 
 // Writes `path` directly, for tests and simple callers. Throws
 // std::runtime_error on I/O errors and std::invalid_argument for an empty film.
-void write_film_exr(const std::string& path, const render::Film& film, const ExrMetadata& metadata,
+void write_film_exr(const std::string& path, const Film& film, const ExrMetadata& metadata,
                     const ExrWriteOptions& options);
 
 struct ExrFilm {
-    render::Film film;         // sums recovered for the passes present, other channels cleared; sample ranges set
+    Film film;         // sums recovered for the passes present, other channels cleared; sample ranges set
     ExrMetadata metadata;
     std::vector<Pass> passes;  // from orb:passes, every one checked present
     bool half = false;         // some recovered channel is stored as HALF
@@ -119,7 +119,7 @@ struct ExrFilmSummary {
     int width = 0;
     int height = 0;
     std::uint64_t samples_per_pixel = 0;  // orb:spp
-    render::SampleRanges sample_ranges;   // orb:sampleRanges
+    SampleRanges sample_ranges;   // orb:sampleRanges
     ExrMetadata metadata;
     std::vector<Pass> passes;
     bool half = false;  // some channel of `passes` is stored as HALF (not resumable within float rounding)

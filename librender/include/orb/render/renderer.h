@@ -17,9 +17,9 @@
 
 #include "orb/kernels/device_types.h"
 #include "orb/render/device.h"
-#include "orb/render/film.h"
+#include "orb/film/film.h"
 #include "orb/render/pass_renderer.h"
-#include "orb/render/sample_ranges.h"
+#include "orb/film/sample_ranges.h"
 #include "orb/scene/scene.h"
 
 namespace orb::render {

@@ -11,10 +11,9 @@
 
 #include "orb/kernels/device_types.h"
 #include "orb/scene/animation.h"
+#include "orb/scene/vec3.h"
 
 namespace orb {
-
-using Vec3 = std::array<double, 3>;
 
 // Diffuse, Mirror, Dielectric, Pbr: the kinds the kernels implement, defined
 // once for the host and the kernels in kernels/include/orb/kernels/device_types.h.

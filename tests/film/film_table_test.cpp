@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "orb/render/film.h"
+#include "orb/film/film.h"
 
-namespace orb::render {
+namespace orb {
 namespace {
 
 Film filled(float value, SampleRange range)
@@ -93,4 +93,4 @@ TEST(FilmTable, AFilmThatSetsOnlyItsCountHoldsTheFirstSamples)
 }
 
 }  // namespace
-}  // namespace orb::render
+}  // namespace orb

@@ -6,15 +6,18 @@
 // kernels/include/orb/kernels/film_channels.h (what each holds, how it is
 // cleared, accumulated, merged and stored): one std::vector<float> member per
 // row, of the row's name (radiance, alpha, direct, ..., depth, object_id).
+//
+// Plain data (libfilm): what librender renders into and libexr stores, with
+// no OpenCL and no file format, so that neither depends on the other.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "orb/kernels/film_channels.h"
-#include "orb/render/sample_ranges.h"
+#include "orb/film/sample_ranges.h"
 
-namespace orb::render {
+namespace orb {
 
 struct Film {
     int width = 0;
@@ -55,4 +58,4 @@ struct Film {
     void accumulate(const Film& other, std::uint32_t channels = film::kAllChannels);
 };
 
-}  // namespace orb::render
+}  // namespace orb

@@ -1,11 +1,11 @@
-#include "orb/render/sample_ranges.h"
+#include "orb/film/sample_ranges.h"
 
 #include <algorithm>
 #include <charconv>
 #include <limits>
 #include <stdexcept>
 
-namespace orb::render {
+namespace orb {
 namespace {
 
 std::string spell(SampleRange r) { return std::to_string(r.first) + ":" + std::to_string(r.count); }
@@ -99,4 +99,4 @@ SampleRanges SampleRanges::parse(const std::string& text) {
     return set;
 }
 
-}  // namespace orb::render
+}  // namespace orb

@@ -1,9 +1,9 @@
-#include "orb/render/film.h"
+#include "orb/film/film.h"
 
 #include <stdexcept>
 #include <string>
 
-namespace orb::render {
+namespace orb {
 namespace {
 
 using Member = std::vector<float> Film::*;
@@ -74,4 +74,4 @@ void Film::accumulate(const Film& other, std::uint32_t channels)
     sample_ranges = std::move(ranges);
 }
 
-}  // namespace orb::render
+}  // namespace orb

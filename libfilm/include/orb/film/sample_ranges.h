@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace orb::render {
+namespace orb {
 
 // The samples [first, first + count).
 struct SampleRange {
@@ -54,4 +54,4 @@ private:
 // One "START:COUNT" (COUNT >= 1). Throws std::invalid_argument.
 SampleRange parse_sample_range(const std::string& text);
 
-}  // namespace orb::render
+}  // namespace orb

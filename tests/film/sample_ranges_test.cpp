@@ -3,9 +3,9 @@
 
 #include <stdexcept>
 
-#include "orb/render/sample_ranges.h"
+#include "orb/film/sample_ranges.h"
 
-namespace orb::render {
+namespace orb {
 namespace {
 
 TEST(SampleRanges, TouchingRangesJoinAndTheSetIsOrdered)
@@ -58,4 +58,4 @@ TEST(SampleRanges, AStartAndCountOfTheCommandLine)
 }
 
 }  // namespace
-}  // namespace orb::render
+}  // namespace orb

@@ -1,0 +1,50 @@
+# Fails when a library reaches, through its links, a library or package its
+# layer must not use. LINKS: a file setting links_<library> for each of
+# LIBRARIES (tests/layers/CMakeLists.txt writes it from the targets).
+cmake_minimum_required(VERSION 3.25)
+include(${LINKS})
+
+# What each layer must not reach (README.md, "Layout").
+set(opencl orb_kernels orb_render OpenCL::OpenCL)
+set(image_formats orb_exr orb_image OpenEXR::OpenEXR OpenEXR::OpenEXRCore OpenImageIO::OpenImageIO
+    OpenColorIO::OpenColorIO)
+set(forbidden_orb_device_types orb_scene orb_film ${opencl} ${image_formats})
+set(forbidden_orb_scene orb_film ${opencl} ${image_formats})
+set(forbidden_orb_film orb_scene ${opencl} ${image_formats})
+set(forbidden_orb_kernels orb_scene orb_film orb_render ${image_formats})
+set(forbidden_orb_render ${image_formats})
+set(forbidden_orb_exr ${opencl} orb_image OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
+set(forbidden_orb_image ${opencl} orb_exr)
+
+# Everything `library` reaches: its links and, for Orb's own libraries, theirs.
+function(reach library out)
+  set(seen "")
+  set(todo ${library})
+  while(todo)
+    list(POP_FRONT todo current)
+    foreach(link IN LISTS links_${current})
+      string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" link "${link}")
+      if(NOT link IN_LIST seen)
+        list(APPEND seen ${link})
+        if(DEFINED links_${link})
+          list(APPEND todo ${link})
+        endif()
+      endif()
+    endforeach()
+  endwhile()
+  set(${out} ${seen} PARENT_SCOPE)
+endfunction()
+
+set(failures "")
+foreach(library IN LISTS LIBRARIES)
+  reach(${library} reached)
+  message(STATUS "${library} reaches: ${reached}")
+  foreach(link IN LISTS reached)
+    if(link IN_LIST forbidden_${library})
+      string(APPEND failures "\n  ${library} reaches ${link}")
+    endif()
+  endforeach()
+endforeach()
+if(failures)
+  message(FATAL_ERROR "libraries reach what their layer must not:${failures}")
+endif()
