@@ -21,15 +21,29 @@ namespace {
 // 0 rather than the kernels' smoothness threshold: any set of casters keeps
 // the estimator unbiased, so the rule only has to pick the spheres worth
 // aiming at.
+// Each kind's rule is the CASTER_RULE column of ORB_MATERIAL_TABLE.
 bool is_caustic_caster(const device::MaterialRecord& m)
 {
     switch (static_cast<device::MaterialKind>(m.kind)) {
-    case device::MaterialKind::Mirror: return true;
-    case device::MaterialKind::Dielectric: return m.roughness == 0.0f;
-    case device::MaterialKind::Pbr: return m.roughness == 0.0f && m.metallic >= 1.0f;
-    default: return false;
+#define ORB_CASTER_CASE(member, value, name, scn_word, prefix, caster_rule) \
+    case device::MaterialKind::member: return caster_rule(m.roughness, m.metallic);
+        ORB_MATERIAL_TABLE(ORB_CASTER_CASE)
+#undef ORB_CASTER_CASE
     }
+    return false;
 }
+
+// The scene model's MaterialType and the device's MaterialKind are two enums
+// generated from the same table; the record carries the value, so each row
+// must give both the table's value.
+#define ORB_SAME_KIND_VALUE(member, value, name, scn_word, prefix, caster_rule)                  \
+    static_assert(static_cast<int>(MaterialType::member) == (value) &&                           \
+                      static_cast<int>(device::MaterialKind::member) == (value),                 \
+                  "MaterialType::" #member " and device::MaterialKind::" #member " differ");
+ORB_MATERIAL_TABLE(ORB_SAME_KIND_VALUE)
+#undef ORB_SAME_KIND_VALUE
+
+device::MaterialKind device_kind(MaterialType type) { return static_cast<device::MaterialKind>(static_cast<int>(type)); }
 
 float f(double value) { return static_cast<float>(value); }
 
@@ -49,7 +63,7 @@ device::MaterialRecord material_record(const Material& material)
     record.color = to_float4(material.color, 0.0);
     record.emission = to_float4(material.emission, 0.0);
     record.ior = f(material.ior);
-    record.kind = static_cast<int>(material.type);
+    record.kind = static_cast<int>(device_kind(material.type));
     record.roughness = f(material.roughness);
     record.metallic = f(material.metallic);
     return record;

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "orb/scene/importers.h"
+
 namespace orb::detail {
 namespace {
 
@@ -178,6 +180,7 @@ std::string foreign_format_by_content(std::string_view bytes) {
 }
 
 std::string foreign_format_by_extension(const std::string& path) {
+    if (is_importer_extension(path)) return "";  // an importer has come for it since it was listed here
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });

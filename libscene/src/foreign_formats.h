@@ -15,7 +15,9 @@ namespace orb::detail {
 std::string foreign_format_by_content(std::string_view bytes);
 
 // The name of a format Orb cannot read that `path`'s extension names (any
-// case); empty for other extensions, none, and Orb's own.
+// case); empty for other extensions, none, and those of the importers
+// (orb/scene/importers.h), so an importer added for a format listed here
+// takes its files. (By content, import_scene asks the importers first.)
 std::string foreign_format_by_extension(const std::string& path);
 
 }  // namespace orb::detail

@@ -16,6 +16,7 @@
 #include "float_limits.h"
 #include "json_reader.h"
 #include "json_text.h"
+#include "material_types.h"
 #include "orb/scene/error.h"
 #include "scene_json_environment.h"
 #include "scene_json_spheres.h"
@@ -62,11 +63,8 @@ RenderSettings read_render(const Reader& r, const json& value) {
 
 MaterialType read_material_type(const Reader& r, const json& value, const std::string& path) {
     const std::string name = r.string(value, path);
-    if (name == "diffuse") return MaterialType::Diffuse;
-    if (name == "mirror") return MaterialType::Mirror;
-    if (name == "dielectric") return MaterialType::Dielectric;
-    if (name == "pbr") return MaterialType::Pbr;
-    r.fail(path, "expected \"diffuse\", \"mirror\", \"dielectric\" or \"pbr\", got \"" + name + "\"");
+    if (const std::optional<MaterialType> type = detail::material_type_from_name(name)) return *type;
+    r.fail(path, "expected " + detail::quoted_material_type_names(nullptr, " or ") + ", got \"" + name + "\"");
 }
 
 // glTF's defaults for a metallic-roughness material without factors.
@@ -79,8 +77,9 @@ double read_unit_parameter(const Reader& r, const json& m, const std::string& pa
     if (!m.contains(key)) return fallback;
     const std::string key_path = path + "." + key;
     if (!applies) {
-        const std::string owners = key == "roughness" ? "\"dielectric\" and \"pbr\" materials have one"
-                                                      : "\"pbr\" materials have one";
+        const std::string owners =
+            detail::quoted_material_type_names(key == "roughness" ? has_roughness : has_metallic, " and ") +
+            " materials have one";
         r.fail(key_path, "a \"" + type_name + "\" material has no " + key + " (only " + owners +
                              "; a rough metal is \"pbr\" with \"metallic\": 1)");
     }
@@ -212,16 +211,6 @@ void check_coordinates(const Vec3& v, const std::string& source, const std::stri
 }
 
 ordered_json vec3_json(const Vec3& v) { return ordered_json::array({v[0], v[1], v[2]}); }
-
-const char* material_type_name(MaterialType type) {
-    switch (type) {
-        case MaterialType::Diffuse: return "diffuse";
-        case MaterialType::Mirror: return "mirror";
-        case MaterialType::Dielectric: return "dielectric";
-        case MaterialType::Pbr: return "pbr";
-    }
-    return "diffuse";
-}
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "material_types.h"
+
 namespace orb::scn {
 namespace {
 
@@ -19,23 +21,13 @@ std::string colour_word(const Vec3& c) {
     return "blue";
 }
 
-const char* type_word(MaterialType type) {
-    switch (type) {
-        case MaterialType::Mirror: return "mirror";
-        case MaterialType::Dielectric: return "glass";
-        case MaterialType::Pbr: return "pbr";
-        case MaterialType::Diffuse: break;
-    }
-    return "diffuse";
-}
-
 }  // namespace
 
 std::string describe_material(const Material& material) {
     const bool emits = material.emission[0] > 0.0 || material.emission[1] > 0.0 || material.emission[2] > 0.0;
     // A diffuse emitter is what a scene calls its light; its (usually black) reflectance is noise in the name.
     if (emits && material.type == MaterialType::Diffuse && material.color == Vec3{0.0, 0.0, 0.0}) return "light";
-    std::string name = colour_word(material.color) + " " + type_word(material.type);
+    std::string name = colour_word(material.color) + " " + detail::material_type_scn_word(material.type);
     return emits ? name + " light" : name;
 }
 

@@ -2,6 +2,7 @@
 // hold (docs/scn-format.md, "What --to scn loses").
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "orb/scene/scn.h"
@@ -42,14 +43,21 @@ std::string format_number(double value) {
 // A pbr material becomes the .scn kind it is closest to: a mirror when mostly metal, else diffuse.
 constexpr double kScnMetalThreshold = 0.5;
 
-int material_code(const Material& material) {
-    switch (material.type) {
+// SmallptGPU's material codes (docs/scn-format.md): the kinds .scn has. Any
+// other kind has none (the default, so a kind added to ORB_MATERIAL_TABLE is
+// written as diffuse and named as a loss, never silently).
+std::optional<int> exact_material_code(MaterialType type) {
+    switch (type) {
+        case MaterialType::Diffuse: return 0;
         case MaterialType::Mirror: return 1;
         case MaterialType::Dielectric: return 2;
-        case MaterialType::Pbr: return material.metallic >= kScnMetalThreshold ? 1 : 0;
-        case MaterialType::Diffuse: break;
+        default: return std::nullopt;
     }
-    return 0;
+}
+
+int material_code(const Material& material) {
+    if (const std::optional<int> code = exact_material_code(material.type)) return *code;
+    return material.type == MaterialType::Pbr && material.metallic >= kScnMetalThreshold ? 1 : 0;
 }
 
 // SmallptGPU's glass has this index of refraction, its camera this field of view.
@@ -102,6 +110,9 @@ void list_material_losses(const std::vector<Material>& materials, std::vector<st
             lossy.push_back(which + " is pbr (metallic " + format_number(m.metallic) + ", roughness " +
                             format_number(m.roughness) + "); .scn has no such material: written as " +
                             (m.metallic >= kScnMetalThreshold ? "a mirror" : "diffuse"));
+        else if (!exact_material_code(m.type))
+            lossy.push_back(which + " is " + material_type_name(m.type) +
+                            "; .scn has no such material: written as diffuse");
     }
 }
 

@@ -42,7 +42,12 @@ int main(int argc, char** argv) {
         std::string bytes;
         const double read = best_seconds(3, [&] { bytes = read_file(path); });
         orb::Scene scene;
-        const double import = best_seconds(3, [&] { scene = orb::import_scene(bytes, path, ".").scene; });
+        std::string format;
+        const double import = best_seconds(3, [&] {
+            orb::ImportResult imported = orb::import_scene(bytes, path, ".");
+            scene = std::move(imported.scene);
+            format = imported.format;
+        });
         const double validate = best_seconds(3, [&] { orb::validate_scene(scene, path); });
         std::string binary, json;
         const double write_binary = best_seconds(3, [&] { binary = orb::write_scene_binary(scene); });
@@ -51,7 +56,7 @@ int main(int argc, char** argv) {
         std::printf("%s: %zu spheres, %zu materials, %.1f MB\n", path.c_str(), scene.spheres.size(),
                     scene.materials.size(), bytes.size() / 1e6);
         std::printf("  read file        %8.3f s\n  import+validate  %8.3f s  (%s)\n", read, import,
-                    orb::scene_format_name(orb::detect_scene_format(bytes)));
+                    format.c_str());
         std::printf("  of which validate_scene %8.3f s\n", validate);
         std::printf("  write .orb       %8.3f s  (%.1f MB)\n  write JSON       %8.3f s  (%.1f MB)\n", write_binary,
                     binary.size() / 1e6, write_json, json.size() / 1e6);

@@ -20,7 +20,7 @@ using ::testing::HasSubstr;
 std::string error_of(const std::string& bytes) {
     try {
         ImportOptions options;
-        options.format = SceneFormat::Ply;
+        options.format = "ply";
         import_scene(bytes, "bad.ply", ".", options);
     } catch (const InputError& e) {
         return e.what();

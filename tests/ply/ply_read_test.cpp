@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "orb/scene/import.h"
+#include "orb/scene/importers.h"
 #include "orb/scene/ply.h"
 #include "ply_builder.h"
 
@@ -54,10 +55,11 @@ TEST(PlyRead, AsciiAndBothBinaryByteOrdersGiveTheSameScene) {
 TEST(PlyRead, ContentIsRecognisedAsPly) {
     for (const std::string& encoding : kEncodings) {
         const std::string bytes = make_ply(encoding, rich_cloud());
-        EXPECT_EQ(detect_scene_format(bytes), SceneFormat::Ply);
+        ASSERT_NE(recognise_scene(bytes), nullptr);
+        EXPECT_EQ(recognise_scene(bytes)->name, "ply");
         EXPECT_EQ(import_scene(bytes, "cloud.ply", ".").scene, import_ply(bytes, "cloud.ply").scene);
     }
-    EXPECT_EQ(scene_format_from_name("ply"), SceneFormat::Ply);
+    EXPECT_EQ(find_scene_importer("ply"), recognise_scene(make_ply("ascii", rich_cloud())));
 }
 
 TEST(PlyRead, WindowsLineEndingsInTheHeader) {

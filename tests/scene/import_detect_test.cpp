@@ -1,33 +1,99 @@
 // Scene files are recognised by their content, not their name.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
+#include "orb/scene/importers.h"
 
 namespace {
 
-using orb::SceneFormat;
+// The name of the importer that recognises the bytes; "" when none does.
+std::string recognised(std::string_view bytes) {
+    const orb::SceneImporter* importer = orb::recognise_scene(bytes);
+    return importer ? std::string(importer->name) : std::string();
+}
 
 TEST(DetectSceneFormat, ByContent) {
-    EXPECT_EQ(orb::detect_scene_format("glTF\x02\0\0\0"), SceneFormat::Glb);
-    EXPECT_EQ(orb::detect_scene_format(R"({ "asset": { "version": "2.0" } })"), SceneFormat::GltfJson);
-    EXPECT_EQ(orb::detect_scene_format("\xEF\xBB\xBF\n { \"format\": \"orb-scene\", \"version\": 1 }"), SceneFormat::OrbJson);
-    EXPECT_EQ(orb::detect_scene_format("camera 0 0 0 0 0 1\nsize 0\n"), SceneFormat::Scn);
-    EXPECT_EQ(orb::detect_scene_format("  \n"), SceneFormat::Unknown);
+    EXPECT_EQ(recognised("glTF\x02\0\0\0"), "gltf");
+    EXPECT_EQ(recognised(R"({ "asset": { "version": "2.0" } })"), "gltf");
+    EXPECT_EQ(recognised("\xEF\xBB\xBF\n { \"format\": \"orb-scene\", \"version\": 1 }"), "orb");
+    EXPECT_EQ(recognised("camera 0 0 0 0 0 1\nsize 0\n"), "scn");
+    EXPECT_EQ(recognised("ply\nformat ascii 1.0\n"), "ply");
+    EXPECT_EQ(recognised("  \n"), "");
+    EXPECT_EQ(recognised("v 0 0 0\n"), "");  // text the .scn reader would only fall back to
 }
 
 TEST(DetectSceneFormat, MalformedJsonGoesToTheReaderThatExplainsIt) {
-    EXPECT_EQ(orb::detect_scene_format(R"({ "asset": { "version": "2.0" }, )"), SceneFormat::GltfJson);
-    EXPECT_EQ(orb::detect_scene_format(R"({ "format": "orb-scene", )"), SceneFormat::OrbJson);
+    EXPECT_EQ(recognised(R"({ "asset": { "version": "2.0" }, )"), "gltf");
+    EXPECT_EQ(recognised(R"({ "format": "orb-scene", )"), "orb");
 }
 
-TEST(DetectSceneFormat, NamesRoundTrip) {
-    for (SceneFormat f : {SceneFormat::OrbJson, SceneFormat::Scn, SceneFormat::GltfJson, SceneFormat::Glb})
-        EXPECT_EQ(orb::scene_format_from_name(orb::scene_format_name(f)), f);
-    EXPECT_EQ(orb::scene_format_from_name("obj"), SceneFormat::Unknown);
+TEST(SceneImporters, EveryWordFindsItsImporter) {
+    const std::vector<std::string> words = orb::scene_format_words();
+    EXPECT_EQ(words, (std::vector<std::string>{"scn", "gltf", "glb", "ply", "orb", "json", "orb-binary"}));
+    for (const std::string& word : words) EXPECT_NE(orb::find_scene_importer(word), nullptr) << word;
+    EXPECT_EQ(orb::find_scene_importer("glb"), orb::find_scene_importer("gltf"));
+    EXPECT_EQ(orb::find_scene_importer("json"), orb::find_scene_importer("orb"));
+    EXPECT_EQ(orb::find_scene_importer("obj"), nullptr);
+}
+
+TEST(SceneImporters, EveryEntryIsComplete) {
+    std::set<std::string> seen;
+    for (const orb::SceneImporter& importer : orb::scene_importers()) {
+        EXPECT_FALSE(importer.name.empty());
+        EXPECT_FALSE(importer.description.empty()) << importer.name;
+        EXPECT_EQ(importer.description.find('\n'), std::string_view::npos) << importer.name;
+        EXPECT_NE(importer.recognise, nullptr) << importer.name;
+        EXPECT_NE(importer.read, nullptr) << importer.name;
+        EXPECT_FALSE(importer.no_spheres.empty()) << importer.name;
+        for (std::string_view extension : importer.extensions) {
+            EXPECT_TRUE(extension.starts_with('.')) << importer.name;
+            EXPECT_TRUE(seen.insert(std::string(extension)).second) << extension << " listed twice";
+        }
+        EXPECT_TRUE(importer.extensions.size() || !importer.extension_decides) << importer.name;
+        EXPECT_TRUE(seen.insert(std::string(importer.name)).second) << importer.name << " named twice";
+        for (std::string_view alias : importer.aliases)
+            EXPECT_TRUE(seen.insert(std::string(alias)).second) << alias << " named twice";
+    }
+    EXPECT_EQ(orb::readable_file_names(), ".scn, .gltf/.glb, .ply, .json, .orb");
+}
+
+TEST(SceneImporters, TheExtensionDecidesOnlyForItsImporters) {
+    EXPECT_EQ(orb::scene_importer_for_path("dir.v2/model.GLB"), orb::find_scene_importer("gltf"));
+    EXPECT_EQ(orb::scene_importer_for_path("cloud.ply"), orb::find_scene_importer("ply"));
+    EXPECT_EQ(orb::scene_importer_for_path("scene.json"), nullptr);  // content decides: '{' or not
+    EXPECT_EQ(orb::scene_importer_for_path("tri.obj"), nullptr);
+    EXPECT_TRUE(orb::is_importer_extension("scene.JSON"));
+    EXPECT_FALSE(orb::is_importer_extension("tri.obj"));
+}
+
+TEST(ImportScene, TheResultNamesItsImporter) {
+    orb::ImportOptions options;
+    options.allow_empty = true;
+    EXPECT_EQ(orb::import_scene("camera 0 0 9 0 0 0\nsize 0\n", "s.scn", ".", options).format, "scn");
+    options.format = "json";
+    try {
+        orb::import_scene("camera 0 0 9 0 0 0\nsize 0\n", "s.scn", ".", options);
+        FAIL() << "expected an error";
+    } catch (const orb::InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("s.scn:", 0), 0u) << e.what();  // the JSON reader's error
+    }
+}
+
+TEST(ImportScene, AnUnknownFormatNamesTheKnownOnes) {
+    orb::ImportOptions options;
+    options.format = "obj";
+    try {
+        orb::import_scene("v 0 0 0\n", "tri.obj", ".", options);
+        FAIL() << "expected an error";
+    } catch (const orb::InputError& e) {
+        EXPECT_STREQ(e.what(), "unknown scene format \"obj\"; the formats are scn, gltf, glb, ply, orb, json, orb-binary");
+    }
 }
 
 TEST(ImportScene, EmptyInputIsAClearError) {
@@ -84,7 +150,7 @@ TEST(ImportScene, FormatsOrbDoesNotReadAreNamedByContent) {
 TEST(ImportScene, AChosenFormatIsReadAsChosen) {
     // --from scn: the .scn reader explains what it expected.
     orb::ImportOptions options;
-    options.format = SceneFormat::Scn;
+    options.format = "scn";
     try {
         orb::import_scene("v 0 0 0\nf 1 2 3\n", "tri.obj", ".", options);
         FAIL() << "expected an error";
@@ -98,6 +164,20 @@ TEST(ImportScene, AnScnIsNeverTakenForAnotherFormat) {
     orb::ImportOptions options;
     options.allow_empty = true;
     EXPECT_NO_THROW(orb::import_scene("camera 0 0 9 0 0 0\nsize 0\n", "s.obj", ".", options));
+}
+
+TEST(ImportScene, AnExtensionThatDecidesPicksItsReader) {
+    // An Orb JSON scene named .orb goes to the binary reader, whose error says what is wrong.
+    const std::string json = R"({ "format": "orb-scene", "version": 1, "camera": { "position": [0,0,5], "target": [0,0,0] }, "materials": [], "spheres": [] })";
+    try {
+        orb::import_scene(json, "scene.ORB", ".");
+        FAIL() << "expected an error";
+    } catch (const orb::InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("scene.ORB: not an Orb binary scene", 0), 0u) << e.what();
+    }
+    orb::ImportOptions options;
+    options.allow_empty = true;
+    EXPECT_EQ(orb::import_scene(json, "scene.json", ".", options).format, "orb");
 }
 
 constexpr const char* kNoSpheres =

@@ -3,6 +3,7 @@
 
 #include "binary_test_scene.h"
 #include "orb/scene/import.h"
+#include "orb/scene/importers.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 
@@ -58,8 +59,9 @@ TEST(SceneBinary, EmptySceneAndSpecialNumbersRoundTrip) {
 TEST(SceneBinary, FormatIsRecognisedByItsMagic) {
     const std::string bytes = write_scene_binary(test::every_feature_scene());
     EXPECT_TRUE(bytes.starts_with(std::string("\x89ORB\r\n\x1a\n", 8)));
-    EXPECT_EQ(detect_scene_format(bytes), SceneFormat::OrbBinary);
-    EXPECT_EQ(scene_format_from_name("orb-binary"), SceneFormat::OrbBinary);
+    ASSERT_NE(recognise_scene(bytes), nullptr);
+    EXPECT_EQ(recognise_scene(bytes)->name, "orb-binary");
+    EXPECT_EQ(find_scene_importer("orb-binary"), recognise_scene(bytes));
     EXPECT_EQ(import_scene(bytes, "s.orb", ".").scene, test::every_feature_scene());
 }
 

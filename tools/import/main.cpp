@@ -1,12 +1,13 @@
-// orb-import: any scene Orb can read (Orb JSON, SmallptGPU .scn, glTF, GLB, PLY)
-// -> the canonical Orb JSON scene, its binary form (.orb), or back to .scn
-// (docs/orb-import.md).
+// orb-import: any scene Orb can read (the importers of orb/scene/importers.h:
+// Orb JSON, SmallptGPU .scn, glTF, GLB, PLY, ...) -> the canonical Orb JSON
+// scene, its binary form (.orb), or back to .scn (docs/orb-import.md).
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "environment_options.h"
+#include "format_list.h"
 #include "gltf_options.h"
 #include "map_paths.h"
 #include "orb/cli/camera_options.h"
@@ -18,6 +19,7 @@
 #include "orb/cli/texture_decoder_loader.h"
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
+#include "orb/scene/importers.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
@@ -27,8 +29,8 @@
 namespace {
 
 constexpr const char* kDescription =
-    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb, PLY point cloud) to the canonical Orb JSON scene,\n"
-    "the binary Orb scene (.orb, for millions of spheres), or back to SmallptGPU .scn.\n"
+    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb, PLY point cloud: --list-formats) to the\n"
+    "canonical Orb JSON scene, the binary Orb scene (.orb, for millions of spheres), or back to SmallptGPU .scn.\n"
     "The input format is recognised by content.";
 
 constexpr const char* kExamples = R"(Examples:
@@ -43,6 +45,7 @@ constexpr const char* kExamples = R"(Examples:
   orb-import model.gltf --to scn --strict -o m.scn   fail instead of losing anything
   cat scene.txt | orb-import - --from scn            read stdin, say what it is
   orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
+  orb-import --list-formats                          the formats Orb reads, their files and options
 
 Orb reads no other format: an OBJ, STL, FBX, PDB, ... input is refused as such.
 A scene that ends with no sphere (a glTF asset of triangle meshes) is an error
@@ -57,6 +60,7 @@ struct Arguments {
     std::string from;
     std::string to;
     bool strict = false;
+    bool list_formats = false;
     orb::ImportOptions import_options;
     orb::import_tool::EnvironmentChoice environment;
     orb::cli::CameraOptions camera;
@@ -81,12 +85,22 @@ void report_losses(const std::vector<std::string>& losses, bool strict, const st
     for (const auto& loss : losses) orb::cli::warning(loss);
 }
 
-int run(Arguments& args) {
+// Options of one format given for an input of another are named, not silently dropped.
+void warn_about_other_formats_options(const CLI::App& app, std::string_view format, const std::string& source) {
+    const std::string given = orb::import_tool::options_for_other_formats(app, format);
+    if (!given.empty())
+        orb::cli::warning(source + ": ignored " + given + ": the input is read as " + std::string(format) +
+                          " (orb-import --list-formats says which options each format takes)");
+}
+
+int run(Arguments& args, const CLI::App& app) {
     using orb::import_tool::OutputFormat;
     using orb::import_tool::rebase_environment_map;
+    if (args.list_formats) return orb::cli::print_to_stdout(orb::import_tool::format_list());
+    if (args.input.empty()) throw orb::cli::UsageError("missing INPUT (a scene file, or - for stdin)");
     const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
     // Without --from, the content (and the name's extension) says the format (orb::import_scene).
-    if (!args.from.empty()) args.import_options.format = orb::scene_format_from_name(args.from);
+    args.import_options.format = args.from;
     args.import_options.gltf.strict = args.strict;
     args.import_options.gltf.image_decoder = orb::cli::texture_decoder();  // glTF textures, through OpenImageIO, loaded when needed
     // A chosen environment lights the scene: no default light for a glTF asset.
@@ -103,6 +117,7 @@ int run(Arguments& args) {
     const std::string bytes = orb::cli::read_input(args.input);
     orb::ImportResult imported =
         orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
+    warn_about_other_formats_options(app, imported.format, source);
     report_losses(imported.warnings, args.strict, source);
     for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
@@ -134,15 +149,25 @@ int run(Arguments& args) {
 
 int main(int argc, char** argv) {
     Arguments args;
+    const CLI::App* parsed = nullptr;
     return orb::cli::run_tool(
         argc, argv, "orb-import", kDescription,
         [&](CLI::App& app) {
-            app.add_option("INPUT", args.input, "Scene to read; - reads stdin")->required();
+            parsed = &app;
+            app.add_option("INPUT", args.input, "Scene to read; - reads stdin");
             app.add_option("-o,--output", args.output, "Where to write; - (the default) writes stdout")
                 ->option_text("FILE");
-            app.add_option("--from", args.from, "Input format, instead of recognising it by content")
-                ->check(CLI::IsMember({"orb", "json", "scn", "gltf", "glb", "ply", "orb-binary"}))
-                ->option_text("orb|scn|gltf|glb|ply|orb-binary");
+            const std::vector<std::string> formats = orb::scene_format_words();
+            std::string format_choice;
+            for (const std::string& word : formats) {
+                if (!format_choice.empty()) format_choice += '|';
+                format_choice += word;
+            }
+            app.add_option("--from", args.from, "Input format, instead of recognising it by content (--list-formats)")
+                ->check(CLI::IsMember(formats))
+                ->option_text(format_choice);
+            app.add_flag("--list-formats", args.list_formats,
+                         "List the input formats: their names, files, options and what they hold; then exit");
             app.add_option("--to", args.to,
                            "Output format: orb (Orb JSON), orb-binary or scn; default from the -o extension (.orb: "
                            "orb-binary, .scn), else orb")
@@ -158,5 +183,5 @@ int main(int argc, char** argv) {
             orb::cli::add_camera_options(app, args.camera);
             app.footer(kExamples);
         },
-        [&] { return run(args); });
+        [&] { return run(args, *parsed); });
 }

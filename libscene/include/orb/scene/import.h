@@ -1,4 +1,5 @@
-// Recognising a scene file by content and importing it into the canonical model.
+// Recognising a scene file by content and importing it into the canonical
+// model. The formats are the entries of orb/scene/importers.h.
 #pragma once
 
 #include <string>
@@ -11,16 +12,10 @@
 
 namespace orb {
 
-enum class SceneFormat { Unknown, OrbJson, Scn, GltfJson, Glb, Ply, OrbBinary };
-
-SceneFormat detect_scene_format(std::string_view bytes);
-// The format a file name's extension promises: .gltf, .glb, .ply, .orb; Unknown for any other.
-SceneFormat scene_format_from_extension(const std::string& path);
-SceneFormat scene_format_from_name(const std::string& name);  // "orb","json","scn","gltf","glb","ply","orb-binary"
-const char* scene_format_name(SceneFormat format);
-
 struct ImportOptions {
-    SceneFormat format = SceneFormat::Unknown;  // Unknown: detect by content (and the name's extension)
+    // A name of an importer (orb/scene/importers.h: "ply", "json", ...);
+    // empty: recognise the format by content (and the name's extension).
+    std::string format;
     // A scene without spheres is refused, with what was left out and why
     // (an asset of triangle meshes); true accepts it.
     bool allow_empty = false;
@@ -32,13 +27,15 @@ struct ImportResult {
     Scene scene;
     std::vector<std::string> warnings;  // losses: an error for tools run with --strict
     std::vector<std::string> notices;   // additions, such as glTF's default light: warned about, never fatal
+    std::string_view format;            // the name of the importer that read it ("gltf")
 };
 
 // `source` names the input in messages (a path, or <stdin>); without a chosen
 // format its extension helps to choose one: a .gltf/.glb/.ply/.orb name goes
 // to that reader even when the content is too broken to recognise, and a
 // format Orb does not read (tri.obj, by content or by name) is refused as
-// such. `base_dir` resolves external files (glTF buffers). Throws InputError.
+// such. `base_dir` resolves external files (glTF buffers). Throws InputError,
+// also for a `format` no importer has.
 ImportResult import_scene(std::string_view bytes, const std::string& source, const std::string& base_dir,
                           const ImportOptions& options = {});
 

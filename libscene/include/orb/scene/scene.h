@@ -9,15 +9,31 @@
 #include <string>
 #include <vector>
 
-#include "orb/kernels/device_types.h"
+#include "orb/kernels/material_kinds.h"
 #include "orb/scene/animation.h"
 #include "orb/scene/vec3.h"
 
 namespace orb {
 
-// Diffuse, Mirror, Dielectric, Pbr: the kinds the kernels implement, defined
-// once for the host and the kernels in kernels/include/orb/kernels/device_types.h.
-using MaterialType = device::MaterialKind;
+// How a material scatters light: one enumerator per row of ORB_MATERIAL_TABLE
+// (kernels/include/orb/kernels/material_kinds.h), with the table's values, so
+// the scene model names the kernels' kinds without depending on the device's
+// record layouts. librender converts it to the device's MaterialKind by value
+// (checked row by row there).
+#define ORB_SCENE_MATERIAL_TYPE(member, value, name, scn_word, prefix, caster_rule) member = value,
+enum class MaterialType : int { ORB_MATERIAL_TABLE(ORB_SCENE_MATERIAL_TYPE) };
+#undef ORB_SCENE_MATERIAL_TYPE
+
+// Every material type, in the table's order.
+inline constexpr MaterialType kMaterialTypes[] = {
+#define ORB_SCENE_MATERIAL_TYPE(member, value, name, scn_word, prefix, caster_rule) MaterialType::member,
+    ORB_MATERIAL_TABLE(ORB_SCENE_MATERIAL_TYPE)
+#undef ORB_SCENE_MATERIAL_TYPE
+};
+
+// The type's name in the scene format ("diffuse", "dielectric", ...), the
+// table's "scene name" column.
+const char* material_type_name(MaterialType type);
 
 struct Material {
     std::string name;

@@ -1,0 +1,77 @@
+// The scene importers, one entry each: what the format is called, how an
+// input is recognised (content, file name), the function that reads it, the
+// options that apply to it, and a line that describes it. import_scene
+// chooses from this table; orb-import's --from and --list-formats, the
+// refusal of formats Orb does not read and docs/orb-import.md read it too.
+// Adding an importer is one entry in libscene/src/importers.cpp and its files.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "orb/scene/import.h"
+
+namespace orb {
+
+// How sure an importer is, from the bytes alone, that an input is its format.
+enum class ContentMatch {
+    No,        // not this format (or nothing to read: empty text)
+    Fallback,  // could be: the reader to try when no importer says Yes (the .scn reader takes any text)
+    Yes,       // this format's magic number or structure
+};
+
+// What an importer's read function hands back.
+struct ImporterOutput {
+    ImportResult imported;
+    // Why the scene has no sphere, when it has none and the reader knows
+    // better than "it holds none" ("its 'vertex' element has 0 rows").
+    std::string no_spheres;
+};
+
+struct SceneImporter {
+    std::string_view name{};                  // --from's word, the name in messages and listings: "ply"
+    std::vector<std::string_view> aliases{}; // other words --from takes for it: "json", "glb"
+    std::string_view description{};           // one line, for orb-import --list-formats
+    // The file name endings its files have (lowercase, compared in any case),
+    // listed in messages ("Orb reads .scn, .gltf/.glb, ...").
+    std::vector<std::string_view> extensions{};
+    // Whether such a name sends an input here even when no importer
+    // recognises its content, so that a broken file gets this reader's error.
+    bool extension_decides = false;
+    // Checked in table order; the first Yes wins (so a more specific format
+    // comes before one that takes what it leaves: glTF JSON before Orb JSON).
+    ContentMatch (*recognise)(std::string_view bytes) = nullptr;
+    // Reads the input; throws InputError naming the source and the place.
+    ImporterOutput (*read)(std::string_view bytes, const std::string& source, const std::string& base_dir,
+                           const ImportOptions& options) = nullptr;
+    // The heading of the options that apply to this format only (orb-import's
+    // help groups them under it: "PLY input"); empty when none do.
+    std::string_view option_group{};
+    // Why a scene of this format has no sphere, when the reader does not say.
+    std::string_view no_spheres = "it holds none";
+};
+
+// Every importer, in the order their content is checked.
+std::span<const SceneImporter> scene_importers();
+
+// The importer `name` names (its name or an alias); null for any other word.
+const SceneImporter* find_scene_importer(std::string_view name);
+
+// The importer whose extension `path` has and decides by (.gltf, .glb, .ply, .orb); null for any other.
+const SceneImporter* scene_importer_for_path(const std::string& path);
+
+// Whether `path`'s extension is one an importer lists (any case).
+bool is_importer_extension(const std::string& path);
+
+// The first importer that says Yes to the bytes; null when none does.
+const SceneImporter* recognise_scene(std::string_view bytes);
+
+// "orb, json, scn, gltf, glb, ply, orb-binary": every word --from takes, in table order.
+std::vector<std::string> scene_format_words();
+
+// ".scn, .gltf/.glb, .ply, .json, .orb": the file names Orb reads, for messages.
+std::string readable_file_names();
+
+}  // namespace orb
