@@ -8,9 +8,6 @@
 // in the BSDF tests). A kind left out is never asked for; its case is gone
 // from the program, and asking for it anyway is a host error (the kinds
 // mask is made from the scene).
-#ifndef ORB_MATERIAL_KINDS
-#define ORB_MATERIAL_KINDS 0xffffffffu
-#endif
 #define ORB_KIND_BUILT(kind) ((((uint)(ORB_MATERIAL_KINDS)) >> (kind)) & 1u)
 
 #define ORB_BSDF_CASE_HAS_DENSITY(member, value, name, scn_word, prefix, caster_rule) \

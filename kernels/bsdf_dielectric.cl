@@ -20,9 +20,6 @@ inline float fresnel_dielectric(float cos_i, float eta, float* cos_t)
 
 // Rough glass's code is in the program only when a glass of the scene is
 // rough (-DORB_ROUGH_DIELECTRIC=0 from the host otherwise; built when absent).
-#ifndef ORB_ROUGH_DIELECTRIC
-#define ORB_ROUGH_DIELECTRIC 1
-#endif
 inline bool dielectric_is_smooth(float alpha) { return !ORB_ROUGH_DIELECTRIC || ggx_is_smooth(alpha); }
 
 inline bool dielectric_has_density(const Bsdf* b) { return !dielectric_is_smooth(ggx_alpha(b->roughness)); }

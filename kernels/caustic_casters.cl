@@ -19,10 +19,7 @@
 // casters are: the mixture covers every direction the BSDF covers.
 
 // The share of continuations aimed at casters, chosen by time to equal error
-// (docs/performance.md; -DORB_CASTER_SHARE=0 turns the aiming off).
-#ifndef ORB_CASTER_SHARE
-#define ORB_CASTER_SHARE 0.25f
-#endif
+// (docs/design/caustic-casters.md; -DORB_CASTER_SHARE=0 turns the aiming off).
 
 // The density of direction wi under uniform sampling of caster c's cone from
 // p: 0 outside the cone, and for a p inside the caster (it has no cone).

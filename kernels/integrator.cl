@@ -13,22 +13,16 @@
 // estimation there counts it, and so does the continuation when the sampled
 // lobe was not a delta. Mirror and smooth-glass events are delta vertices.
 
-// Russian roulette applies from this scattering event on (a build option
-// for experiments: -DRR_START_EVENT=N).
-#ifndef RR_START_EVENT
-#define RR_START_EVENT 2
-#endif
+// Russian roulette applies from scattering event RR_START_EVENT on (a
+// kernel feature, kernel_features.h).
 // A path whose throughput (refraction's scaling divided out) is at least
 // this survives the roulette for sure; below it, it survives with
 // probability throughput / RR_THRESHOLD. Chosen by time to equal error, not
-// samples/s (docs/performance.md): with 1, caustic paths in the Cornell box
+// samples/s (docs/design/russian-roulette.md): with 1, caustic paths in the Cornell box
 // (floor, then glass, then the light) were cut at every event with q = 0.75
 // and came back 1/q brighter, doubling the variance per sample; with 0.25 a
 // path survives until its throughput is small, which in these scenes is
 // rarely before the depth limit.
-#ifndef RR_THRESHOLD
-#define RR_THRESHOLD 0.25f
-#endif
 
 typedef struct {
     float3 emission;  // paths with no non-delta vertex (emitters seen directly or through specular chains)
@@ -191,11 +185,10 @@ inline bool follow_hit(const SceneView* scene, PathState* path, PathSample* out,
     // used. GPUs draw all of them in every lane before the branches: the
     // numbers are the same (each is a function of its block and slot), and
     // lanes at delta and non-delta vertices hash together instead of in
-    // turn (3% more samples/s on the Cornell box, docs/performance.md,
-    // "Nsight Compute through a CUDA replay").
+    // turn (3% more samples/s on the Cornell box, docs/design/sampler.md).
     const RandBlock r = rand_block(coords, (uint)(depth + 1));
     const bool has_density = bsdf_has_density(&m.bsdf);
-#ifdef ORB_INTERSECT_SCALAR
+#if ORB_DRAW_ALL_NUMBERS
     const float2 u_light = rand_pair(&r, 0u);
     const float2 u_drawn = rand_pair(&r, 1u);
     float choice = rand_single(&r);
@@ -223,7 +216,7 @@ inline bool follow_hit(const SceneView* scene, PathState* path, PathSample* out,
     // again and independent of those picks) for the roulette below. Where
     // the BSDF has a density the direction comes from the continuation's
     // mixture, which also aims at glass and mirror balls (caustic_casters.cl).
-#ifndef ORB_INTERSECT_SCALAR
+#if !ORB_DRAW_ALL_NUMBERS
     float choice = rand_single(&r);
 #endif
     const BsdfSample bs =
@@ -349,7 +342,7 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     // error -36) in most renders of a scene with a tree that built the depth
     // or id channel and let paths reach a third scattering event, at every
     // register cap but one; cast before the loop, never
-    // (docs/performance.md, "The -36 fault, found").
+    // (docs/design/nvidia-fault-36.md).
     if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
         const FilmCentre centre = film_centre_ray(&scene, &cam, x, y, width, height);
         ORB_FILM_SET_CENTRE

@@ -1,9 +1,9 @@
-// The path tracer of integrator.cl with ORB_SIMD_WIDTH camera paths in the
+// The path tracer of integrator.cl with ORB_LANES camera paths in the
 // SIMD lanes of one work-item, for CPUs (docs/rendering.md, "SIMD lanes on
 // CPUs"). PoCL runs each work-item's path as scalar code: the megakernel's
 // loops and branches keep LLVM from vectorising across work-items, so a
 // 16-lane AVX-512 core did one path at a time. Here lane l of work-item
-// (gx, y) is pixel (gx * ORB_SIMD_WIDTH + l, y), each lane loops over the
+// (gx, y) is pixel (gx * ORB_LANES + l, y), each lane loops over the
 // pass's samples with its own path regeneration, and every step is vector
 // arithmetic over all lanes with masks where the lanes' paths differ.
 //
@@ -21,32 +21,26 @@
 // tests/render/simd_kernel_test.cpp renders scenes with both kernels and
 // requires the same paths.
 
-#ifndef ORB_SIMD_KERNEL
-#define ORB_SIMD_KERNEL 0
-#endif
-#if ORB_SIMD_KERNEL
+#if ORB_LANES > 1
 
-#ifndef ORB_SIMD_WIDTH
-#define ORB_SIMD_WIDTH 16
-#endif
 #define ORB_VEC_NAME_(type, width) type##width
 #define ORB_VEC_NAME(type, width) ORB_VEC_NAME_(type, width)
-typedef ORB_VEC_NAME(float, ORB_SIMD_WIDTH) vfloat;
-typedef ORB_VEC_NAME(int, ORB_SIMD_WIDTH) vint;
-typedef ORB_VEC_NAME(uint, ORB_SIMD_WIDTH) vuint;
-#define vload_lanes ORB_VEC_NAME(vload, ORB_SIMD_WIDTH)
-#define vstore_lanes ORB_VEC_NAME(vstore, ORB_SIMD_WIDTH)
-#define to_vfloat ORB_VEC_NAME(convert_float, ORB_SIMD_WIDTH)
-#define vint_from_float ORB_VEC_NAME(convert_int, ORB_SIMD_WIDTH)
-#define vuint_from_int ORB_VEC_NAME(convert_uint, ORB_SIMD_WIDTH)
-#if ORB_SIMD_WIDTH == 16
+typedef ORB_VEC_NAME(float, ORB_LANES) vfloat;
+typedef ORB_VEC_NAME(int, ORB_LANES) vint;
+typedef ORB_VEC_NAME(uint, ORB_LANES) vuint;
+#define vload_lanes ORB_VEC_NAME(vload, ORB_LANES)
+#define vstore_lanes ORB_VEC_NAME(vstore, ORB_LANES)
+#define to_vfloat ORB_VEC_NAME(convert_float, ORB_LANES)
+#define vint_from_float ORB_VEC_NAME(convert_int, ORB_LANES)
+#define vuint_from_int ORB_VEC_NAME(convert_uint, ORB_LANES)
+#if ORB_LANES == 16
 #define ORB_LANE_INDEX ((vint)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
-#elif ORB_SIMD_WIDTH == 8
+#elif ORB_LANES == 8
 #define ORB_LANE_INDEX ((vint)(0, 1, 2, 3, 4, 5, 6, 7))
-#elif ORB_SIMD_WIDTH == 4
+#elif ORB_LANES == 4
 #define ORB_LANE_INDEX ((vint)(0, 1, 2, 3))
 #else
-#error "ORB_SIMD_WIDTH must be 4, 8 or 16"
+#error "ORB_LANES must be 4, 8 or 16"
 #endif
 
 // Everything here is inlined: PoCL passes the vectors of a call that is not
@@ -315,19 +309,19 @@ SIMD_FN void v_intersect(const SceneView* scene, v3 o, v3 d, vint self, vint lan
     // already. Each lane starts from its closest hit outside the tree, as
     // intersect_scene does, so the traversal prunes by it.
     if (scene->bvh_node_count > 0 && any(lanes)) {
-        float ox[ORB_SIMD_WIDTH], oy[ORB_SIMD_WIDTH], oz[ORB_SIMD_WIDTH];
-        float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH], t_lane[ORB_SIMD_WIDTH];
-        int self_lane[ORB_SIMD_WIDTH], id_lane[ORB_SIMD_WIDTH], traced[ORB_SIMD_WIDTH];
+        float ox[ORB_LANES], oy[ORB_LANES], oz[ORB_LANES];
+        float dx[ORB_LANES], dy[ORB_LANES], dz[ORB_LANES], t_lane[ORB_LANES];
+        int self_lane[ORB_LANES], id_lane[ORB_LANES], traced[ORB_LANES];
         v3_store_lanes(o, ox, oy, oz);
         v3_store_lanes(d, dx, dy, dz);
         vstore_lanes(best, 0, t_lane), vstore_lanes(id, 0, id_lane), vstore_lanes(self, 0, self_lane);
         vstore_lanes(lanes, 0, traced);
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+        for (int l = 0; l < ORB_LANES; ++l) {
             const float3 lane_o = (float3)(ox[l], oy[l], oz[l]), lane_d = (float3)(dx[l], dy[l], dz[l]);
             if (!traced[l] || !(all(isfinite(lane_o)) && all(isfinite(lane_d)))) continue;
             BestHit lane_best;
             best_init(&lane_best);
-#ifdef ORB_INTERSECT_SCALAR
+#if ORB_SCALAR_TRAVERSAL
             lane_best.t = t_lane[l];
             lane_best.id = id_lane[l];
 #else
@@ -355,13 +349,13 @@ SIMD_FN vint v_light_visible(const SceneView* scene, v3 o, v3 d, vint self, vint
 {
 #if ORB_BVH
     if (scene->bvh_node_count > 0) {
-        float ox[ORB_SIMD_WIDTH], oy[ORB_SIMD_WIDTH], oz[ORB_SIMD_WIDTH];
-        float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH];
-        int self_lane[ORB_SIMD_WIDTH], light_lane[ORB_SIMD_WIDTH], visible[ORB_SIMD_WIDTH];
+        float ox[ORB_LANES], oy[ORB_LANES], oz[ORB_LANES];
+        float dx[ORB_LANES], dy[ORB_LANES], dz[ORB_LANES];
+        int self_lane[ORB_LANES], light_lane[ORB_LANES], visible[ORB_LANES];
         v3_store_lanes(o, ox, oy, oz);
         v3_store_lanes(d, dx, dy, dz);
         vstore_lanes(self, 0, self_lane), vstore_lanes(light, 0, light_lane), vstore_lanes(lanes, 0, visible);
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l)
+        for (int l = 0; l < ORB_LANES; ++l)
             if (visible[l])
                 visible[l] = light_visible(scene, (float3)(ox[l], oy[l], oz[l]), (float3)(dx[l], dy[l], dz[l]),
                                            self_lane[l], light_lane[l])
@@ -395,10 +389,10 @@ typedef struct {
 SIMD_FN VSphere v_load_spheres(const SceneView* scene, vint id)
 {
     if (scene->sphere_count > ORB_SIMD_SELECT_GATHER_MAX) {
-        int ids[ORB_SIMD_WIDTH], kind[ORB_SIMD_WIDTH];
-        float f[12][ORB_SIMD_WIDTH];
+        int ids[ORB_LANES], kind[ORB_LANES];
+        float f[12][ORB_LANES];
         vstore_lanes(id, 0, ids);
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+        for (int l = 0; l < ORB_LANES; ++l) {
             SCENE_MEM const SphereRecord* r = &scene->spheres[max(ids[l], 0)];
             SCENE_MEM const MaterialRecord* material = &scene->materials[r->material];
             const float4 cr = r->centre_radius;
@@ -590,16 +584,16 @@ SIMD_FN v3 v_estimate_light(const SceneView* scene, v3 p, vint self, v3 color, v
         lanes &= ~environment_lanes;
         if (!any(lanes)) return environment;
     } else if (ORB_ENVIRONMENT && any(environment_lanes)) {
-        float px[ORB_SIMD_WIDTH], py[ORB_SIMD_WIDTH], pz[ORB_SIMD_WIDTH], nx[ORB_SIMD_WIDTH], ny[ORB_SIMD_WIDTH],
-            nz[ORB_SIMD_WIDTH], cr[ORB_SIMD_WIDTH], cg[ORB_SIMD_WIDTH], cb[ORB_SIMD_WIDTH], pick_lane[ORB_SIMD_WIDTH],
-            u_lane[ORB_SIMD_WIDTH], v_lane[ORB_SIMD_WIDTH];
-        int self_lane[ORB_SIMD_WIDTH], sampled[ORB_SIMD_WIDTH];
+        float px[ORB_LANES], py[ORB_LANES], pz[ORB_LANES], nx[ORB_LANES], ny[ORB_LANES],
+            nz[ORB_LANES], cr[ORB_LANES], cg[ORB_LANES], cb[ORB_LANES], pick_lane[ORB_LANES],
+            u_lane[ORB_LANES], v_lane[ORB_LANES];
+        int self_lane[ORB_LANES], sampled[ORB_LANES];
         v3_store_lanes(p, px, py, pz);
         v3_store_lanes(n, nx, ny, nz);
         v3_store_lanes(color, cr, cg, cb);
         vstore_lanes(pick_pdf, 0, pick_lane), vstore_lanes(u, 0, u_lane), vstore_lanes(u_v, 0, v_lane);
         vstore_lanes(self, 0, self_lane), vstore_lanes(environment_lanes, 0, sampled);
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+        for (int l = 0; l < ORB_LANES; ++l) {
             float3 radiance = (float3)(0.0f);
             if (sampled[l]) {
                 Bsdf bsdf;
@@ -661,11 +655,11 @@ SIMD_FN v3 v_sample_lights(const SceneView* scene, v3 p, vint self, v3 color, v3
 #endif
     if (light_count > ORB_SIMD_SELECT_GATHER_MAX) {
         // Many lights: each lane reads its alias-table slot on its own.
-        int slot_lane[ORB_SIMD_WIDTH], sphere_lane[ORB_SIMD_WIDTH];
-        float rest_lane[ORB_SIMD_WIDTH], pdf_lane[ORB_SIMD_WIDTH], u_lane[ORB_SIMD_WIDTH];
+        int slot_lane[ORB_LANES], sphere_lane[ORB_LANES];
+        float rest_lane[ORB_LANES], pdf_lane[ORB_LANES], u_lane[ORB_LANES];
         vstore_lanes(slot, 0, slot_lane);
         vstore_lanes(rest, 0, rest_lane);
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+        for (int l = 0; l < ORB_LANES; ++l) {
             SCENE_MEM const LightRecord* entry = &scene->lights[slot_lane[l]];
 #if ORB_UNIFORM_LIGHTS
             sphere_lane[l] = entry->sphere;
@@ -790,13 +784,13 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         v_add_by_vertex_count(out, path->nondelta_vertices, seen, escaped);
         if (ORB_FILM_BUILT(background)) out->background = v3_select(out->background, seen, escaped & (path->depth == 0));
     } else if (ORB_ENVIRONMENT && scene->environment.width > 0 && any(escaped)) {
-        float dx[ORB_SIMD_WIDTH], dy[ORB_SIMD_WIDTH], dz[ORB_SIMD_WIDTH], pdf_lane[ORB_SIMD_WIDTH];
-        float er[ORB_SIMD_WIDTH], eg[ORB_SIMD_WIDTH], eb[ORB_SIMD_WIDTH];
-        int density_lane[ORB_SIMD_WIDTH], escaped_lane[ORB_SIMD_WIDTH];
+        float dx[ORB_LANES], dy[ORB_LANES], dz[ORB_LANES], pdf_lane[ORB_LANES];
+        float er[ORB_LANES], eg[ORB_LANES], eb[ORB_LANES];
+        int density_lane[ORB_LANES], escaped_lane[ORB_LANES];
         v3_store_lanes(path->d, dx, dy, dz);
         vstore_lanes(path->from_pdf, 0, pdf_lane), vstore_lanes(path->from_density, 0, density_lane);
         vstore_lanes(escaped, 0, escaped_lane);
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+        for (int l = 0; l < ORB_LANES; ++l) {
             const float3 e = escaped_lane[l] ? escaped_radiance(scene, (float3)(dx[l], dy[l], dz[l]), density_lane[l] != 0,
                                                                 pdf_lane[l], environment_pick)
                                              : (float3)(0.0f);
@@ -847,10 +841,10 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
     // through render_pass's BSDF interface, lane by lane (below).
     vint general = (vint)(0);
     if (ORB_KIND_BUILT(MaterialKind_Pbr) || ORB_ROUGH_DIELECTRIC) {
-        int id_lane[ORB_SIMD_WIDTH], general_lane[ORB_SIMD_WIDTH];
+        int id_lane[ORB_LANES], general_lane[ORB_LANES];
         vstore_lanes(id, 0, id_lane);
         vstore_lanes(go, 0, general_lane);
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+        for (int l = 0; l < ORB_LANES; ++l) {
             if (!general_lane[l]) continue;
             const Bsdf b = load_bsdf(&scene->materials[scene->spheres[id_lane[l]].material]);
             const bool pbr = b.kind == MaterialKind_Pbr && ORB_KIND_BUILT(MaterialKind_Pbr);
@@ -926,9 +920,9 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         vfloat u_light, v_light, u_d, v_d;
         v_rand_pair(&r, coords, 0u, general, &u_light, &v_light);
         v_rand_pair(&r, coords, 1u, general, &u_d, &v_d);
-        float f[25][ORB_SIMD_WIDTH];
-        int id_lane[ORB_SIMD_WIDTH], lane_on[ORB_SIMD_WIDTH], outside_lane[ORB_SIMD_WIDTH],
-            albedo_set_lane[ORB_SIMD_WIDTH], delta_lane[ORB_SIMD_WIDTH];
+        float f[25][ORB_LANES];
+        int id_lane[ORB_LANES], lane_on[ORB_LANES], outside_lane[ORB_LANES],
+            albedo_set_lane[ORB_LANES], delta_lane[ORB_LANES];
         v3_store_lanes(p, f[0], f[1], f[2]);
         v3_store_lanes(n, f[3], f[4], f[5]);
         v3_store_lanes(wo, f[6], f[7], f[8]);
@@ -937,8 +931,8 @@ SIMD_FN vint v_extend_paths(const SceneView* scene, VPath* path, VPathSample* ou
         vstore_lanes(v_d, 0, f[15]), vstore_lanes(choice, 0, f[16]);
         vstore_lanes(id, 0, id_lane), vstore_lanes(general, 0, lane_on), vstore_lanes(outside, 0, outside_lane);
         vstore_lanes(path->albedo_set, 0, albedo_set_lane);
-        float a[3][ORB_SIMD_WIDTH], direct[3][ORB_SIMD_WIDTH];
-        for (int l = 0; l < ORB_SIMD_WIDTH; ++l) {
+        float a[3][ORB_LANES], direct[3][ORB_LANES];
+        for (int l = 0; l < ORB_LANES; ++l) {
             a[0][l] = a[1][l] = a[2][l] = direct[0][l] = direct[1][l] = direct[2][l] = 0.0f;
             delta_lane[l] = 0;
             if (!lane_on[l]) continue;
@@ -1051,9 +1045,9 @@ SIMD_FN void v_film_add_sample(VFilmSums* sums, const VPathSample* s, vint lanes
 
 // Lane l of a VFilmSums into the FilmSums `sums` that ORB_FILM_ADD_SUMS reads:
 // each built channel's vectors are stored to an array once, then read per lane.
-#define ORB_SIMD_SPILL_1(name) float name##_lanes[ORB_SIMD_WIDTH]; vstore_lanes(vsums.name, 0, name##_lanes);
+#define ORB_SIMD_SPILL_1(name) float name##_lanes[ORB_LANES]; vstore_lanes(vsums.name, 0, name##_lanes);
 #define ORB_SIMD_SPILL_3(name)                     \
-    float name##_lanes[3 * ORB_SIMD_WIDTH];       \
+    float name##_lanes[3 * ORB_LANES];       \
     vstore_lanes(vsums.name.x, 0, name##_lanes);  \
     vstore_lanes(vsums.name.y, 1, name##_lanes);  \
     vstore_lanes(vsums.name.z, 2, name##_lanes);
@@ -1063,7 +1057,7 @@ SIMD_FN void v_film_add_sample(VFilmSums* sums, const VPathSample* s, vint lanes
     ORB_SIMD_SPILL_IF_##accumulate(name, components)
 #define ORB_SIMD_PICK_1(name) sums.name = name##_lanes[lane];
 #define ORB_SIMD_PICK_3(name) \
-    sums.name = (float3)(name##_lanes[lane], name##_lanes[ORB_SIMD_WIDTH + lane], name##_lanes[2 * ORB_SIMD_WIDTH + lane]);
+    sums.name = (float3)(name##_lanes[lane], name##_lanes[ORB_LANES + lane], name##_lanes[2 * ORB_LANES + lane]);
 #define ORB_SIMD_PICK_IF_Sum(name, components) ORB_SIMD_PICK_##components(name)
 #define ORB_SIMD_PICK_IF_CentreRay(name, components)
 #define ORB_SIMD_PICK(name, components, clear, accumulate, merge, layer, stored_as, paired, names) \
@@ -1073,7 +1067,7 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
 {
     const int width = params.settings.width;
     const int height = params.settings.height;
-    const int x0 = (int)get_global_id(0) * ORB_SIMD_WIDTH;
+    const int x0 = (int)get_global_id(0) * ORB_LANES;
     const int y = get_global_id(1);
     if (x0 >= width || y >= height) return;
 
@@ -1088,13 +1082,13 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
     const vint x = (vint)(x0) + ORB_LANE_INDEX;
     const vint in_image = x < width;
     const vuint pixel = (vuint)((uint)y * (uint)width) + vuint_from_int(x);
-    uint keys[ORB_SIMD_WIDTH];
-    for (int lane = 0; lane < ORB_SIMD_WIDTH; ++lane)
+    uint keys[ORB_LANES];
+    for (int lane = 0; lane < ORB_LANES; ++lane)
         keys[lane] = sampler_pixel_key((uint)(y * width + x0 + lane), seed);
     const vuint pixel_key = vload_lanes(0, keys);
 
     // This work-item's pixels: lanes past the image's right edge have none.
-    const int lanes_in_image = min(ORB_SIMD_WIDTH, width - x0);
+    const int lanes_in_image = min(ORB_LANES, width - x0);
 
     // The centre-ray channels first, lane by lane, as render_pass does.
     if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
@@ -1154,4 +1148,4 @@ __kernel void render_pass_simd(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, OR
     }
 }
 
-#endif  // ORB_SIMD_KERNEL
+#endif  // ORB_LANES > 1

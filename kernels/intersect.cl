@@ -298,8 +298,8 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 // instruction, instead of testing the four boxes, ordering the hit ones and
 // visiting them one by one. A visit there is a chain of dependent steps and
 // branches; the spheres are a few branch-free vector tests, more arithmetic
-// than the boxes would have let through but less time (docs/performance.md,
-// "Why the 3× ratios stay out of reach"). GPUs test one sphere at a time,
+// than the boxes would have let through but less time
+// (docs/design/simd-lanes.md). GPUs test one sphere at a time,
 // so for them the boxes stay: the host turns ORB_BVH_LEAF_RUNS off where it
 // turns ORB_SCALAR_TRAVERSAL on.
 #define ORB_BVH_STACK_LIMIT (ORB_BVH_CHECK_STACK > 0 ? ORB_BVH_CHECK_STACK : ORB_BVH_STACK_SIZE)
@@ -387,7 +387,7 @@ inline int pop_deferred(const BestHit* best, const int* children, const float* e
 // stands on a leaf too, that one. Nsight Compute showed the ordered
 // traversal testing leaves with 2 to 3 of a warp's 32 lanes at a million
 // spheres; this gives 4% more samples/s on an H100 at 1 k to 1 M spheres
-// (docs/performance.md, "Speculative traversal"). The hits are the same:
+// (docs/design/speculative-traversal.md). The hits are the same:
 // visits made while a postponed leaf waits only cull less.
 
 inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,

@@ -79,18 +79,6 @@
 #error "ORB_LANES must be 1, 4, 8 or 16"
 #endif
 
-/* Until integrator*.cl read the new names: ORB_INTERSECT_SCALAR was
- * ORB_SCALAR_TRAVERSAL and ORB_DRAW_ALL_NUMBERS together (tested with
- * #ifdef), ORB_SIMD_KERNEL with ORB_SIMD_WIDTH was ORB_LANES > 1. Delete
- * these once no kernel file names the old symbols. */
-#if ORB_SCALAR_TRAVERSAL && !defined(ORB_INTERSECT_SCALAR)
-#define ORB_INTERSECT_SCALAR 1
-#endif
-#if ORB_LANES > 1 && !defined(ORB_SIMD_KERNEL)
-#define ORB_SIMD_KERNEL 1
-#define ORB_SIMD_WIDTH ORB_LANES
-#endif
-
 #else
 
 #include <array>
