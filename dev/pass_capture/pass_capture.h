@@ -1,11 +1,12 @@
 // One render pass written to a folder, so that it can be run again outside
 // OpenCL: NVIDIA's OpenCL kernels are invisible to Nsight Compute, but the
 // same program (NVIDIA's OpenCL binaries are PTX) launched through CUDA's
-// driver API is not (tests/render/cuda_replay.cpp, docs/performance.md).
-// Development knobs: ORB_CAPTURE_PASS=DIR captures the first pass that adds
-// samples and writes no centre ray, after skipping ORB_CAPTURE_SKIP (default
-// 0) such passes. A benchmark's first passes are short (the pass tuner starts
-// small), and a short pass's lanes idle at its end, so profile a later one.
+// driver API is not (dev/pass_capture/cuda_replay.cpp, docs/performance.md).
+// A pass observer (librender/src/pass_observer.h): orb-capture-pass sets one
+// in RenderConfig::development. It captures the first pass that adds samples
+// and writes no centre ray, after letting `skip` such passes go by. A
+// benchmark's first passes are short (the pass tuner starts small), and a
+// short pass's lanes idle at its end, so profile a later one.
 #pragma once
 
 #include <string>
@@ -14,43 +15,36 @@
 #include "opencl.h"
 #include "orb/kernels/device_types.h"
 #include "pass_arguments.h"
+#include "pass_observer.h"
 
 namespace orb::render {
 
-struct PassLaunch {
-    const cl::Program& program;
-    const cl::Kernel& kernel;
-    const DeviceFilm& film;
-    const SceneBuffers& scene;
-    const device::RenderPassParams& params;
-    cl::NDRange global;
-    cl::NDRange local;
-};
-
-// One renderer's capture: the knobs, read once, and whether the pass has
-// been taken.
-class PassCapture {
+class PassCapture final : public PassObserver {
 public:
-    PassCapture();  // reads ORB_CAPTURE_PASS and ORB_CAPTURE_SKIP
+    // Captures into the folder `dir` (made if missing).
+    PassCapture(std::string dir, int skip);
 
-    // Whether the pass about to be enqueued is the one to capture (counting
-    // it among the candidates when it could be); true at most once.
-    bool take(bool writes_centre_ray);
+    // Whether a pass has been captured.
+    bool taken() const { return taken_; }
 
-    // Writes DIR/launch.txt (kernel name, work sizes, the program's build
+    // The pass to capture (one of the candidates once `skip` have gone by):
+    // writes DIR/launch.txt (kernel name, work sizes, the program's build
     // options, one line per argument), DIR/program.bin (the program's binary
     // for the queue's device), and DIR/argN.bin, each argument's bytes before
-    // the pass. Throws std::runtime_error when the folder cannot be written.
-    void write_inputs(cl::CommandQueue& queue, const PassLaunch& launch) const;
+    // the pass, and asks for pass_finished. True at most once. Throws
+    // std::runtime_error when the folder cannot be written.
+    bool pass_launching(cl::CommandQueue& queue, const PassLaunch& launch) override;
 
-    // After the pass has finished: the film arguments' bytes as
-    // DIR/argN.after.bin, what a replay of the same pass must reproduce; and
-    // a line on stderr naming the folder.
-    void write_outputs(cl::CommandQueue& queue, const DeviceFilm& film, int samples_per_pixel) const;
+    // The film arguments' bytes after the pass as DIR/argN.after.bin, what a
+    // replay of the same pass must reproduce; and a line on stderr naming
+    // the folder.
+    void pass_finished(cl::CommandQueue& queue, const PassLaunch& launch) override;
 
 private:
-    std::string dir_;  // "" when the knob is not set
-    int skip_ = 0;     // candidates still to let pass
+    void write_inputs(cl::CommandQueue& queue, const PassLaunch& launch) const;
+
+    std::string dir_;
+    int skip_ = 0;  // candidates still to let pass
     bool taken_ = false;
 };
 
