@@ -115,7 +115,7 @@ std::vector<CastRay> sorted_by_octant_and_origin(const std::vector<CastRay>& ray
 }
 
 // --dump DIR: the spheres and the three batches with Orb's answers, for a
-// peer to cast the same rays (scripts/embree-trace-benchmark.sh). Raw
+// peer to cast the same rays (embree-trace-benchmark.sh beside this). Raw
 // little-endian arrays, no header:
 //   spheres.f32  five floats per sphere slot: centre xyz, radius, and 1 for
 //                a sphere outside the tree (the floor, the lamps) else 0;
