@@ -26,8 +26,8 @@ namespace orb::render {
 // `scene`: one sphere at a time on GPUs (ORB_SCALAR_TRAVERSAL, with
 // ORB_DRAW_ALL_NUMBERS and without leaf runs), packets of four on CPUs; no
 // traversal code for a scene without a tree; NVIDIA's warp vote. Every
-// program that traces rays through a scene takes them (render_pass,
-// trace_rays).
+// program that traces rays through a scene takes them (render_pass, and
+// dev/'s trace_rays).
 void choose_traversal(const DeviceInfo& device, const SceneLayout& scene, device::KernelFeatures& features);
 
 // `options` with the development knob ORB_CL_OPTIONS (knobs.cl_options)
