@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Where render_pass's time goes on an NVIDIA GPU node (issue 9 §5): register
+# Where render_pass's time goes on an NVIDIA GPU node: register
 # use and spills from NVIDIA's compiler, a sweep of the register cap and the
 # work-group shape on the Cornell box and on a million spheres, and, when
 # Nsight Compute is installed, a profile of one render_pass launch.
