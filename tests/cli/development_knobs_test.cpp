@@ -59,13 +59,13 @@ TEST(DevelopmentKnobsParser, NothingSetIsTheDefaults)
 TEST(DevelopmentKnobsParser, ReadsEveryKnob)
 {
     const DevelopmentKnobs knobs = parse({{"ORB_KERNEL_DIR", "/tmp/kernels"},
-                                          {"ORB_CL_OPTIONS", "-DORB_INTERSECT_SCALAR=1 -cl-nv-verbose"},
+                                          {"ORB_CL_OPTIONS", "-DORB_SCALAR_TRAVERSAL=1 -cl-nv-verbose"},
                                           {"ORB_SIMD_LANES", "8"},
                                           {"ORB_LOCAL_SIZE", "32x4"},
                                           {"ORB_REFIT_COST_LIMIT", "1.5"},
                                           {"ORB_SHOW_BUILD_LOG", "1"}});
     EXPECT_EQ(knobs.kernel_dir, "/tmp/kernels");
-    EXPECT_EQ(knobs.cl_options, "-DORB_INTERSECT_SCALAR=1 -cl-nv-verbose");
+    EXPECT_EQ(knobs.cl_options, "-DORB_SCALAR_TRAVERSAL=1 -cl-nv-verbose");
     EXPECT_EQ(knobs.simd_lanes, 8);
     EXPECT_EQ(knobs.local_size, (orb::render::LocalSize{32, 4}));
     EXPECT_EQ(knobs.refit_cost_limit, 1.5);

@@ -126,7 +126,7 @@ TEST(DevelopmentKnobs, SimdLanesPickTheKernelAndItsWidth)
         const std::vector<SeenPass> passes = observed_passes(config);
         ASSERT_FALSE(passes.empty());
         EXPECT_EQ(passes[0].kernel, "render_pass_simd") << lanes;
-        EXPECT_TRUE(has_option(passes[0].options, "-DORB_SIMD_WIDTH=" + std::to_string(lanes)))
+        EXPECT_TRUE(has_option(passes[0].options, "-DORB_LANES=" + std::to_string(lanes)))
             << passes[0].options;
         EXPECT_EQ(passes[0].global_x, static_cast<std::size_t>(40 / lanes)) << lanes;  // local size 1x1
     }
@@ -134,7 +134,7 @@ TEST(DevelopmentKnobs, SimdLanesPickTheKernelAndItsWidth)
     const std::vector<SeenPass> scalar = observed_passes(config);
     ASSERT_FALSE(scalar.empty());
     EXPECT_EQ(scalar[0].kernel, "render_pass");
-    EXPECT_FALSE(contains(scalar[0].options, "ORB_SIMD_WIDTH")) << scalar[0].options;
+    EXPECT_FALSE(contains(scalar[0].options, "ORB_LANES")) << scalar[0].options;
     EXPECT_EQ(scalar[0].global_x, 40u);
 }
 

@@ -32,7 +32,7 @@ struct DevelopmentKnobs {
     std::string kernel_dir;
     // ORB_CL_OPTIONS: appended, last, to the build options of every program,
     // so that its -D definitions win over the renderer's (variants such as
-    // -DORB_INTERSECT_SCALAR=1 on a CPU, register caps, debug counters).
+    // -DORB_SCALAR_TRAVERSAL=1 on a CPU, register caps, debug counters).
     std::string cl_options;
     // ORB_SIMD_LANES: the lanes of render_pass_simd on CPUs, 4, 8 or 16, or
     // 0 for the one-pixel render_pass. Unset: the device's native float
