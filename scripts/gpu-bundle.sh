@@ -8,10 +8,11 @@ build=${ORB_BUILD_DIR:-$root/build}
 out=${1:-$root/.gpu}
 mkdir -p "$out"
 cp "$build/bin/orb-render" "$out/"
-# The ray-casting benchmark too, when built (docs/design/bvh-traversal.md).
-if [[ -x "$build/bin/orb-trace-benchmark" ]]; then cp "$build/bin/orb-trace-benchmark" "$out/"; fi
-# And the CUDA replay of a captured pass, for Nsight Compute (librender/src/pass_capture.h).
-if [[ -x "$build/bin/orb-cuda-replay" ]]; then cp "$build/bin/orb-cuda-replay" "$out/"; fi
+# The development tools too, when built with -DORB_BUILD_DEV=ON (dev/README.md): the
+# ray-casting benchmark, the pass capture and its CUDA replay for Nsight Compute.
+for tool in orb-trace-benchmark orb-capture-pass orb-cuda-replay; do
+  if [[ -x "$build/bin/$tool" ]]; then cp "$build/bin/$tool" "$out/"; fi
+done
 # And the host BVH build's benchmark, to time the tree on the node's cores.
 if [[ -x "$build/bin/orb-bvh-benchmark" ]]; then cp "$build/bin/orb-bvh-benchmark" "$out/"; fi
 cp -L /usr/lib/x86_64-linux-gnu/libOpenCL.so.1 "$out/"

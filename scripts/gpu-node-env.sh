@@ -1,5 +1,5 @@
 # Sourced by the scripts that run on a GPU node (gpu-benchmark.sh,
-# gpu-profile.sh), or by hand in a shell there: puts the bundle's libraries
+# dev/profiling/gpu-profile.sh), or by hand in a shell there: puts the bundle's libraries
 # (scripts/gpu-bundle.sh) on the loader's path and, where NVIDIA's OpenCL
 # driver is installed without an ICD entry, registers it for this run only
 # (docs/performance.md, "How to reproduce").

@@ -1,7 +1,6 @@
 #include "animation_tree.h"
 
 #include <chrono>
-#include <cstdlib>
 
 #include "scene_layout.h"
 
@@ -27,10 +26,8 @@ const SphereBvh& AnimationTree::choose(const Scene& scene, bool use_bvh, double 
 {
     last_refitted_ = false;
     if (has_tree_ && use_bvh == use_bvh_ && scene.spheres.size() == sphere_count_ && !tree_.nodes.empty()) {
-        double limit = kRefitCostLimit;
-        bool weigh_time = true;
-        if (const char* knob = std::getenv("ORB_REFIT_COST_LIMIT"))  // development knob: this limit alone
-            limit = std::atof(knob), weigh_time = false;
+        const double limit = refit_cost_limit_.value_or(kRefitCostLimit);
+        const bool weigh_time = !refit_cost_limit_;  // the development knob's limit alone
         const auto start = std::chrono::steady_clock::now();
         // In place: a refit reads only the tree's topology, and a refit that
         // is not kept is replaced by the rebuild below. A sphere the layout

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "orb/scene/scene.h"
 #include "sphere_bvh.h"
@@ -19,6 +20,13 @@ inline constexpr double kRefitCostLimit = 2.0;
 
 class AnimationTree {
 public:
+    // `refit_cost_limit` (DevelopmentKnobs::refit_cost_limit): the limit
+    // that replaces kRefitCostLimit and the time rule; none: both apply.
+    explicit AnimationTree(std::optional<double> refit_cost_limit = std::nullopt)
+        : refit_cost_limit_(refit_cost_limit)
+    {
+    }
+
     // The tree for `scene` (use_bvh false: none). When the scene has as many
     // spheres as the last, the last tree is refitted, and kept when the time
     // its larger cost is expected to add to a frame -- the cost's growth
@@ -37,6 +45,7 @@ private:
     const SphereBvh& choose(const Scene& scene, bool use_bvh, double last_frame_render_seconds);
     const SphereBvh& rebuild(const Scene& scene, bool use_bvh);
 
+    std::optional<double> refit_cost_limit_;
     SphereBvh tree_;
     bool has_tree_ = false;
     bool use_bvh_ = true;

@@ -27,7 +27,7 @@ DeviceFilm::DeviceFilm(const cl::Context& context, int width, int height, std::u
 
 void DeviceFilm::clear(cl::CommandQueue& queue)
 {
-    // Placeholders too (a few bytes): a captured pass (pass_capture.h) then
+    // Placeholders too (a few bytes): a pass an observer captures (pass_observer.h; dev/pass_capture) then
     // holds no uninitialised memory.
     for (const film::ChannelInfo& info : film::kChannels)
         queue.enqueueFillBuffer(buffers_[static_cast<int>(info.channel)], info.clear, 0,

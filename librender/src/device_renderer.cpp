@@ -1,9 +1,9 @@
 #include "device_renderer.h"
 
-#include <cstdio>
-#include <cstdlib>
+#include <optional>
 #include <stdexcept>
 
+#include "pass_observer.h"
 #include "program_build.h"
 
 namespace orb::render {
@@ -34,11 +34,11 @@ int nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
 // lanes. The device's native float vector width: 16 with AVX-512, 8 with
 // AVX2. Every scene: what the vector code lacks (pbr, rough glass, trees,
 // environment maps) runs lane by lane through render_pass's functions.
-int simd_lanes(const DeviceInfo& info, const cl::Device& device)
+int simd_lanes(const DeviceInfo& info, const cl::Device& device, const DevelopmentKnobs& knobs)
 {
     if (info.is_gpu) return 0;
     int lanes = static_cast<int>(device.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
-    if (const char* knob = std::getenv("ORB_SIMD_LANES")) lanes = std::atoi(knob);  // development knob: 0 is off
+    if (knobs.simd_lanes) lanes = *knobs.simd_lanes;  // development knob ORB_SIMD_LANES: 0 is off
     return lanes >= 16 ? 16 : lanes >= 8 ? 8 : lanes >= 4 ? 4 : 0;
 }
 
@@ -85,9 +85,9 @@ void choose_traversal(const DeviceInfo& device, const SceneLayout& scene, device
     features.warp_vote = nvidia_opencl && tree ? 1 : 0;
 }
 
-std::string with_development_options(std::string options)
+std::string with_development_options(std::string options, const DevelopmentKnobs& knobs)
 {
-    if (const char* extra = std::getenv("ORB_CL_OPTIONS")) options += std::string(" ") + extra;  // development knob
+    if (!knobs.cl_options.empty()) options += " " + knobs.cl_options;
     return options;
 }
 
@@ -154,12 +154,12 @@ std::string render_program_options(DeviceSession& session, const SceneLayout& sc
 {
     const ProgramOptions options{render_features(session, scene, config, simd_lanes),
                                  nvidia_register_cap(session.device(), scene)};
-    return with_development_options(program_options_text(options));
+    return with_development_options(program_options_text(options), config.development);
 }
 
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)
 {
-    simd_lanes_ = simd_lanes(session_->info(), session_->device());
+    simd_lanes_ = simd_lanes(session_->info(), session_->device(), config_.development);
     const cl::Program& program = session_->program(build_options(scene));
     try {
         if (&program != program_) {
@@ -218,10 +218,8 @@ void DeviceRenderer::choose_work_sizes()
     const bool gpu = device().is_gpu;
     size_t lx = gpu ? 16 : 8, ly = gpu ? 8 : 1;
     if (simd_lanes_ > 0) lx = 1, ly = 1;
-    if (const char* env = std::getenv("ORB_LOCAL_SIZE")) {  // development knob for tuning, "XxY"
-        unsigned ex = 0, ey = 0;
-        if (std::sscanf(env, "%ux%u", &ex, &ey) == 2 && ex > 0 && ey > 0) lx = ex, ly = ey;
-    }
+    if (const std::optional<LocalSize>& knob = config_.development.local_size)  // ORB_LOCAL_SIZE, for tuning
+        lx = knob->x, ly = knob->y;
     const size_t max_group = kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(session_->device());
     while (lx * ly > max_group && ly > 1) ly /= 2;
     while (lx * ly > max_group && lx > 1) lx /= 2;
@@ -257,14 +255,14 @@ void DeviceRenderer::enqueue(std::uint64_t first_sample, int count)
         pass.write_centre_ray = centre_ray_pending_ ? 1 : 0;
         bind_params(kernel_, params_);
         cl::CommandQueue& queue = session_->queue();
-        const bool capture = capture_.take(pass.write_centre_ray != 0);
-        if (capture)
-            capture_.write_inputs(queue, {*program_, kernel_, film_, scene_buffers_, params_, global_size_, local_size_});
+        PassObserver* observer = config_.development.pass_observer.get();
+        const PassLaunch launch{*program_, kernel_, film_, scene_buffers_, params_, global_size_, local_size_};
+        const bool observed = observer && observer->pass_launching(queue, launch);
         queue.enqueueNDRangeKernel(kernel_, cl::NullRange, global_size_, local_size_);
         queue.flush();  // start now: another device may be waiting for its turn
-        if (capture) {
+        if (observed) {
             queue.finish();
-            capture_.write_outputs(queue, film_, count);
+            observer->pass_finished(queue, launch);
         }
     } catch (const cl::Error& error) {
         fail(error, "a render pass");

@@ -17,7 +17,6 @@
 #include "orb/kernels/kernel_features.h"
 #include "orb/render/renderer.h"
 #include "pass_arguments.h"
-#include "pass_capture.h"
 #include "pass_tuner.h"
 #include "scene_layout.h"
 
@@ -27,13 +26,13 @@ namespace orb::render {
 // `scene`: one sphere at a time on GPUs (ORB_SCALAR_TRAVERSAL, with
 // ORB_DRAW_ALL_NUMBERS and without leaf runs), packets of four on CPUs; no
 // traversal code for a scene without a tree; NVIDIA's warp vote. Every
-// program that traces rays through a scene takes them (render_pass,
-// trace_rays).
+// program that traces rays through a scene takes them (render_pass, and
+// dev/'s trace_rays).
 void choose_traversal(const DeviceInfo& device, const SceneLayout& scene, device::KernelFeatures& features);
 
-// `options` with the development knob ORB_CL_OPTIONS appended, last, so
-// that its -D definitions win.
-std::string with_development_options(std::string options);
+// `options` with the development knob ORB_CL_OPTIONS (knobs.cl_options)
+// appended, last, so that its -D definitions win.
+std::string with_development_options(std::string options, const DevelopmentKnobs& knobs);
 
 // The features render_pass is built with for `scene` under `config` on the
 // session's device (render_pass_simd with `simd_lanes` > 0): where the scene
@@ -94,7 +93,6 @@ private:
     DeviceFilm film_;
     const cl::Program* program_ = nullptr;
     bool kernel_prepared_ = false;  // prepare_kernel() has run for program_
-    PassCapture capture_;           // the development knob ORB_CAPTURE_PASS (pass_capture.h)
     cl::Kernel kernel_;
     int simd_lanes_ = 0;  // > 0: kernel_ is render_pass_simd with this many lanes
     SceneBuffers scene_buffers_;

@@ -43,7 +43,9 @@ const cl::Program& DeviceSession::program(const std::string& build_options)
     const std::lock_guard<std::mutex> lock(programs_mutex_);
     auto found = programs_.find(build_options);
     if (found != programs_.end()) return found->second;
-    cl::Program built = build_program(context_, device_, source_, build_options, options_.use_binary_cache).program;
+    cl::Program built = build_program(context_, device_, source_, build_options, options_.use_binary_cache,
+                                     options_.show_build_log)
+                           .program;
     return programs_.emplace(build_options, std::move(built)).first->second;
 }
 

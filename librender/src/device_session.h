@@ -18,11 +18,13 @@
 namespace orb::render {
 
 struct SessionOptions {
-    std::string kernel_dir;        // "" = the embedded kernels (ORB_KERNEL_DIR overrides)
+    std::string kernel_dir;        // "" = the embedded kernels (the development knob ORB_KERNEL_DIR)
     bool use_binary_cache = true;  // $XDG_CACHE_HOME/orb (or ~/.cache/orb)
+    bool show_build_log = false;   // the development knob ORB_SHOW_BUILD_LOG
     bool operator<(const SessionOptions& o) const
     {
-        return std::tie(kernel_dir, use_binary_cache) < std::tie(o.kernel_dir, o.use_binary_cache);
+        return std::tie(kernel_dir, use_binary_cache, show_build_log) <
+               std::tie(o.kernel_dir, o.use_binary_cache, o.show_build_log);
     }
 };
 
@@ -37,6 +39,10 @@ public:
     DeviceSession& operator=(const DeviceSession&) = delete;
 
     const DeviceInfo& info() const { return info_; }
+    const SessionOptions& options() const { return options_; }
+    // The kernels' program text (program_source.h), for development code
+    // that builds a program of its own from it plus kernels of its own.
+    const std::string& source() const { return source_; }
     const cl::Device& device() const { return device_; }
     const cl::Context& context() const { return context_; }
     cl::CommandQueue& queue() { return queue_; }

@@ -75,7 +75,7 @@ void upload_scene(const cl::Context& context, cl::CommandQueue& queue, const Sce
 // Binds the film and the scene tables, which stay for the whole render.
 // Throws std::runtime_error if the kernel's argument count is not the list's
 // plus `trailing_args` (kernels from --kernel-dir out of step with this
-// build). A kernel with trailing arguments after the list's (trace_rays)
+// build). A kernel with trailing arguments after the list's (dev/'s trace_rays)
 // binds those itself, from static_cast<cl_uint>(PassArg::count) on.
 void bind_buffers(cl::Kernel& kernel, const DeviceFilm& film, const SceneBuffers& scene, cl_uint trailing_args = 0);
 

@@ -170,7 +170,7 @@ std::string binary_cache_dir()
 }
 
 ProgramBuild build_program(const cl::Context& context, const cl::Device& device, const std::string& source,
-                           const std::string& options, bool use_cache)
+                           const std::string& options, bool use_cache, bool show_build_log)
 {
     const std::string cache_dir = use_cache ? binary_cache_dir() : std::string();
     fs::path cache_file;
@@ -192,7 +192,7 @@ ProgramBuild build_program(const cl::Context& context, const cl::Device& device,
         throw std::runtime_error("the OpenCL kernels failed to build on " + device_name + " (" +
                                  describe_cl_error(error) + "); build log:\n" + build_log(program, device));
     }
-    if (std::getenv("ORB_SHOW_BUILD_LOG"))  // development knob: compiler remarks, register counts
+    if (show_build_log)  // compiler remarks, register counts
         std::fprintf(stderr, "%s\n", build_log(program, device).c_str());
     if (!cache_file.empty()) {
         const std::vector<unsigned char> binary = program_binary(program);

@@ -47,8 +47,10 @@ struct ProgramBuild {
 // keyed by a hash of source, options, device and driver; a missing, corrupt or
 // rejected binary falls back to a build from source, and the cache is
 // refreshed (atomically, failures ignored). A failed source build throws
-// std::runtime_error carrying the compiler's build log.
+// std::runtime_error carrying the compiler's build log. With
+// `show_build_log` (the development knob ORB_SHOW_BUILD_LOG), a source
+// build's log goes to stderr.
 ProgramBuild build_program(const cl::Context& context, const cl::Device& device, const std::string& source,
-                           const std::string& options, bool use_cache);
+                           const std::string& options, bool use_cache, bool show_build_log = false);
 
 }  // namespace orb::render

@@ -1,6 +1,5 @@
 #include "program_source.h"
 
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -22,12 +21,8 @@ std::string read_text_file(const std::string& path)
 
 }  // namespace
 
-std::string program_source(const std::string& kernel_dir)
+std::string program_source(const std::string& dir)
 {
-    std::string dir = kernel_dir;
-    if (dir.empty())
-        if (const char* env = std::getenv("ORB_KERNEL_DIR")) dir = env;
-
     // The kernels' defaults come first, generated from the one table of
     // kernel_features.h (the preprocessor cannot expand a table into
     // #define lines), so every file may read every feature.

@@ -6,8 +6,8 @@
 namespace orb::render {
 
 // The kernels' feature defaults (orb/kernels/kernel_features.h), then the
-// kernel files in program order. `kernel_dir` empty: the
-// ORB_KERNEL_DIR environment variable if set, otherwise the embedded copies.
+// kernel files in program order: from `kernel_dir` (the development knob
+// ORB_KERNEL_DIR), or the embedded copies when it is empty.
 // Throws std::runtime_error if a file of a kernel folder cannot be read.
 std::string program_source(const std::string& kernel_dir);
 

@@ -103,10 +103,12 @@ Renderer::Renderer(const Scene& scene, const RenderConfig& config) : impl_(std::
     Impl& r = *impl_;
     check_config(config);
     r.config = config;
+    r.tree = AnimationTree(config.development.refit_cost_limit);
     // The scene is checked before any device is touched, so bad input fails fast.
     PreparedScene prepared = prepare_scene(scene);
     r.infos = choose_devices(config.device);
-    const SessionOptions options{config.kernel_dir, config.use_binary_cache};
+    const SessionOptions options{config.development.kernel_dir, config.use_binary_cache,
+                                 config.development.show_build_log};
     for (const DeviceInfo& info : r.infos)
         r.devices.push_back(std::make_unique<DeviceRenderer>(DeviceSession::open(info, options), config));
     r.device_ranges.resize(r.devices.size());

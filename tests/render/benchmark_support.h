@@ -1,16 +1,33 @@
 #pragma once
-// What the development benchmarks in tests/render (orb-bvh-benchmark,
-// orb-bvh-refit-benchmark, orb-trace-benchmark)
-// share: reading a scene file of any format orb-import reads, and wall time.
+// What the development benchmarks (orb-bvh-benchmark, orb-bvh-refit-benchmark,
+// orb-render-benchmark, orb-film-transfer-benchmark here, orb-trace-benchmark
+// in dev/) share: reading a scene file of any format orb-import reads, wall
+// time, and the development knobs as orb-render reads them.
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "orb/cli/development_knobs.h"
 #include "orb/scene/import.h"
 
 namespace orb::bench {
+
+// The development knobs from the environment (ORB_SIMD_LANES and the rest,
+// docs/rendering.md), as orb-render reads them; a malformed one ends the
+// benchmark with its message and exit status 2. Links orb_cli_development_knobs.
+inline render::DevelopmentKnobs development_knobs_or_exit(const char* benchmark)
+{
+    try {
+        return cli::development_knobs_from_environment();
+    } catch (const std::exception& error) {
+        std::cerr << benchmark << ": error: " << error.what() << "\n";
+        std::exit(2);
+    }
+}
 
 inline double seconds_since(std::chrono::steady_clock::time_point start)
 {

@@ -76,6 +76,7 @@ int main(int argc, char** argv)
     }
 
     RenderConfig config;
+    config.development = orb::bench::development_knobs_or_exit("orb-bvh-refit-benchmark");
     config.width = 320;
     config.height = 240;
     Renderer refitting(scene, config);

@@ -51,11 +51,15 @@ void expect_identical(const std::vector<float>& a, const std::vector<float>& b, 
     EXPECT_EQ(differing, 0u) << channel << ": " << differing << " of " << a.size() << " values differ";
 }
 
-// Every pass of the same seed's render, with the tree and without it.
-void expect_same_with_and_without_tree(const Scene& scene)
+// Every pass of the same seed's render, with the tree and without it, the
+// kernels built with `cl_options` added (the development knob
+// ORB_CL_OPTIONS; nullptr: none).
+void expect_same_with_and_without_tree(const Scene& scene, const char* cl_options = nullptr)
 {
     for (IntegratorMode mode : {IntegratorMode::Global, IntegratorMode::Direct}) {
-        RenderConfig with = small_config(48, 36, 11, 6, mode), without = with;
+        RenderConfig with = small_config(48, 36, 11, 6, mode);
+        if (cl_options) with.development.cl_options = cl_options;
+        RenderConfig without = with;
         without.use_bvh = false;
         // Both with render_pass: without a tree the CPU would otherwise render
         // with render_pass_simd, whose rounding differs (simd_kernel_test.cpp).
@@ -129,14 +133,7 @@ TEST(BvhRender, LeafRunsNameExactlyTheLeavesOfAllLeafNodes) {
 // here on PoCL through the development knob ORB_CL_OPTIONS.
 void expect_same_with_and_without_tree_in_gpu_traversal(int warp_vote) {
     const Scene scene = cloud_scene(300, 5);
-    ::setenv("ORB_CL_OPTIONS", device::kernel_feature_options(gpu_traversal(scene, warp_vote)).c_str(), 1);
-    try {
-        expect_same_with_and_without_tree(scene);
-    } catch (...) {
-        ::unsetenv("ORB_CL_OPTIONS");
-        throw;
-    }
-    ::unsetenv("ORB_CL_OPTIONS");
+    expect_same_with_and_without_tree(scene, device::kernel_feature_options(gpu_traversal(scene, warp_vote)).c_str());
 }
 
 TEST(BvhRender, SameImageWithAndWithoutTheTreeInTheGpuVariant) {
@@ -155,17 +152,15 @@ TEST(BvhRender, SameImageWithAndWithoutTheTreeInSpeculativeTraversal) {
 // (the development knob ORB_CL_OPTIONS).
 std::string kernel_output(const Scene& scene, const device::KernelFeatures& features)
 {
-    ::setenv("ORB_CL_OPTIONS", device::kernel_feature_options(features).c_str(), 1);
     testing::internal::CaptureStdout();
     try {
-        test::render(scene, small_config(48, 36, 11, 6), {4});
+        render_with_cl_options(scene, small_config(48, 36, 11, 6), {4},
+                               device::kernel_feature_options(features).c_str());
     } catch (...) {
         testing::internal::GetCapturedStdout();
-        ::unsetenv("ORB_CL_OPTIONS");
         throw;
     }
     std::fflush(stdout);
-    ::unsetenv("ORB_CL_OPTIONS");
     return testing::internal::GetCapturedStdout();
 }
 

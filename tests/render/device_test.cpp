@@ -136,7 +136,7 @@ TEST(KernelBuild, FailureCarriesTheBuildLog)
         if (k.file_name == "integrator.cl") out << "\nthis_is_not_opencl_c;\n";
     }
     RenderConfig config = small_config(8, 8);
-    config.kernel_dir = dir.string();
+    config.development.kernel_dir = dir.string();
     config.use_binary_cache = false;
     try {
         Renderer renderer(tiny_scene(), config);

@@ -47,6 +47,7 @@ int main(int argc, char** argv)
     try {
         const orb::Scene scene = orb::bench::import_scene_file(argv[1]);
         RenderConfig config;
+        config.development = orb::bench::development_knobs_or_exit("orb-film-transfer-benchmark");
         config.width = 1920;
         config.height = 1080;
         int repeats = 10;

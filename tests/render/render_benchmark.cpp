@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "benchmark_support.h"
 #include "orb/render/renderer.h"
 #include "orb/scene/scn.h"
 
@@ -31,6 +32,7 @@ int main(int argc, char** argv)
         const orb::Scene scene = orb::parse_scn(text.str(), argv[1]);
 
         orb::render::RenderConfig config;
+        config.development = orb::bench::development_knobs_or_exit("orb-render-benchmark");
         double seconds = 5.0;
         int cpu_spp = 0, pass_spp = 1;
         for (int i = 2; i + 1 < argc; i += 2) {

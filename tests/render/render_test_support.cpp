@@ -78,24 +78,12 @@ Film render(const Scene& scene, const RenderConfig& config, const std::vector<in
     return renderer.read_film();
 }
 
-Film render_with_env(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes, const char* name,
-                     const char* value)
-{
-    if (value) ::setenv(name, value, 1);
-    try {
-        Film film = render(scene, config, passes);
-        ::unsetenv(name);
-        return film;
-    } catch (...) {
-        ::unsetenv(name);
-        throw;
-    }
-}
-
 Film render_with_cl_options(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
                             const char* cl_options)
 {
-    return render_with_env(scene, config, passes, "ORB_CL_OPTIONS", cl_options);
+    RenderConfig variant = config;
+    if (cl_options) variant.development.cl_options = cl_options;
+    return render(scene, variant, passes);
 }
 
 device::KernelFeatures gpu_traversal(const Scene& scene, int warp_vote)
@@ -112,7 +100,9 @@ device::KernelFeatures gpu_traversal(const Scene& scene, int warp_vote)
 Film render_with_simd_lanes(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
                             const char* lanes)
 {
-    return render_with_env(scene, config, passes, "ORB_SIMD_LANES", lanes);
+    RenderConfig variant = config;
+    if (lanes) variant.development.simd_lanes = std::stoi(lanes);
+    return render(scene, variant, passes);
 }
 
 Scene load_scene_file(const std::string& path)

@@ -28,7 +28,7 @@ RenderConfig small_config(int width, int height, std::uint64_t seed = 7, int max
 Film render(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes);
 
 // The same with `cl_options` appended to the kernels' build options (the
-// development knob ORB_CL_OPTIONS, set for this render only; nullptr: none),
+// development knob ORB_CL_OPTIONS, for this render only; nullptr: none),
 // to compare a program with a variant of it.
 Film render_with_cl_options(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
                             const char* cl_options);
@@ -40,12 +40,7 @@ Film render_with_cl_options(const Scene& scene, const RenderConfig& config, cons
 // from the defaults (device::kernel_feature_options).
 device::KernelFeatures gpu_traversal(const Scene& scene, int warp_vote = 0);
 
-// The same with the environment variable `name` set to `value` for this
-// render only (nullptr: left as it is).
-Film render_with_env(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes, const char* name,
-                     const char* value);
-
-// The same with the CPU kernel's lanes chosen (the development knob
+// Renders as render() with the CPU kernel's lanes chosen (the development knob
 // ORB_SIMD_LANES): "0" renders with render_pass, "4", "8" or "16" with
 // render_pass_simd of that width where the scene is one it covers; nullptr:
 // the device's default.

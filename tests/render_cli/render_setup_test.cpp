@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
 
 #include "cli_fixture.h"
 #include "orb/exr/film_exr.h"
@@ -96,4 +98,37 @@ TEST_F(RenderCli, NoOpenCLPlatformSaysToInstallPocl) {
         EXPECT_NE(run.err.find("pocl-opencl-icd"), std::string::npos) << run.err;
     }
     EXPECT_FALSE(std::filesystem::exists(path("out.exr")));
+}
+
+// The development knobs (docs/rendering.md): a malformed one stops orb-render
+// before it reads or writes anything, naming the variable and what it
+// expects; a good one is used, and a moved one is named in a warning.
+TEST_F(RenderCli, DevelopmentKnobsAreCheckedAtTheStart) {
+    const std::string scene = write_scene(small_scene());
+    const std::string out = path("knob.exr");
+    const auto with_env = [&](const std::string& assignment) {
+        return run_process({"/usr/bin/env", assignment, render_exe(), scene, "-o", out, "--spp", "1", "--width", "16",
+                            "--height", "8"});
+    };
+    for (const auto& [assignment, expected] :
+         {std::pair<std::string, std::string>{"ORB_LOCAL_SIZE=abc", "ORB_LOCAL_SIZE='abc': expected a work-group shape XxY"},
+          {"ORB_SIMD_LANES=3", "ORB_SIMD_LANES='3': expected 0 (render_pass), 4, 8 or 16"},
+          {"ORB_REFIT_COST_LIMIT=much", "ORB_REFIT_COST_LIMIT='much': expected a finite number"},
+          {"ORB_SHOW_BUILD_LOG=yes", "ORB_SHOW_BUILD_LOG='yes': expected 1 (on) or 0 (off)"}}) {
+        const auto run = with_env(assignment);
+        EXPECT_EQ(run.exit_code, 2) << assignment << "\n" << run.err;
+        EXPECT_NE(run.err.find("orb-render: error: development knob " + expected), std::string::npos) << run.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << assignment;
+    }
+
+    const auto good = with_env("ORB_LOCAL_SIZE=4x2");
+    EXPECT_EQ(good.exit_code, 0) << good.err;
+    EXPECT_TRUE(std::filesystem::exists(out));
+    std::filesystem::remove(out);
+
+    const auto moved = with_env("ORB_CAPTURE_PASS=" + path("capture"));
+    EXPECT_EQ(moved.exit_code, 0) << moved.err;
+    EXPECT_NE(moved.err.find("orb-render: warning: ORB_CAPTURE_PASS is set but ignored"), std::string::npos)
+        << moved.err;
+    EXPECT_FALSE(std::filesystem::exists(path("capture")));
 }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "device_listing.h"
+#include "orb/cli/development_knobs.h"
 #include "orb/cli/io.h"
 #include "orb/cli/tool_main.h"
 #include "render_options.h"
@@ -21,6 +22,9 @@ int main(int argc, char** argv) {
         [&](CLI::App& app) { add_render_options(app, options); },
         [&]() -> int {
             check_option_combinations(options);
+            // The development knobs before anything else: a malformed one
+            // fails before a byte is read or an output locked.
+            const orb::render::DevelopmentKnobs knobs = orb::cli::development_knobs_from_environment();
             if (options.list_devices) {
                 std::ostringstream listing;
                 print_device_list(listing);
@@ -31,7 +35,7 @@ int main(int argc, char** argv) {
             // covers reading the file that --resume continues in place.
             RenderOutputs outputs = prepare_render_outputs(options);
             const auto reading = std::chrono::steady_clock::now();
-            RenderPlan plan = make_render_plan(options);
+            RenderPlan plan = make_render_plan(options, knobs);
             plan.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - reading).count();
             if (options.benchmark)
                 return renders_frames(options) ? run_frames_benchmark(plan, options, outputs)

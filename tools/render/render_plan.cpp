@@ -99,12 +99,13 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 
 }  // namespace
 
-RenderPlan make_render_plan(const RenderOptions& o) {
+RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
     RenderPlan plan;
     Scene imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty);
 
     plan.config.device = o.device;
-    plan.config.kernel_dir = o.kernel_dir;
+    plan.config.development = knobs;
+    if (!o.kernel_dir.empty()) plan.config.development.kernel_dir = o.kernel_dir;  // the option wins over ORB_KERNEL_DIR
     plan.config.use_binary_cache = !o.no_cache;
     plan.half = o.half;
     if (o.compression) plan.compression = exr::parse_compression(*o.compression);

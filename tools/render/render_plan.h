@@ -62,7 +62,7 @@ void install(RenderPlan& plan, PosedFrame&& posed);
 // Reads and imports the scene, then applies the command line (and for
 // --resume the file's header). Throws orb::InputError for bad input or a
 // resume that would not continue the same render.
-RenderPlan make_render_plan(const RenderOptions& options);
+RenderPlan make_render_plan(const RenderOptions& options, const render::DevelopmentKnobs& knobs);
 
 // Whether each frame's scene differs from the last: an animated scene, or
 // one whose camera --orbit turns.

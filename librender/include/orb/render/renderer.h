@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "orb/kernels/device_types.h"
+#include "orb/render/development_knobs.h"
 #include "orb/render/device.h"
 #include "orb/film/film.h"
 #include "orb/render/pass_renderer.h"
@@ -38,13 +39,15 @@ struct RenderConfig {
     std::uint64_t seed = 0;
     SamplerKind sampler = SamplerKind::Sobol;
     std::string device;       // selector for choose_devices(): one device, a list, or "all"
-    std::string kernel_dir;   // development override of the embedded kernels ("" = embedded; env ORB_KERNEL_DIR too)
     bool use_binary_cache = true;  // $XDG_CACHE_HOME/orb (or ~/.cache/orb)
     bool use_bvh = true;  // false: every ray tests every sphere (for tests and comparisons; same image)
     // The film channels the kernels compute (bits of film::channel_bit;
     // film::channels_for(layers) for the layers a run writes): the others
     // stay at their clear values and cost nothing.
     std::uint32_t film_channels = film::kAllChannels;
+    // Settings for measuring and debugging (development_knobs.h); the
+    // defaults render as a user's run does.
+    DevelopmentKnobs development;
 };
 
 // A scene laid out for the devices, its BVH built or refitted: what

@@ -1,5 +1,5 @@
-// ORB_CAPTURE_PASS writes one pass to a folder for a replay outside OpenCL
-// (librender/src/pass_capture.h; tests/render/cuda_replay.cpp replays it
+// The pass capture writes one pass to a folder for a replay outside OpenCL
+// (dev/pass_capture/pass_capture.h; cuda_replay.cpp beside it replays it
 // through CUDA for Nsight Compute). A replay is only worth its profile if
 // the capture is exactly the pass: every kernel argument in order with its
 // bytes, the film before it and the film after it.
@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 
 #include "orb/kernels/device_types.h"
 #include "pass_arguments.h"
+#include "pass_capture.h"
 #include "program_build.h"
 #include "render_test_support.h"
 
@@ -51,7 +53,7 @@ class CaptureDir {
 public:
     CaptureDir()
         : path_(std::filesystem::temp_directory_path() /
-                ("orb-capture-test-" + std::to_string(::getpid())))
+                ("orb-capture-test-" + std::to_string(::getpid()) + "-" + std::to_string(next_++)))
     {
         std::filesystem::remove_all(path_);
     }
@@ -59,6 +61,7 @@ public:
     const std::filesystem::path& path() const { return path_; }
 
 private:
+    static inline int next_ = 0;  // two folders of one test never meet
     std::filesystem::path path_;
 };
 
@@ -77,7 +80,11 @@ TEST(PassCapture, WritesTheSecondPassExactlyAsTheRendererRanIt)
     // The first pass writes the centre rays and is never captured; the
     // second (2 samples, from sample 1 on) is.
     const CaptureDir dir;
-    render_with_env(scene, config, {1, 2, 3}, "ORB_CAPTURE_PASS", dir.path().c_str());
+    RenderConfig capturing = config;
+    const auto capture = std::make_shared<PassCapture>(dir.path().string(), 0);
+    capturing.development.pass_observer = capture;
+    test::render(scene, capturing, {1, 2, 3});
+    EXPECT_TRUE(capture->taken());
     const Film before = test::render(scene, config, {1});
     const Film after = test::render(scene, config, {1, 2});
 
@@ -136,4 +143,41 @@ TEST(PassCapture, WritesTheSecondPassExactlyAsTheRendererRanIt)
     EXPECT_EQ(params.pass.write_centre_ray, 0);
     EXPECT_EQ(params.settings.width, 24);
     EXPECT_EQ(params.settings.seed_lo, 11u);
+}
+
+// `skip` lets that many candidate passes go by; with more skipped than
+// there are passes, nothing is written.
+TEST(PassCapture, SkipsTheCandidatesItIsToldTo)
+{
+    Scene scene;
+    scene.camera.position = {0.0, 1.0, 4.0};
+    scene.camera.target = {0.0, 1.0, 0.0};
+    add_sphere(scene, {0.0, 0.0, 0.0}, 50.0, add_material(scene, MaterialType::Diffuse, {0.7, 0.7, 0.7}));
+    add_sphere(scene, {0.0, 4.0, 0.0}, 0.8, add_material(scene, MaterialType::Diffuse, {0, 0, 0}, {8, 8, 8}));
+    RenderConfig config = small_config(16, 8, 3);
+
+    const CaptureDir third;
+    const auto capture = std::make_shared<PassCapture>(third.path().string(), 1);
+    config.development.pass_observer = capture;
+    test::render(scene, config, {1, 2, 3, 4});
+    ASSERT_TRUE(capture->taken());
+    std::ifstream launch(third.path() / "launch.txt");
+    std::string line, params_file;
+    while (std::getline(launch, line))
+        if (line.rfind("arg ", 0) == 0 && line.find(" value ") != std::string::npos)
+            params_file = line.substr(line.rfind(' ') + 1);
+    ASSERT_FALSE(params_file.empty());
+    const std::vector<char> bytes = read_bytes(third.path() / params_file);
+    device::RenderPassParams params{};
+    ASSERT_EQ(bytes.size(), sizeof params);
+    std::memcpy(&params, bytes.data(), sizeof params);
+    EXPECT_EQ(params.pass.sample_count, 3);  // passes of 1 (centre rays), 2 (skipped), 3
+    EXPECT_EQ(params.pass.first_sample_lo, 3u);
+
+    const CaptureDir none;
+    const auto late = std::make_shared<PassCapture>(none.path().string(), 5);
+    config.development.pass_observer = late;
+    test::render(scene, config, {1, 2, 3, 4});
+    EXPECT_FALSE(late->taken());
+    EXPECT_FALSE(std::filesystem::exists(none.path()));
 }

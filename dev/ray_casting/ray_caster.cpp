@@ -3,9 +3,15 @@
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
+#include <string_view>
 
 #include "device_renderer.h"
 #include "program_build.h"
+
+namespace orb::kernels::embedded_sources {
+// dev/ray_casting/trace_rays.cl, embedded by dev/CMakeLists.txt.
+extern const std::string_view dev_trace_rays_cl;
+}  // namespace orb::kernels::embedded_sources
 
 namespace orb::render {
 namespace {
@@ -24,7 +30,15 @@ std::string trace_options(const DeviceInfo& info, const SceneLayout& scene, cons
     choose_traversal(info, scene, program.features);
     std::string options = program_options_text(program);
     if (!extra.empty()) options += " " + extra;
-    return with_development_options(options);
+    return options;
+}
+
+// The product's kernels (from the session: embedded, or its kernel folder)
+// followed by trace_rays.cl, which uses what they define.
+std::string trace_source(const DeviceSession& session)
+{
+    return session.source() + "#line 1 \"trace_rays.cl\"\n" +
+           std::string(kernels::embedded_sources::dev_trace_rays_cl) + "\n";
 }
 
 }  // namespace
@@ -32,9 +46,13 @@ std::string trace_options(const DeviceInfo& info, const SceneLayout& scene, cons
 RayCaster::RayCaster(std::shared_ptr<DeviceSession> session, const SceneLayout& scene, const std::string& extra_options)
     : session_(std::move(session)), film_(session_->context(), 1, 1)
 {
-    const cl::Program& program = session_->program(trace_options(session_->info(), scene, extra_options));
+    const SessionOptions& options = session_->options();
+    program_ = build_program(session_->context(), session_->device(), trace_source(*session_),
+                             trace_options(session_->info(), scene, extra_options), options.use_binary_cache,
+                             options.show_build_log)
+                   .program;
     try {
-        kernel_ = cl::Kernel(program, "trace_rays");
+        kernel_ = cl::Kernel(program_, "trace_rays");
         scene_buffers_ = upload_scene(session_->context(), scene.tables);
         bind_buffers(kernel_, film_, scene_buffers_, kTrailingArgs);
         device::RenderPassParams params{};

@@ -1,9 +1,10 @@
 // Casting batches of rays through a scene on a device, with nothing else:
-// the trace_rays kernel (kernels/trace_rays.cl) over the scene's tables,
-// through the same traversal render_pass uses. For measuring what ray
-// casting alone costs (orb-trace-benchmark: would a wavefront renderer,
+// the trace_rays kernel (dev/ray_casting/trace_rays.cl) over the scene's
+// tables, through the same traversal render_pass uses. For measuring what
+// ray casting alone costs (orb-trace-benchmark: would a wavefront renderer,
 // whose ray-casting kernel carries no shading state, pay?) and for testing
-// the device's traversal against brute force. Not used for rendering.
+// the device's traversal against brute force. Not used for rendering: a
+// development tool (dev/README.md), built against librender's internals.
 #pragma once
 
 #include <memory>
@@ -36,10 +37,11 @@ struct CastHit {
 
 class RayCaster {
 public:
-    // Builds trace_rays for `session`'s device as render_pass would be built
-    // for `scene` (the scene in __global memory; the GPU intersection on
-    // GPUs), plus `extra_options` and the ORB_CL_OPTIONS knob, and uploads
-    // the scene's tables. Throws std::runtime_error when that fails.
+    // Builds a program of the session's kernels and trace_rays.cl for its
+    // device, with the options render_pass would be built with for `scene`
+    // (the scene in __global memory; the GPU intersection on GPUs) plus
+    // `extra_options` (a tool passes the ORB_CL_OPTIONS knob here), and
+    // uploads the scene's tables. Throws std::runtime_error when that fails.
     RayCaster(std::shared_ptr<DeviceSession> session, const SceneLayout& scene, const std::string& extra_options = "");
 
     std::vector<CastHit> closest(const std::vector<CastRay>& rays);
@@ -59,6 +61,7 @@ private:
 
     std::shared_ptr<DeviceSession> session_;
     DeviceFilm film_;  // render_pass's film arguments, unused by trace_rays
+    cl::Program program_;
     SceneBuffers scene_buffers_;
     cl::Kernel kernel_;
     cl::Buffer rays_, results_;

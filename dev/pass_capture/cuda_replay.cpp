@@ -1,5 +1,5 @@
-// Not a test: runs a render pass that orb-render captured (ORB_CAPTURE_PASS,
-// librender/src/pass_capture.h) again through CUDA's driver API, so that
+// Not a test: runs a render pass that orb-capture-pass captured (pass_capture.h
+// beside this) again through CUDA's driver API, so that
 // Nsight Compute, which does not see OpenCL kernels, can profile the same
 // program (what it showed: docs/design/speculative-traversal.md,
 // docs/design/register-caps.md).

@@ -1,18 +1,19 @@
 #!/usr/bin/env bash
-# Where render_pass's time goes on an NVIDIA GPU node (issue 9 §5): register
+# Where render_pass's time goes on an NVIDIA GPU node: register
 # use and spills from NVIDIA's compiler, a sweep of the register cap and the
 # work-group shape on the Cornell box and on a million spheres, and, when
 # Nsight Compute is installed, a profile of one render_pass launch.
-# Usage on the node: scripts/gpu-profile.sh BUNDLE_DIR OUT_DIR [SECONDS]
+# Usage on the node: dev/profiling/gpu-profile.sh BUNDLE_DIR OUT_DIR [SECONDS]
 # (BUNDLE_DIR from scripts/gpu-bundle.sh; the figures in docs/performance.md
-# come from this script's output.)
+# come from this script's output.) It drives orb-render through the
+# development knobs ORB_SHOW_BUILD_LOG, ORB_CL_OPTIONS and ORB_LOCAL_SIZE.
 set -uo pipefail
 bundle=$(cd "$1" && pwd)
 out=$2
 seconds=${3:-3}
 mkdir -p "$out"
-root=$(cd "$(dirname "$0")/.." && pwd)
-source "$(dirname "$0")/gpu-node-env.sh" "$bundle"
+root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$root/scripts/gpu-node-env.sh" "$bundle"
 render=$bundle/orb-render
 export XDG_CACHE_HOME=$(mktemp -d)  # every variant builds its own program
 nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv 2>/dev/null

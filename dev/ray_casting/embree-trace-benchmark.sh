@@ -2,16 +2,16 @@
 # Orb's traversal beside Intel Embree's on the same rays, spheres and
 # machine: orb-trace-benchmark casts its three batches (camera rays, a
 # diffuse bounce from each hit, a shadow ray from each hit to a light) and
-# dumps them with its answers; scripts/embree-trace-benchmark.cpp casts the
+# dumps them with its answers; embree-trace-benchmark.cpp (beside this) casts the
 # same rays with Embree 3 (Debian's libembree-dev, installed if missing)
 # and says how many answers differ. The two alternate for ROUNDS rounds.
 #
-#   scripts/embree-trace-benchmark.sh SCENE [WIDTH HEIGHT [ROUNDS [SECONDS]]]
-#   scripts/embree-trace-benchmark.sh /tmp/bench-100k.orb 640 360 2
+#   dev/ray_casting/embree-trace-benchmark.sh SCENE [WIDTH HEIGHT [ROUNDS [SECONDS]]]
+#   dev/ray_casting/embree-trace-benchmark.sh /tmp/bench-100k.orb 640 360 2
 #
 # Embree runs on as many threads as PoCL has cores (nproc). ORB_TRACE_BENCHMARK
-# names Orb's binary (default: build/bin/orb-trace-benchmark). An idle
-# machine only: both report wall-clock rates.
+# names Orb's binary (default: build/bin/orb-trace-benchmark, built with
+# -DORB_BUILD_DEV=ON). An idle machine only: both report wall-clock rates.
 set -euo pipefail
 if [[ $# -lt 1 ]]; then
   sed -n '2,14p' "$0" >&2
@@ -23,7 +23,7 @@ height=${3:-360}
 rounds=${4:-2}
 seconds=${5:-2}
 here=$(cd "$(dirname "$0")" && pwd)
-orb=${ORB_TRACE_BENCHMARK:-$here/../build/bin/orb-trace-benchmark}
+orb=${ORB_TRACE_BENCHMARK:-$here/../../build/bin/orb-trace-benchmark}
 if [[ ! -e /usr/include/embree3/rtcore.h ]]; then
   DEBIAN_FRONTEND=noninteractive apt-get install -y -q libembree-dev >/dev/null
 fi

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""orb-trace-benchmark --dump writes what scripts/embree-trace-benchmark.cpp
+"""orb-trace-benchmark --dump writes what embree-trace-benchmark.cpp (beside it)
 reads: the sphere slots, the three ray batches and Orb's answers. Checks the
 record sizes, that the batches are the ones the benchmark describes (a camera
 ray per pixel, a bounce and a shadow ray per hit), and every answer against

@@ -1,16 +1,17 @@
 // Ray casting alone: each work-item casts one ray of a batch through the
-// scene's tables with intersect.cl's traversal, and nothing else. Not used
-// for rendering; built only with -DORB_TRACE_KERNEL=1, by orb-trace-benchmark
-// (docs/performance.md, "Why the 3× ratios stay out of reach"), which measures
-// what a wavefront design's ray-casting kernel would achieve on its own, and
-// by tests/render/trace_kernel_test.cpp, which checks the device's traversal
-// against brute force.
+// scene's tables with intersect.cl's traversal, and nothing else. Not part
+// of the product's program: dev/ray_casting/ray_caster.cpp appends it to the
+// product's kernels and builds it with -DORB_TRACE_KERNEL=1, for
+// orb-trace-benchmark (docs/performance.md, "Why the 3× ratios stay out of
+// reach"), which measures what a wavefront design's ray-casting kernel would
+// achieve on its own, and for dev/ray_casting/trace_kernel_test.cpp, which
+// checks the device's traversal against brute force.
 //
 // The arguments are render_pass's (so that the host binds the scene the same
 // way; the film buffers go unused) followed by the batch: two float4 per ray,
 // the origin with the bits of the sphere slot the ray leaves (-1: none) in w,
 // then the unit direction with, for shadow rays, the bits of the light's
-// sphere slot (-1: the environment) in w (librender/src/ray_caster.h,
+// sphere slot (-1: the environment) in w (dev/ray_casting/ray_caster.h,
 // CastRay); and one result per ray: for closest hits the sphere slot hit
 // (-1: none) and the distance's bits, for shadow rays 1 when the light is
 // visible, else 0.

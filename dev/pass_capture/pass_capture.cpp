@@ -1,10 +1,10 @@
 #include "pass_capture.h"
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace orb::render {
@@ -32,20 +32,17 @@ std::size_t write_buffer(const std::filesystem::path& dir, cl::CommandQueue& que
 
 }  // namespace
 
-PassCapture::PassCapture()
-{
-    if (const char* dir = std::getenv("ORB_CAPTURE_PASS")) dir_ = dir;        // development knob
-    if (const char* skip = std::getenv("ORB_CAPTURE_SKIP")) skip_ = std::atoi(skip);  // development knob
-}
+PassCapture::PassCapture(std::string dir, int skip) : dir_(std::move(dir)), skip_(skip) {}
 
-bool PassCapture::take(bool writes_centre_ray)
+bool PassCapture::pass_launching(cl::CommandQueue& queue, const PassLaunch& launch)
 {
-    if (dir_.empty() || taken_ || writes_centre_ray) return false;
+    if (taken_ || launch.params.pass.write_centre_ray != 0 || launch.params.pass.sample_count <= 0) return false;
     if (skip_ > 0) {
         --skip_;
         return false;
     }
     taken_ = true;
+    write_inputs(queue, launch);
     return true;
 }
 
@@ -83,11 +80,12 @@ void PassCapture::write_inputs(cl::CommandQueue& queue, const PassLaunch& launch
     if (!text) throw std::runtime_error("capturing a pass: cannot write " + (folder / "launch.txt").string());
 }
 
-void PassCapture::write_outputs(cl::CommandQueue& queue, const DeviceFilm& film, int samples_per_pixel) const
+void PassCapture::pass_finished(cl::CommandQueue& queue, const PassLaunch& launch)
 {
     for (std::size_t i = 0; i < kFilmArgs.size(); ++i)
-        write_buffer(dir_, queue, static_cast<cl_uint>(kFilmArgs[i]), film.buffers()[i], ".after");
-    std::fprintf(stderr, "orb: captured a pass of %d samples per pixel in %s\n", samples_per_pixel, dir_.c_str());
+        write_buffer(dir_, queue, static_cast<cl_uint>(kFilmArgs[i]), launch.film.buffers()[i], ".after");
+    std::fprintf(stderr, "orb: captured a pass of %d samples per pixel in %s\n", launch.params.pass.sample_count,
+                 dir_.c_str());
 }
 
 }  // namespace orb::render

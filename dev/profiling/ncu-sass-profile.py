@@ -13,7 +13,7 @@ active lanes per executed instruction, share of the samples and its most
 frequent opcodes, which name what the block does (FFMA/FMNMX runs: box or
 sphere tests; LOP3/IMAD/BREV: the sampler's hashing; LDL/STL: local memory).
 
-    scripts/ncu-sass-profile.py sass.csv [--min-share 0.01]
+    dev/profiling/ncu-sass-profile.py sass.csv [--min-share 0.01]
 """
 import argparse
 import collections

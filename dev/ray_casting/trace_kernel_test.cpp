@@ -161,13 +161,13 @@ BruteHit brute_force(const std::vector<SlotSphere>& spheres, const CastRay& ray)
 void expect_device_matches_brute_force(bool gpu, int warp_vote = 0)
 {
     const Scene scene = cloud(1500);
-    if (gpu) ::setenv("ORB_CL_OPTIONS", device::kernel_feature_options(test::gpu_traversal(scene, warp_vote)).c_str(), 1);
+    // Added to trace_rays's build options, as a tool passes ORB_CL_OPTIONS.
+    const std::string options = gpu ? device::kernel_feature_options(test::gpu_traversal(scene, warp_vote)) : "";
     const SceneLayout layout = layout_scene(scene);
     ASSERT_GT(layout.counts.bvh_node_count, 0);
     ASSERT_GT(layout.counts.outside_packet_count, 0) << "the floor should stay outside the tree";
     const std::vector<SlotSphere> spheres = slot_spheres(layout);
-    RayCaster caster(DeviceSession::open(choose_device(""), {}), layout);
-    if (gpu) ::unsetenv("ORB_CL_OPTIONS");
+    RayCaster caster(DeviceSession::open(choose_device(""), {}), layout, options);
 
     // Closest hits.
     const std::vector<CastRay> rays = random_rays(spheres, 20000, 17);

@@ -3,7 +3,7 @@
 // A wavefront design casts each bounce's rays in
 // a kernel of their own, which carries no path state and so needs few
 // registers; this measures that kernel's part, with the traversal
-// render_pass uses (trace_rays, librender/src/ray_caster.h).
+// render_pass uses (trace_rays, dev/ray_casting/ray_caster.h).
 //
 //   build/bin/orb-trace-benchmark SCENE [--device SEL] [--width W] [--height H] [--seconds S] [--dump DIR]
 //
@@ -115,7 +115,7 @@ std::vector<CastRay> sorted_by_octant_and_origin(const std::vector<CastRay>& ray
 }
 
 // --dump DIR: the spheres and the three batches with Orb's answers, for a
-// peer to cast the same rays (scripts/embree-trace-benchmark.sh). Raw
+// peer to cast the same rays (embree-trace-benchmark.sh beside this). Raw
 // little-endian arrays, no header:
 //   spheres.f32  five floats per sphere slot: centre xyz, radius, and 1 for
 //                a sphere outside the tree (the floor, the lamps) else 0;
@@ -190,8 +190,12 @@ int main(int argc, char** argv)
         const SceneLayout layout = layout_scene(scene);
         const device::CameraParams camera = layout_camera(scene.camera, width, height);
 
+        // The development knobs as orb-render reads them: the kernel folder,
+        // the build log, and ORB_CL_OPTIONS added to trace_rays's options.
+        const render::DevelopmentKnobs knobs = bench::development_knobs_or_exit("orb-trace-benchmark");
         const DeviceInfo device = choose_device(device_selector);
-        RayCaster caster(DeviceSession::open(device, {}), layout);
+        RayCaster caster(DeviceSession::open(device, {knobs.kernel_dir, true, knobs.show_build_log}), layout,
+                         knobs.cl_options);
         std::cout << "device=" << device.name << " (" << device.platform << ") spheres=" << scene.spheres.size()
                   << " tree_nodes=" << layout.counts.bvh_node_count << "\n";
 
