@@ -1,7 +1,7 @@
 // orb-capture-pass: renders a scene as `orb-render --benchmark` does (passes
 // sized by the pass tuner) and writes one of its passes to a folder for
-// orb-cuda-replay (pass_capture.h; docs/performance.md, "Nsight Compute
-// through a CUDA replay").
+// orb-cuda-replay (pass_capture.h; docs/design/register-caps.md and
+// speculative-traversal.md say what it measured).
 //
 //   orb-capture-pass SCENE --out DIR [--skip N] [--seconds S] [--device SEL]
 //                    [--width W] [--height H] [--max-depth D]

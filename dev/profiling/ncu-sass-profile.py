@@ -1,7 +1,6 @@
 #!/usr/bin/env python3
 """Where a kernel's lanes and stalls go, by basic block, from Nsight Compute's
-per-instruction source counters (docs/performance.md, "Nsight Compute through
-a CUDA replay"). Input: the CSV that
+per-instruction source counters (docs/design/speculative-traversal.md). Input: the CSV that
 
     ncu -i REPORT.ncu-rep --page source --csv --print-source sass > sass.csv
 

@@ -1,8 +1,7 @@
 // A peer for orb-trace-benchmark: casts the batches it dumps (--dump DIR)
 // with Intel Embree 3 (Debian's libembree-dev), on the CPU's threads, so
 // that Orb's traversal on PoCL can be set beside a hand-vectorised one on
-// the same machine, rays and spheres (docs/performance.md, "Embree beside
-// Orb's traversal"). Built and run by dev/ray_casting/embree-trace-benchmark.sh; not
+// the same machine, rays and spheres (docs/design/bvh-traversal.md). Built and run by dev/ray_casting/embree-trace-benchmark.sh; not
 // part of Orb's build.
 //
 //   embree-trace-benchmark DIR [--threads N] [--seconds S] [--split]

@@ -2,8 +2,7 @@
 // scene's tables with intersect.cl's traversal, and nothing else. Not part
 // of the product's program: dev/ray_casting/ray_caster.cpp appends it to the
 // product's kernels and builds it with -DORB_TRACE_KERNEL=1, for
-// orb-trace-benchmark (docs/performance.md, "Why the 3× ratios stay out of
-// reach"), which measures what a wavefront design's ray-casting kernel would
+// orb-trace-benchmark (docs/design/bvh-traversal.md), which measures what a wavefront design's ray-casting kernel would
 // achieve on its own, and for dev/ray_casting/trace_kernel_test.cpp, which
 // checks the device's traversal against brute force.
 //

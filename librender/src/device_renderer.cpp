@@ -11,16 +11,15 @@ namespace {
 
 // NVIDIA's compiler gives render_pass more registers than let an SM keep
 // enough warps in flight, or, capped too low, spills. Measured on an H100
-// (docs/performance.md, "Register caps, 2026-11-23 night" and "The -36
-// fault, found"): with a tree the traversal's memory waits want warps, and
+// (docs/design/register-caps.md and nvidia-fault-36.md): with a tree the traversal's memory waits want warps, and
 // 64 beats 80, 96 and 128 at 1 M spheres (0.752 G samples/s against 0.698,
 // 0.660 and 0.633 at 1920x1080; at 1 k spheres 64 to 96 are within 2%);
 // without one, the Cornell boxes (nine spheres, three packets, long paths)
 // ran best at 72 (+3% over 80, 96 lost 3%) and the small open scenes (three
 // to five spheres in one or two packets, short paths) at 96 (+4% to +13%
 // over 80). Nsight Compute, through a CUDA replay of a pass, shows both
-// kinds' occupancy limited by these registers ("Nsight Compute through a
-// CUDA replay"); why the two kinds want different caps is not known.
+// kinds' occupancy limited by these registers (docs/design/register-caps.md);
+// why the two kinds want different caps is not known.
 int nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
 {
     const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
@@ -75,7 +74,7 @@ void choose_traversal(const DeviceInfo& device, const SceneLayout& scene, device
     // (kernels/intersect.cl, integrator.cl). A scene without a tree gets a
     // program without traversal code. NVIDIA's own OpenCL takes the PTX of a
     // warp vote (kernels/warp_vote.cl), with which the traversal speculates
-    // (docs/performance.md, "Speculative traversal").
+    // (docs/design/speculative-traversal.md).
     const bool tree = scene.counts.bvh_node_count > 0;
     const bool nvidia_opencl = device.is_gpu && device.platform.find("NVIDIA") != std::string::npos;
     features.scalar_traversal = device.is_gpu;
@@ -134,7 +133,7 @@ device::KernelFeatures render_features(DeviceSession& session, const SceneLayout
     features.uniform_lights = scene.uniform_lights;
     // Only the code the scene uses: each material kind's, rough glass's and
     // the environment's cost registers on GPUs whether a scene uses them or
-    // not (docs/performance.md; without the environment's code, 1 M spheres
+    // not (docs/design/register-caps.md; without the environment's code, 1 M spheres
     // on an H100 render 3.5% faster, 1 k spheres 7%).
     features.material_kinds = scene.material_kinds;
     features.environment = scene.environment.width > 0;
