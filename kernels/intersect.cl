@@ -15,6 +15,12 @@
 //    would find.
 
 #define ORB_NO_HIT 1e30f
+// 1 on GPUs (the host's traversal_options): each thread walks the tree and
+// tests spheres one at a time; 0 on CPUs, where a packet of four spheres is
+// one vector test.
+#ifndef ORB_SCALAR_TRAVERSAL
+#define ORB_SCALAR_TRAVERSAL 0
+#endif
 // The host builds the program with -DORB_BVH=0 for a scene without a tree:
 // the traversal code (and its stacks) then does not exist, and the GPU's
 // register allocation for render_pass is what it was before there was a BVH
@@ -28,7 +34,7 @@
 // operand of a NaN, which costs an x86 CPU a compare and a blend besides
 // each minps or maxps; a compare-select is the bare instruction. GPUs have
 // the NaN-aware instruction, so they keep fmin and fmax.
-#ifdef ORB_INTERSECT_SCALAR
+#if ORB_SCALAR_TRAVERSAL
 #define ORB_MIN(a, b) fmin(a, b)
 #define ORB_MAX(a, b) fmax(a, b)
 #else
@@ -61,7 +67,7 @@ inline float lane_distance(SCENE_MEM const SpherePacket* packet, int lane, int i
     return t > 0.0f ? t : ORB_NO_HIT;
 }
 
-#ifndef ORB_INTERSECT_SCALAR
+#if !ORB_SCALAR_TRAVERSAL
 // Four spheres per step in SIMD lanes: CPUs execute the float4 arithmetic as
 // one vector instruction each.
 typedef struct {
@@ -259,7 +265,7 @@ inline int hit_children(SCENE_MEM const BvhNodeRecord* node, const BoxRay* ray, 
 // traffic. Returns the new top.
 inline int push_deferred(int* children, float* entries, int top, int4 c, float4 e, int count)
 {
-#ifdef ORB_INTERSECT_SCALAR
+#if ORB_SCALAR_TRAVERSAL
     if (count > 3) {
         children[top] = c.w;
         if (entries) entries[top] = e.w;
@@ -307,7 +313,7 @@ inline int push_deferred(int* children, float* entries, int top, int4 c, float4 
 // "Why the 3× ratios stay out of reach"). GPUs test one sphere at a time,
 // so for them the boxes stay.
 #ifndef ORB_BVH_LEAF_RUNS
-#ifdef ORB_INTERSECT_SCALAR
+#if ORB_SCALAR_TRAVERSAL
 #define ORB_BVH_LEAF_RUNS 0
 #else
 #define ORB_BVH_LEAF_RUNS 1

@@ -29,11 +29,10 @@ std::string nvidia_register_cap(const cl::Device& device, const SceneLayout& sce
     return scene.counts.packet_count <= 2 ? " -cl-nv-maxrregcount=96" : " -cl-nv-maxrregcount=72";
 }
 
-// The lanes of render_pass_simd (kernels/integrator_simd.cl) on this device,
-// or 0 for render_pass. CPUs only: a GPU already runs work-items in its
-// lanes. The device's native float vector width: 16 with AVX-512, 8 with
-// AVX2. Every scene: what the vector code lacks (pbr, rough glass, trees,
-// environment maps) runs lane by lane through render_pass's functions.
+// The camera paths per work-item of render_pass (ORB_LANES, kernels/lanes.cl)
+// on this device beyond one, or 0 for one. CPUs only: a GPU already runs
+// work-items in its lanes. The device's native float vector width: 16 with
+// AVX-512, 8 with AVX2.
 int simd_lanes(const DeviceInfo& info, const cl::Device& device)
 {
     if (info.is_gpu) return 0;
@@ -74,7 +73,7 @@ std::string traversal_options(const DeviceInfo& device, const SceneLayout& scene
     // own OpenCL takes the PTX of a warp vote (kernels/warp_vote.cl), with
     // which the traversal speculates (docs/performance.md, "Speculative traversal").
     const bool nvidia_opencl = device.is_gpu && device.platform.find("NVIDIA") != std::string::npos;
-    return std::string(device.is_gpu ? " -DORB_INTERSECT_SCALAR=1" : "") +
+    return std::string(device.is_gpu ? " -DORB_SCALAR_TRAVERSAL=1 -DORB_DRAW_ALL_NUMBERS=1" : "") +
            (scene.counts.bvh_node_count > 0 ? " -DORB_BVH=1" : " -DORB_BVH=0") +
            (nvidia_opencl && scene.counts.bvh_node_count > 0 ? " -DORB_WARP_VOTE=1" : "");
 }
@@ -143,9 +142,7 @@ std::string render_program_options(DeviceSession& session, const SceneLayout& sc
                           (config.sampler == SamplerKind::Sobol ? " -DORB_SAMPLER_SOBOL=1" : " -DORB_SAMPLER_SOBOL=0") +
                           " -DORB_FILM_CHANNELS_BUILT=" + std::to_string(config.film_channels) + "u" +
                           nvidia_register_cap(device, scene) +
-                          (simd_lanes > 0
-                               ? " -DORB_SIMD_KERNEL=1 -DORB_SIMD_WIDTH=" + std::to_string(simd_lanes)
-                               : std::string());
+                          " -DORB_LANES=" + std::to_string(simd_lanes > 0 ? simd_lanes : 1);
     return with_development_options(options);
 }
 
@@ -155,7 +152,7 @@ void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraPar
     const cl::Program& program = session_->program(build_options(scene));
     try {
         if (&program != program_) {
-            kernel_ = cl::Kernel(program, simd_lanes_ > 0 ? "render_pass_simd" : "render_pass");
+            kernel_ = cl::Kernel(program, "render_pass");
             program_ = &program;
             kernel_prepared_ = false;
             choose_work_sizes();
@@ -206,7 +203,7 @@ void DeviceRenderer::choose_work_sizes()
     // One work-item per pixel. GPUs: 16x8 tiles keep a warp on neighbouring
     // pixels, whose paths stay coherent. CPUs (PoCL runs a work-group as a
     // loop on one core): short rows give the scheduler many groups to share.
-    // render_pass_simd: one work-item per simd_lanes_ pixels of a row.
+    // With lanes: one work-item per simd_lanes_ pixels of a row.
     const bool gpu = device().is_gpu;
     size_t lx = gpu ? 16 : 8, ly = gpu ? 8 : 1;
     if (simd_lanes_ > 0) lx = 1, ly = 1;

@@ -23,7 +23,7 @@
 namespace orb::render {
 
 // The build options that choose the traversal a device's programs use, for
-// `scene`: one sphere at a time on GPUs (-DORB_INTERSECT_SCALAR=1), packets
+// `scene`: one sphere at a time on GPUs (-DORB_SCALAR_TRAVERSAL=1), packets
 // of four on CPUs; no traversal code for a scene without a tree. Every
 // program that traces rays through a scene takes them (render_pass,
 // trace_rays).
@@ -34,7 +34,7 @@ std::string traversal_options(const DeviceInfo& device, const SceneLayout& scene
 std::string with_development_options(std::string options);
 
 // The options render_pass is built with for `scene` under `config` on the
-// session's device (render_pass_simd with `simd_lanes` > 0): where the scene
+// session's device (`simd_lanes` > 0: that many ORB_LANES): where the scene
 // lives, the traversal, only the code the scene and the film use, the
 // register cap.
 std::string render_program_options(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
@@ -90,7 +90,7 @@ private:
     bool kernel_prepared_ = false;  // prepare_kernel() has run for program_
     PassCapture capture_;           // the development knob ORB_CAPTURE_PASS (pass_capture.h)
     cl::Kernel kernel_;
-    int simd_lanes_ = 0;  // > 0: kernel_ is render_pass_simd with this many lanes
+    int simd_lanes_ = 0;  // > 0: kernel_ has this many lanes (ORB_LANES)
     SceneBuffers scene_buffers_;
     std::uint64_t scene_bytes_ = 0;
     device::RenderPassParams params_{};

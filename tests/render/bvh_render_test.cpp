@@ -58,7 +58,7 @@ void expect_same_with_and_without_tree(const Scene& scene)
         RenderConfig with = small_config(48, 36, 11, 6, mode), without = with;
         without.use_bvh = false;
         // Both with render_pass: without a tree the CPU would otherwise render
-        // with render_pass_simd, whose rounding differs (simd_kernel_test.cpp).
+        // with lanes, whose rounding differs (simd_kernel_test.cpp).
         const Film a = render_with_simd_lanes(scene, with, {4}, "0"), b = render_with_simd_lanes(scene, without, {4}, "0");
         expect_identical(a.radiance, b.radiance, "radiance");
         expect_identical(a.direct, b.direct, "direct");
@@ -125,7 +125,7 @@ TEST(BvhRender, LeafRunsNameExactlyTheLeavesOfAllLeafNodes) {
 }
 
 // GPUs build the kernels with one-sphere-at-a-time intersection
-// (ORB_INTERSECT_SCALAR); its traversal must find the same spheres too. Run
+// (ORB_SCALAR_TRAVERSAL, ORB_DRAW_ALL_NUMBERS); its traversal must find the same spheres too. Run
 // here on PoCL through the development knob ORB_CL_OPTIONS.
 void expect_same_with_and_without_tree_with_options(const char* options) {
     const Scene scene = cloud_scene(300, 5);
@@ -140,14 +140,14 @@ void expect_same_with_and_without_tree_with_options(const char* options) {
 }
 
 TEST(BvhRender, SameImageWithAndWithoutTheTreeInTheGpuVariant) {
-    expect_same_with_and_without_tree_with_options("-DORB_INTERSECT_SCALAR=1");
+    expect_same_with_and_without_tree_with_options("-DORB_SCALAR_TRAVERSAL=1 -DORB_DRAW_ALL_NUMBERS=1");
 }
 
 // NVIDIA GPUs traverse speculatively (a warp vote decides when lanes test
 // leaves: warp_vote.cl). ORB_WARP_VOTE=2 runs the same control flow here,
 // every lane speculating as far as it can.
 TEST(BvhRender, SameImageWithAndWithoutTheTreeInSpeculativeTraversal) {
-    expect_same_with_and_without_tree_with_options("-DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2");
+    expect_same_with_and_without_tree_with_options("-DORB_SCALAR_TRAVERSAL=1 -DORB_DRAW_ALL_NUMBERS=1 -DORB_WARP_VOTE=2");
 }
 
 // What the kernels print while rendering `scene` with `options` added to
@@ -176,8 +176,8 @@ std::string kernel_output(const Scene& scene, const char* options)
 TEST(BvhRender, TraversalIndicesStayInBoundsInBothVariants) {
     const Scene scene = cloud_scene(300, 5);
     EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1"), "");
-    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_SCENE_SPACE=__global"), "");
-    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2"), "");
+    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_SCALAR_TRAVERSAL=1 -DORB_DRAW_ALL_NUMBERS=1 -DORB_SCENE_SPACE=__global"), "");
+    EXPECT_EQ(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_SCALAR_TRAVERSAL=1 -DORB_DRAW_ALL_NUMBERS=1 -DORB_WARP_VOTE=2"), "");
     EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2").find("orb BVH check: stack top"),
               std::string::npos);
     EXPECT_NE(kernel_output(scene, "-DORB_BVH_CHECK=1 -DORB_BVH_CHECK_STACK=2 -DORB_WARP_VOTE=2")
@@ -196,8 +196,8 @@ TEST(BvhRender, VisitCountersReportEveryTracedRay) {
     for (const device::BvhNodeRecord& node : layout.tables.bvh_nodes)
         for (int child : {node.child.x, node.child.y, node.child.z, node.child.w}) leaves += child < 0;
     const long most = static_cast<long>(layout.tables.bvh_nodes.size() + leaves);
-    for (const char* options : {"-DORB_BVH_COUNT=1", "-DORB_BVH_COUNT=1 -DORB_INTERSECT_SCALAR=1",
-                                "-DORB_BVH_COUNT=1 -DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2"}) {
+    for (const char* options : {"-DORB_BVH_COUNT=1", "-DORB_BVH_COUNT=1 -DORB_SCALAR_TRAVERSAL=1 -DORB_DRAW_ALL_NUMBERS=1",
+                                "-DORB_BVH_COUNT=1 -DORB_SCALAR_TRAVERSAL=1 -DORB_DRAW_ALL_NUMBERS=1 -DORB_WARP_VOTE=2"}) {
         std::istringstream lines(kernel_output(scene, options));
         std::map<std::string, long> rays;
         std::string line;

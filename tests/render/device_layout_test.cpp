@@ -39,7 +39,9 @@ std::vector<Probe> host_probes()
 // A kernel writing the device compiler's figure for each entry, in the same order.
 std::string probe_kernel_source()
 {
-    std::string source(kernels::find_embedded_kernel("include/orb/kernels/device_types.h"));
+    // device_types.h takes the MaterialKind enum's rows from material_kinds.h.
+    std::string source(kernels::find_embedded_kernel("include/orb/kernels/material_kinds.h"));
+    source += "\n" + std::string(kernels::find_embedded_kernel("include/orb/kernels/device_types.h"));
     source += "\n__kernel void probe(__global uint* out)\n{\n    int i = 0;\n";
 #define ORB_DEVICE_SIZE(type, size) source += "    out[i++] = (uint)sizeof(" #type ");\n";
 #define ORB_DEVICE_FIELD(type, field, offset) \

@@ -156,7 +156,7 @@ TEST(KernelBuild, GpuIntersectionVariantMatchesThePacketOne)
     const Scene cornell = load_scene_file(std::string(ORB_SCENES_DIR) + "/cornell.scn");
     const RenderConfig config = small_config(32, 24, 5);
     const Film packets = render(cornell, config, {16});
-    const Film scalar = render_with_cl_options(cornell, config, {16}, "-DORB_INTERSECT_SCALAR=1");
+    const Film scalar = render_with_cl_options(cornell, config, {16}, "-DORB_SCALAR_TRAVERSAL=1 -DORB_DRAW_ALL_NUMBERS=1");
     EXPECT_EQ(scalar.object_id, packets.object_id);
     // Hit distances agree to the float precision of the radius-1e4 walls:
     // their centres sit 1e4 away, where one float ulp is about 1e-3.

@@ -2,7 +2,7 @@
 // kernel and RayCaster) against brute force in double precision, ray by ray:
 // closest hits and shadow rays, in a cloud with a tree and a huge floor kept
 // outside it, from free points and from sphere surfaces (the `self` rule),
-// in the CPU variant and in the GPU variant (-DORB_INTERSECT_SCALAR=1).
+// in the CPU variant and in the GPU variant (-DORB_SCALAR_TRAVERSAL=1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -230,11 +230,11 @@ void expect_device_matches_brute_force(const char* options)
 
 TEST(TraceKernel, ClosestHitsAndShadowRaysMatchBruteForce) { expect_device_matches_brute_force(nullptr); }
 
-TEST(TraceKernel, GpuVariantMatchesBruteForce) { expect_device_matches_brute_force("-DORB_INTERSECT_SCALAR=1"); }
+TEST(TraceKernel, GpuVariantMatchesBruteForce) { expect_device_matches_brute_force("-DORB_SCALAR_TRAVERSAL=1"); }
 
 // The speculative traversal of NVIDIA GPUs (warp_vote.cl), every lane
 // speculating as far as it can.
 TEST(TraceKernel, SpeculativeTraversalMatchesBruteForce)
 {
-    expect_device_matches_brute_force("-DORB_INTERSECT_SCALAR=1 -DORB_WARP_VOTE=2");
+    expect_device_matches_brute_force("-DORB_SCALAR_TRAVERSAL=1 -DORB_WARP_VOTE=2");
 }

@@ -103,7 +103,7 @@ ORB_ENUM(CameraProjection){
  * test all four lanes with one vector instruction per float4. Sphere i is
  * lane i % 4 of packet i / 4. Lanes past the last sphere hold radius2 = -1,
  * which makes the discriminant negative, so they never hit. GPUs read the
- * same packets one lane at a time (ORB_INTERSECT_SCALAR). */
+ * same packets one lane at a time (ORB_SCALAR_TRAVERSAL). */
 typedef struct SpherePacket {
     float4 centre_x;
     float4 centre_y;
