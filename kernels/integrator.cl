@@ -439,8 +439,12 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
             active = mask_or(active, next);
         }
     }
+    // Read lane by lane from a copy, so that only the copy, not the sums of
+    // the loop above, has its address taken (which would keep them in memory).
+    const FilmSums pass_sums = sums;
     for (int lane = 0; lane < lanes_in_image; ++lane) {
         const uint pixel = (uint)y * (uint)width + (uint)(x0 + lane);
+        const FilmSums sums = pass_sums;
         ORB_FILM_ADD_SUMS
     }
 }

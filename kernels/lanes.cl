@@ -93,8 +93,30 @@ typedef struct {
 // is not through memory, which costs more than the arithmetic.
 #define LANE_FN inline __attribute__((always_inline))
 
-#define lanes_any(m) any(m)
-#define lanes_all(m) all(m)
+// Whether any (all) lanes of a mask are on: the lanes OR-ed (AND-ed) in
+// halves, then the sign bit. PoCL's any() and all() test the lanes one by
+// one with a branch each, which in a path tracer that asks this at every
+// step cost as much as the arithmetic it guards.
+#define ORB_DEFINE_LANES_REDUCE(op, name)                       \
+    LANE_FN bool name(lint m)                                   \
+    {                                                           \
+        ORB_LANES_REDUCE_STEPS(op)                              \
+        return (r.x op r.y) < 0;                                \
+    }
+#if ORB_LANES == 16
+#define ORB_LANES_REDUCE_STEPS(op)             \
+    const int8 h8 = m.lo op m.hi;              \
+    const int4 h4 = h8.lo op h8.hi;            \
+    const int2 r = h4.lo op h4.hi;
+#elif ORB_LANES == 8
+#define ORB_LANES_REDUCE_STEPS(op)             \
+    const int4 h4 = m.lo op m.hi;              \
+    const int2 r = h4.lo op h4.hi;
+#else
+#define ORB_LANES_REDUCE_STEPS(op) const int2 r = m.lo op m.hi;
+#endif
+ORB_DEFINE_LANES_REDUCE(|, lanes_any)
+ORB_DEFINE_LANES_REDUCE(&, lanes_all)
 #define mask_not(m) (~(m))
 #define mask_of(condition) ((lint)((condition) ? -1 : 0))
 #define lselect(a, b, m) select(a, b, m)
