@@ -10,63 +10,70 @@
 // mask is made from the scene).
 #define ORB_KIND_BUILT(kind) ((((uint)(ORB_MATERIAL_KINDS)) >> (kind)) & 1u)
 
-#define ORB_BSDF_CASE_HAS_DENSITY(member, value, name, scn_word, prefix, caster_rule) \
-    case MaterialKind_##member:                                                       \
-        if (ORB_KIND_BUILT(MaterialKind_##member)) return prefix##_has_density(b);   \
-        break;
-inline bool bsdf_has_density(const Bsdf* b)
-{
-    switch (b->kind) {
-        ORB_MATERIAL_TABLE(ORB_BSDF_CASE_HAS_DENSITY)
-        default: break;
+// Over lanes (lanes.cl): each entry point runs the function of every kind
+// present among the lanes, for all lanes, and keeps each lane's own kind's
+// result. At width 1 that is one kind, chosen by the same tests. A lane
+// whose kind is none of the built ones (no material: kind -1) gets no
+// sample, no density and black.
+#define ORB_BSDF_LANES_OF_KIND(member) \
+    mask_and(mask_of(ORB_KIND_BUILT(MaterialKind_##member)), b->kind == MaterialKind_##member)
+
+#define ORB_BSDF_CASE_HAS_DENSITY(member, value, name, scn_word, prefix, caster_rule)      \
+    if (ORB_KIND_BUILT(MaterialKind_##member)) {                                         \
+        const lmask kind_lanes = ORB_BSDF_LANES_OF_KIND(member);                          \
+        if (lanes_any(kind_lanes)) density = lselect(density, prefix##_has_density(b), kind_lanes); \
     }
-    return false;
+LANE_FN lmask bsdf_has_density(const Bsdf* b)
+{
+    lmask density = mask_of(false);
+    ORB_MATERIAL_TABLE(ORB_BSDF_CASE_HAS_DENSITY)
+    return density;
 }
 
-#define ORB_BSDF_CASE_SAMPLE(member, value, name, scn_word, prefix, caster_rule)                     \
-    case MaterialKind_##member:                                                                     \
-        if (ORB_KIND_BUILT(MaterialKind_##member)) return prefix##_sample(b, wo, n, outside, u, v, choice); \
-        break;
-inline BsdfSample bsdf_sample(const Bsdf* b, float3 wo, float3 n, bool outside, float u, float v, float* choice)
-{
-    switch (b->kind) {
-        ORB_MATERIAL_TABLE(ORB_BSDF_CASE_SAMPLE)
-        default: break;
+#define ORB_BSDF_CASE_SAMPLE(member, value, name, scn_word, prefix, caster_rule)           \
+    if (ORB_KIND_BUILT(MaterialKind_##member)) {                                         \
+        const lmask kind_lanes = ORB_BSDF_LANES_OF_KIND(member);                          \
+        if (lanes_any(kind_lanes)) {                                                      \
+            lfloat kind_choice = *choice;                                                 \
+            s = bsdf_sample_select(s, prefix##_sample(b, wo, n, outside, u, v, &kind_choice), kind_lanes); \
+            rescaled = lselect(rescaled, kind_choice, kind_lanes);                        \
+        }                                                                                 \
     }
-    return bsdf_no_sample();
+LANE_FN BsdfSample bsdf_sample(const Bsdf* b, lv3 wo, lv3 n, lmask outside, lfloat u, lfloat v, lfloat* choice)
+{
+    BsdfSample s = bsdf_no_sample();
+    lfloat rescaled = *choice;
+    ORB_MATERIAL_TABLE(ORB_BSDF_CASE_SAMPLE)
+    *choice = rescaled;
+    return s;
 }
 
 // f(wo, wi) |cos(wi, n)| over the lobes with a density; *pdf: the density of wi under bsdf_sample.
-#define ORB_BSDF_CASE_EVAL(member, value, name, scn_word, prefix, caster_rule)                     \
-    case MaterialKind_##member:                                                                   \
-        if (ORB_KIND_BUILT(MaterialKind_##member)) return prefix##_eval(b, wo, wi, n, outside, pdf); \
-        break;
-inline float3 bsdf_eval(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outside, float* pdf)
-{
-    switch (b->kind) {
-        ORB_MATERIAL_TABLE(ORB_BSDF_CASE_EVAL)
-        default: break;
+#define ORB_BSDF_CASE_EVAL(member, value, name, scn_word, prefix, caster_rule)             \
+    if (ORB_KIND_BUILT(MaterialKind_##member)) {                                         \
+        const lmask kind_lanes = ORB_BSDF_LANES_OF_KIND(member);                          \
+        if (lanes_any(kind_lanes)) {                                                      \
+            lfloat kind_pdf;                                                              \
+            f_cos = lv3_select(f_cos, prefix##_eval(b, wo, wi, n, outside, &kind_pdf), kind_lanes); \
+            *pdf = lselect(*pdf, kind_pdf, kind_lanes);                                   \
+        }                                                                                 \
     }
-    *pdf = 0.0f;
-    return (float3)(0.0f);
+LANE_FN lv3 bsdf_eval(const Bsdf* b, lv3 wo, lv3 wi, lv3 n, lmask outside, lfloat* pdf)
+{
+    lv3 f_cos = lv3_zero();
+    *pdf = (lfloat)(0.0f);
+    ORB_MATERIAL_TABLE(ORB_BSDF_CASE_EVAL)
+    return f_cos;
 }
 
-inline float bsdf_pdf(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outside)
-{
-    float pdf;
-    bsdf_eval(b, wo, wi, n, outside, &pdf);
-    return pdf;
-}
-
-#define ORB_BSDF_CASE_ALBEDO(member, value, name, scn_word, prefix, caster_rule)    \
-    case MaterialKind_##member:                                                     \
-        if (ORB_KIND_BUILT(MaterialKind_##member)) return prefix##_albedo(b, wo, n); \
-        break;
-inline float3 bsdf_albedo(const Bsdf* b, float3 wo, float3 n)
-{
-    switch (b->kind) {
-        ORB_MATERIAL_TABLE(ORB_BSDF_CASE_ALBEDO)
-        default: break;
+#define ORB_BSDF_CASE_ALBEDO(member, value, name, scn_word, prefix, caster_rule)           \
+    if (ORB_KIND_BUILT(MaterialKind_##member)) {                                         \
+        const lmask kind_lanes = ORB_BSDF_LANES_OF_KIND(member);                          \
+        if (lanes_any(kind_lanes)) albedo = lv3_select(albedo, prefix##_albedo(b, wo, n), kind_lanes); \
     }
-    return (float3)(0.0f);
+LANE_FN lv3 bsdf_albedo(const Bsdf* b, lv3 wo, lv3 n)
+{
+    lv3 albedo = lv3_zero();
+    ORB_MATERIAL_TABLE(ORB_BSDF_CASE_ALBEDO)
+    return albedo;
 }

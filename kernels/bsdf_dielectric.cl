@@ -4,48 +4,47 @@
 // Exact Fresnel reflectance of a smooth dielectric for unpolarised light.
 // cos_i: cosine of the angle of incidence (> 0); eta = n_incident / n_transmitted.
 // Returns 1 on total internal reflection; *cos_t receives the transmitted cosine.
-inline float fresnel_dielectric(float cos_i, float eta, float* cos_t)
+LANE_FN lfloat fresnel_dielectric(lfloat cos_i, lfloat eta, lfloat* cos_t)
 {
-    const float sin2_t = eta * eta * fmax(0.0f, 1.0f - cos_i * cos_i);
-    if (sin2_t >= 1.0f) {
-        *cos_t = 0.0f;
-        return 1.0f;
-    }
-    const float ct = sqrt(1.0f - sin2_t);
-    *cos_t = ct;
-    const float rs = (eta * cos_i - ct) / (eta * cos_i + ct);
-    const float rp = (cos_i - eta * ct) / (cos_i + eta * ct);
-    return 0.5f * (rs * rs + rp * rp);
+    const lfloat sin2_t = eta * eta * fmax((lfloat)(0.0f), 1.0f - cos_i * cos_i);
+    const lmask total = sin2_t >= 1.0f;
+    const lfloat ct = sqrt(fmax((lfloat)(0.0f), 1.0f - sin2_t));
+    *cos_t = ct;  // 0 on total reflection
+    const lfloat rs = (eta * cos_i - ct) / (eta * cos_i + ct);
+    const lfloat rp = (cos_i - eta * ct) / (cos_i + eta * ct);
+    return lselect(0.5f * (rs * rs + rp * rp), (lfloat)(1.0f), total);
 }
 
 // Rough glass's code is in the program only when a glass of the scene is
 // rough (-DORB_ROUGH_DIELECTRIC=0 from the host otherwise; built when absent).
-inline bool dielectric_is_smooth(float alpha) { return !ORB_ROUGH_DIELECTRIC || ggx_is_smooth(alpha); }
+LANE_FN lmask dielectric_is_smooth(lfloat alpha)
+{
+    return mask_or(mask_of(!ORB_ROUGH_DIELECTRIC), ggx_is_smooth(alpha));
+}
 
-inline bool dielectric_has_density(const Bsdf* b) { return !dielectric_is_smooth(ggx_alpha(b->roughness)); }
+LANE_FN lmask dielectric_has_density(const Bsdf* b) { return mask_not(dielectric_is_smooth(ggx_alpha(b->roughness))); }
+
+// n_o / n_i for wo on the `outside` side.
+LANE_FN lfloat dielectric_eta(const Bsdf* b, lmask outside) { return lselect(b->ior, 1.0f / b->ior, outside); }
 
 // Smooth glass: reflects with probability F and refracts with 1 - F, so the
 // Fresnel factors cancel in the weight.
-inline BsdfSample smooth_dielectric_sample(const Bsdf* b, float3 wo, float3 n, bool outside, float* choice)
+LANE_FN BsdfSample smooth_dielectric_sample(const Bsdf* b, lv3 wo, lv3 n, lmask outside, lfloat* choice)
 {
     BsdfSample s;
-    s.pdf = 0.0f;
-    s.delta = true;
-    s.eta2 = 1.0f;
-    s.weight = b->color;
-    const float cos_o = dot(wo, n);
-    const float eta = outside ? 1.0f / b->ior : b->ior;  // n_o / n_i
-    float cos_t;
-    const float reflectance = fresnel_dielectric(cos_o, eta, &cos_t);
-    if (choose_lobe(reflectance, choice)) {
-        s.wi = reflect_about(wo, n);
-        return s;
-    }
-    s.wi = normalize(-eta * wo + (eta * cos_o - cos_t) * n);
+    s.pdf = (lfloat)(0.0f);
+    s.delta = mask_of(true);
+    const lfloat cos_o = lv3_dot(wo, n);
+    const lfloat eta = dielectric_eta(b, outside);
+    lfloat cos_t;
+    const lfloat reflectance = fresnel_dielectric(cos_o, eta, &cos_t);
+    const lmask reflect = choose_lobe(reflectance, choice);
+    const lv3 refracted = lv3_normalize(lv3_add(lv3_scale(wo, -eta), lv3_scale(n, eta * cos_o - cos_t)));
+    s.wi = lv3_select(refracted, reflect_about(wo, n), reflect);
     // L / n^2 is invariant across the interface, so radiance arriving from the
     // transmitted side is scaled by (n_o / n_i)^2 = eta^2 on the viewer's side.
-    s.eta2 = eta * eta;
-    s.weight = b->color * s.eta2;
+    s.eta2 = lselect(eta * eta, (lfloat)(1.0f), reflect);
+    s.weight = lv3_select(lv3_scale(b->color, s.eta2), b->color, reflect);
     return s;
 }
 
@@ -59,67 +58,71 @@ inline BsdfSample smooth_dielectric_sample(const Bsdf* b, float3 wo, float3 n, b
 //                 pdf = (1 - F) G1(wo) D (wo.m) |wi.m| / (cos_o (wi.m + eta wo.m)^2)
 //                 (m along eta wo + wi, the generalised half vector)
 // with eta = n_o / n_i; both times color.
-inline float3 dielectric_eval(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outside, float* pdf)
+LANE_FN lv3 dielectric_eval(const Bsdf* b, lv3 wo, lv3 wi, lv3 n, lmask outside, lfloat* pdf)
 {
-    *pdf = 0.0f;
-    const float alpha = ggx_alpha(b->roughness);
-    const float cos_o = dot(wo, n);
-    const float cos_i = dot(wi, n);
-    if (dielectric_is_smooth(alpha) || cos_o <= 0.0f || cos_i == 0.0f) return (float3)(0.0f);
-    const float eta = outside ? 1.0f / b->ior : b->ior;
-    const bool reflection = cos_i > 0.0f;
-    float3 m = reflection ? wo + wi : eta * wo + wi;
-    const float length2 = dot(m, m);
-    if (!(length2 > 0.0f)) return (float3)(0.0f);  // index-matched straight transmission: no microfacet
-    m *= rsqrt(length2);
-    if (dot(m, n) < 0.0f) m = -m;
-    const float cos_om = dot(wo, m);
-    const float cos_im = dot(wi, m);
+    *pdf = (lfloat)(0.0f);
+    const lfloat alpha = ggx_alpha(b->roughness);
+    const lfloat cos_o = lv3_dot(wo, n);
+    const lfloat cos_i = lv3_dot(wi, n);
+    lmask valid = mask_and(mask_not(dielectric_is_smooth(alpha)), mask_and(cos_o > 0.0f, cos_i != 0.0f));
+    if (!lanes_any(valid)) return lv3_zero();
+    const lfloat eta = dielectric_eta(b, outside);
+    const lmask reflection = cos_i > 0.0f;
+    lv3 m = lv3_select(lv3_add(lv3_scale(wo, eta), wi), lv3_add(wo, wi), reflection);
+    const lfloat length2 = lv3_dot(m, m);
+    valid = mask_and(valid, length2 > 0.0f);  // not: index-matched straight transmission, no microfacet
+    m = lv3_scale(m, rsqrt(length2));
+    m = lv3_select(m, lv3_neg(m), lv3_dot(m, n) < 0.0f);
+    const lfloat cos_om = lv3_dot(wo, m);
+    const lfloat cos_im = lv3_dot(wi, m);
     // Light arrives and leaves on the facet's sides that match the macro surface.
-    if (cos_om <= 0.0f || cos_im * cos_i <= 0.0f) return (float3)(0.0f);
-    float cos_t;
-    const float fresnel = fresnel_dielectric(cos_om, eta, &cos_t);
-    const float d = ggx_d(alpha, m, n);
-    const float lambda_o = ggx_lambda(alpha, cos_o);
-    const float g2 = 1.0f / (1.0f + lambda_o + ggx_lambda(alpha, fabs(cos_i)));
-    const float visible = d * ggx_visible_factor(lambda_o, cos_o);  // D_wo(m) / (wo.m)
-    if (reflection) {
-        *pdf = fresnel * visible * 0.25f;
-        return b->color * (fresnel * d * g2 / (4.0f * cos_o));
-    }
-    const float sum = cos_im + eta * cos_om;
-    const float jacobian = -cos_im / (sum * sum);  // d omega_m / d omega_i (Walter et al., eq. 17)
-    *pdf = (1.0f - fresnel) * visible * cos_om * jacobian;
-    return b->color * (eta * eta * (1.0f - fresnel) * d * g2 * cos_om * jacobian / cos_o);
+    valid = mask_and(valid, mask_and(cos_om > 0.0f, cos_im * cos_i > 0.0f));
+    lfloat cos_t;
+    const lfloat fresnel = fresnel_dielectric(cos_om, eta, &cos_t);
+    const lfloat d = ggx_d(alpha, m, n);
+    const lfloat lambda_o = ggx_lambda(alpha, cos_o);
+    const lfloat g2 = 1.0f / (1.0f + lambda_o + ggx_lambda(alpha, fabs(cos_i)));
+    const lfloat visible = d * ggx_visible_factor(lambda_o, cos_o);  // D_wo(m) / (wo.m)
+    const lfloat sum = cos_im + eta * cos_om;
+    const lfloat jacobian = -cos_im / (sum * sum);  // d omega_m / d omega_i (Walter et al., eq. 17)
+    const lfloat reflected_pdf = fresnel * visible * 0.25f;
+    const lfloat refracted_pdf = (1.0f - fresnel) * visible * cos_om * jacobian;
+    const lfloat reflected = fresnel * d * g2 / (4.0f * cos_o);
+    const lfloat refracted = eta * eta * (1.0f - fresnel) * d * g2 * cos_om * jacobian / cos_o;
+    *pdf = lselect((lfloat)(0.0f), lselect(refracted_pdf, reflected_pdf, reflection), valid);
+    return lv3_scale(b->color, lselect((lfloat)(0.0f), lselect(refracted, reflected, reflection), valid));
 }
 
-inline BsdfSample dielectric_sample(const Bsdf* b, float3 wo, float3 n, bool outside, float u, float v,
-                                    float* choice)
+LANE_FN BsdfSample dielectric_sample(const Bsdf* b, lv3 wo, lv3 n, lmask outside, lfloat u, lfloat v, lfloat* choice)
 {
-    const float alpha = ggx_alpha(b->roughness);
-    if (dielectric_is_smooth(alpha)) return smooth_dielectric_sample(b, wo, n, outside, choice);
-    const float eta = outside ? 1.0f / b->ior : b->ior;
-    const float3 m = ggx_sample_visible_normal(alpha, wo, n, u, v);
-    const float cos_om = dot(wo, m);
-    float cos_t;
-    const float fresnel = fresnel_dielectric(fmax(0.0f, cos_om), eta, &cos_t);
-    BsdfSample s;
-    s.delta = false;
-    s.eta2 = 1.0f;
-    if (choose_lobe(fresnel, choice)) {
-        s.wi = reflect_about(wo, m);
-        if (dot(s.wi, n) <= 0.0f) return bsdf_no_sample();
-    } else {
-        s.wi = normalize(-eta * wo + (eta * cos_om - cos_t) * m);
-        if (dot(s.wi, n) >= 0.0f) return bsdf_no_sample();
-        s.eta2 = eta * eta;
+    const lfloat alpha = ggx_alpha(b->roughness);
+    const lmask smooth = dielectric_is_smooth(alpha);
+    BsdfSample s = bsdf_no_sample();
+    lfloat smooth_choice = *choice, rough_choice = *choice;
+    if (lanes_any(smooth)) s = bsdf_sample_select(s, smooth_dielectric_sample(b, wo, n, outside, &smooth_choice), smooth);
+    const lmask rough = mask_not(smooth);
+    if (ORB_ROUGH_DIELECTRIC && lanes_any(rough)) {
+        const lfloat eta = dielectric_eta(b, outside);
+        const lv3 m = ggx_sample_visible_normal(alpha, wo, n, u, v);
+        const lfloat cos_om = lv3_dot(wo, m);
+        lfloat cos_t;
+        const lfloat fresnel = fresnel_dielectric(fmax((lfloat)(0.0f), cos_om), eta, &cos_t);
+        const lmask reflect = choose_lobe(fresnel, &rough_choice);
+        BsdfSample r;
+        r.delta = mask_of(false);
+        r.wi = lv3_select(lv3_normalize(lv3_add(lv3_scale(wo, -eta), lv3_scale(m, eta * cos_om - cos_t))),
+                          reflect_about(wo, m), reflect);
+        const lfloat cos_i = lv3_dot(r.wi, n);
+        r.eta2 = lselect(eta * eta, (lfloat)(1.0f), reflect);
+        // The weight from the same functions MIS and dielectric_pdf use, so the
+        // three agree: G2 / G1(wo), times eta^2 for refraction, times color.
+        const lv3 f_cos = dielectric_eval(b, wo, r.wi, n, outside, &r.pdf);
+        r.weight = lv3_scale(f_cos, 1.0f / r.pdf);
+        const lmask kept = mask_and(lselect(cos_i < 0.0f, cos_i > 0.0f, reflect), r.pdf > 0.0f);
+        s = bsdf_sample_select(s, r, mask_and(rough, kept));
     }
-    // The weight from the same functions MIS and dielectric_pdf use, so the
-    // three agree: G2 / G1(wo), times eta^2 for refraction, times color.
-    const float3 f_cos = dielectric_eval(b, wo, s.wi, n, outside, &s.pdf);
-    if (!(s.pdf > 0.0f)) return bsdf_no_sample();
-    s.weight = f_cos * (1.0f / s.pdf);
+    *choice = lselect(rough_choice, smooth_choice, smooth);
     return s;
 }
 
-inline float3 dielectric_albedo(const Bsdf* b, float3 wo, float3 n) { return b->color; }
+LANE_FN lv3 dielectric_albedo(const Bsdf* b, lv3 wo, lv3 n) { return b->color; }

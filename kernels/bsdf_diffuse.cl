@@ -1,29 +1,25 @@
 // Lambertian diffuse: f = color / pi on the viewer's side (two-sided: n faces
 // the viewer), sampled with a cosine-weighted hemisphere, pdf = cos / pi.
 
-inline bool diffuse_has_density(const Bsdf* b) { return true; }
+LANE_FN lmask diffuse_has_density(const Bsdf* b) { return mask_of(true); }
 
-inline BsdfSample diffuse_sample(const Bsdf* b, float3 wo, float3 n, bool outside, float u, float v, float* choice)
+LANE_FN BsdfSample diffuse_sample(const Bsdf* b, lv3 wo, lv3 n, lmask outside, lfloat u, lfloat v, lfloat* choice)
 {
     BsdfSample s;
-    float cos_theta;
+    lfloat cos_theta;
     s.wi = sample_cosine_hemisphere(n, u, v, &cos_theta);
     s.weight = b->color;  // (color / pi) cos / (cos / pi)
     s.pdf = cos_theta * ORB_INV_PI;
-    s.delta = false;
-    s.eta2 = 1.0f;
+    s.delta = mask_of(false);
+    s.eta2 = (lfloat)(1.0f);
     return s;
 }
 
-inline float3 diffuse_eval(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outside, float* pdf)
+LANE_FN lv3 diffuse_eval(const Bsdf* b, lv3 wo, lv3 wi, lv3 n, lmask outside, lfloat* pdf)
 {
-    const float cos_theta = dot(n, wi);
-    if (cos_theta <= 0.0f) {
-        *pdf = 0.0f;
-        return (float3)(0.0f);
-    }
-    *pdf = cos_theta * ORB_INV_PI;
-    return b->color * *pdf;
+    const lfloat cos_theta = lv3_dot(n, wi);
+    *pdf = lselect((lfloat)(0.0f), cos_theta * ORB_INV_PI, cos_theta > 0.0f);
+    return lv3_scale(b->color, *pdf);
 }
 
-inline float3 diffuse_albedo(const Bsdf* b, float3 wo, float3 n) { return b->color; }
+LANE_FN lv3 diffuse_albedo(const Bsdf* b, lv3 wo, lv3 n) { return b->color; }

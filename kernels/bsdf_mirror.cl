@@ -1,22 +1,22 @@
 // Perfect mirror: one delta lobe, reflectance `color`.
 
-inline bool mirror_has_density(const Bsdf* b) { return false; }
+LANE_FN lmask mirror_has_density(const Bsdf* b) { return mask_of(false); }
 
-inline BsdfSample mirror_sample(const Bsdf* b, float3 wo, float3 n, bool outside, float u, float v, float* choice)
+LANE_FN BsdfSample mirror_sample(const Bsdf* b, lv3 wo, lv3 n, lmask outside, lfloat u, lfloat v, lfloat* choice)
 {
     BsdfSample s;
     s.wi = reflect_about(wo, n);
     s.weight = b->color;
-    s.pdf = 0.0f;
-    s.delta = true;
-    s.eta2 = 1.0f;
+    s.pdf = (lfloat)(0.0f);
+    s.delta = mask_of(true);
+    s.eta2 = (lfloat)(1.0f);
     return s;
 }
 
-inline float3 mirror_eval(const Bsdf* b, float3 wo, float3 wi, float3 n, bool outside, float* pdf)
+LANE_FN lv3 mirror_eval(const Bsdf* b, lv3 wo, lv3 wi, lv3 n, lmask outside, lfloat* pdf)
 {
-    *pdf = 0.0f;
-    return (float3)(0.0f);
+    *pdf = (lfloat)(0.0f);
+    return lv3_zero();
 }
 
-inline float3 mirror_albedo(const Bsdf* b, float3 wo, float3 n) { return b->color; }
+LANE_FN lv3 mirror_albedo(const Bsdf* b, lv3 wo, lv3 n) { return b->color; }

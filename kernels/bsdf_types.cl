@@ -18,49 +18,64 @@
 //   NAME_eval(b, wo, wi, n, outside, &pdf) -> f(wo, wi) |cos(wi, n)|
 //       for the lobes with a density (delta lobes contribute nothing), and in
 //       pdf the solid-angle density with which NAME_sample returns wi.
-//   NAME_has_density(b): false when every lobe is a delta (mirror, smooth
+//   NAME_has_density(b): per lane, false when every lobe is a delta (mirror, smooth
 //       glass): next-event estimation is then pointless and is skipped, and
 //       NAME_sample must not use u, v (the integrator does not draw them).
 //   NAME_albedo(b, wo, n): the reflectance the albedo pass records.
 
+// Everything here is over lanes (lanes.cl): a BSDF call evaluates the
+// lanes' own materials at once; at width 1 it is plain scalar code.
+//
 // A material's scattering parameters, unpacked from its MaterialRecord.
 typedef struct {
-    float3 color;     // reflectance, base colour or transmittance tint
-    int kind;         // a MaterialKind
-    float ior;        // index of refraction of the sphere's inside (dielectric)
-    float roughness;  // perceptual roughness in [0, 1] (pbr, dielectric); the GGX alpha is its square
-    float metallic;   // pbr: 0 dielectric base, 1 metal
+    lv3 color;         // reflectance, base colour or transmittance tint
+    lint kind;         // a MaterialKind (-1 for a lane with no material)
+    lfloat ior;        // index of refraction of the sphere's inside (dielectric)
+    lfloat roughness;  // perceptual roughness in [0, 1] (pbr, dielectric); the GGX alpha is its square
+    lfloat metallic;   // pbr: 0 dielectric base, 1 metal
 } Bsdf;
 
 typedef struct {
-    float3 wi;      // the sampled direction (unit)
-    float3 weight;  // f |cos| / pdf, the throughput factor; for a delta lobe the lobe's reflectance
-    float pdf;      // solid-angle density of wi under NAME_sample, for MIS; 0 for a delta lobe
-    bool delta;     // wi came from a delta (specular) lobe, which light sampling cannot produce
-    float eta2;     // the (n_o / n_i)^2 radiance factor inside weight on refraction, else 1
+    lv3 wi;        // the sampled direction (unit)
+    lv3 weight;    // f |cos| / pdf, the throughput factor; for a delta lobe the lobe's reflectance
+    lfloat pdf;    // solid-angle density of wi under NAME_sample, for MIS; 0 for a delta lobe
+    lmask delta;   // wi came from a delta (specular) lobe, which light sampling cannot produce
+    lfloat eta2;   // the (n_o / n_i)^2 radiance factor inside weight on refraction, else 1
 } BsdfSample;
 
-inline BsdfSample bsdf_no_sample(void)
+LANE_FN BsdfSample bsdf_no_sample(void)
 {
     BsdfSample s;
-    s.wi = (float3)(0.0f, 0.0f, 1.0f);
-    s.weight = (float3)(0.0f);
-    s.pdf = 0.0f;
-    s.delta = true;  // no density to weigh against: an emitter it might "hit" is never reached (weight 0)
-    s.eta2 = 1.0f;
+    s.wi = lv3_make((lfloat)(0.0f), (lfloat)(0.0f), (lfloat)(1.0f));
+    s.weight = lv3_zero();
+    s.pdf = (lfloat)(0.0f);
+    s.delta = mask_of(true);  // no density to weigh against: an emitter it might "hit" is never reached (weight 0)
+    s.eta2 = (lfloat)(1.0f);
+    return s;
+}
+
+// b where m, else a.
+LANE_FN BsdfSample bsdf_sample_select(BsdfSample a, BsdfSample b, lmask m)
+{
+    BsdfSample s;
+    s.wi = lv3_select(a.wi, b.wi, m);
+    s.weight = lv3_select(a.weight, b.weight, m);
+    s.pdf = lselect(a.pdf, b.pdf, m);
+    s.delta = lselect(a.delta, b.delta, m);
+    s.eta2 = lselect(a.eta2, b.eta2, m);
     return s;
 }
 
 // The mirror direction of wo about unit m.
-inline float3 reflect_about(float3 wo, float3 m) { return (2.0f * dot(wo, m)) * m - wo; }
+LANE_FN lv3 reflect_about(lv3 wo, lv3 m) { return lv3_sub(lv3_scale(m, 2.0f * lv3_dot(wo, m)), wo); }
 
 // Picks the first of two lobes with probability p using the uniform *u, and
 // rescales *u to [0, 1) within the part it fell into, so that it is uniform
 // again and independent of the pick.
-inline bool choose_lobe(float p, float* u)
+LANE_FN lmask choose_lobe(lfloat p, lfloat* u)
 {
-    const bool first = *u < p;
-    const float rescaled = first ? *u / p : (*u - p) / (1.0f - p);
-    *u = fmin(rescaled, 0x1.fffffep-1f);
+    const lmask first = *u < p;
+    const lfloat rescaled = lselect((*u - p) / (1.0f - p), *u / p, first);
+    *u = fmin(rescaled, (lfloat)(0x1.fffffep-1f));
     return first;
 }

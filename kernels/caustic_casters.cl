@@ -21,80 +21,127 @@
 // The share of continuations aimed at casters, chosen by time to equal error
 // (docs/design/caustic-casters.md; -DORB_CASTER_SHARE=0 turns the aiming off).
 
+// Everything below is over lanes (lanes.cl).
+
 // The density of direction wi under uniform sampling of caster c's cone from
 // p: 0 outside the cone, and for a p inside the caster (it has no cone).
 // Inside the cone when cos(wi, pc) >= cos theta_max = sqrt(d^2 - r^2) / d,
 // that is (wi . pc)^2 >= d^2 - r^2 with wi . pc > 0: most directions miss
 // every cone, and this test needs no square root or division.
-inline float caster_cone_pdf(SCENE_MEM const CasterRecord* c, float3 p, float3 wi)
+LANE_FN lfloat caster_cone_pdf(SCENE_MEM const CasterRecord* c, lv3 p, lv3 wi)
 {
-    const float3 pc = c->centre_radius.xyz - p;
-    const float distance2 = dot(pc, pc);
+    const lv3 pc = lv3_sub(lv3_splat(c->centre_radius.xyz), p);
+    const lfloat distance2 = lv3_dot(pc, pc);
     const float radius = c->centre_radius.w;
     const float radius2 = radius * radius;
-    const float along = dot(wi, pc);
-    if (distance2 <= radius2 || along <= 0.0f || along * along < distance2 - radius2) return 0.0f;
-    return 1.0f / (2.0f * ORB_PI * cone_one_minus_cos(distance2, radius));
+    const lfloat along = lv3_dot(wi, pc);
+    const lmask inside = mask_and(mask_and(distance2 > radius2, along > 0.0f), along * along >= distance2 - radius2);
+    if (!lanes_any(inside)) return (lfloat)(0.0f);
+    return lselect((lfloat)(0.0f), 1.0f / (2.0f * ORB_PI * cone_one_minus_cos(distance2, (lfloat)(radius))), inside);
 }
 
 // The density of direction wi under the continuation's mixture at p, for a
 // BSDF whose own sampling gives wi the density bsdf_pdf.
-inline float continuation_pdf(const SceneView* scene, float3 p, float bsdf_pdf, float3 wi)
+LANE_FN lfloat continuation_pdf(const SceneView* scene, lv3 p, lfloat bsdf_pdf, lv3 wi)
 {
     const int count = scene->caster_count;
     if (ORB_CASTER_SHARE <= 0.0f || count == 0) return bsdf_pdf;
-    float cones = 0.0f;
+    lfloat cones = (lfloat)(0.0f);
     for (int k = 0; k < count; ++k) cones += caster_cone_pdf(&scene->casters[k], p, wi);
     return (1.0f - ORB_CASTER_SHARE) * bsdf_pdf + (ORB_CASTER_SHARE / (float)count) * cones;
+}
+
+// Caster k of each lane in `lanes`.
+LANE_FN void load_caster(const SceneView* scene, lint k, lmask lanes, lv3* centre, lfloat* radius)
+{
+#if ORB_LANES == 1
+    const float4 cr = scene->casters[k].centre_radius;
+    *centre = cr.xyz;
+    *radius = cr.w;
+#else
+    *centre = lv3_zero();
+    *radius = (lfloat)(0.0f);
+    if (scene->caster_count > ORB_LANES_SELECT_GATHER_MAX) {
+        ORB_FOR_EACH_LANE(l, lanes)
+        {
+            const float4 cr = scene->casters[lane_i(k, l)].centre_radius;
+            set_lane_v3(*centre, l, cr.xyz);
+            set_lane_f(*radius, l, cr.w);
+        }
+        return;
+    }
+    for (int c = 0; c < scene->caster_count; ++c) {
+        const lmask m = mask_and(lanes, k == c);
+        if (!lanes_any(m)) continue;
+        const float4 cr = scene->casters[c].centre_radius;
+        *centre = lv3_select(*centre, lv3_splat(cr.xyz), m);
+        *radius = lselect(*radius, (lfloat)(cr.w), m);
+    }
+#endif
 }
 
 // The continuation at a vertex with a density: a BsdfSample whose weight and
 // pdf are the mixture's. *choice picks the strategy (and the caster, or the
 // BSDF's lobe) and is handed back rescaled, as bsdf_sample does.
-inline BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, float3 p, float3 wo, float3 n,
-                                      bool outside, float u, float v, float* choice)
+LANE_FN BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, lv3 p, lv3 wo, lv3 n, lmask outside,
+                                       lfloat u, lfloat v, lfloat* choice)
 {
     const int count = scene->caster_count;
     if (ORB_CASTER_SHARE <= 0.0f || count == 0) return bsdf_sample(b, wo, n, outside, u, v, choice);
-    BsdfSample s;
-    float3 f_cos;     // f |cos| of the direction, whichever strategy drew it
-    float bsdf_pdf;   // the BSDF's own density of it
-    if (choose_lobe(ORB_CASTER_SHARE, choice)) {
-        const float scaled = *choice * (float)count;
-        const int k = min((int)scaled, count - 1);
-        *choice = fmin(scaled - (float)k, 0x1.fffffep-1f);
-        SCENE_MEM const CasterRecord* c = &scene->casters[k];
-        const float3 pc = c->centre_radius.xyz - p;
-        const float distance2 = dot(pc, pc);
-        const float radius = c->centre_radius.w;
+    BsdfSample s = bsdf_no_sample();
+    lv3 f_cos = lv3_zero();          // f |cos| of the direction, whichever strategy drew it
+    lfloat bsdf_pdf = (lfloat)(0.0f);  // the BSDF's own density of it
+    lmask lost = mask_of(false);
+    const lmask aim = choose_lobe((lfloat)(ORB_CASTER_SHARE), choice);
+    if (lanes_any(aim)) {
+        const lfloat scaled = *choice * (float)count;
+        const lint k = min(to_lint(scaled), (lint)(count - 1));
+        *choice = lselect(*choice, fmin(scaled - to_lfloat(k), (lfloat)(0x1.fffffep-1f)), aim);
+        lv3 centre;
+        lfloat radius;
+        load_caster(scene, k, aim, &centre, &radius);
+        const lv3 pc = lv3_sub(centre, p);
+        const lfloat distance2 = lv3_dot(pc, pc);
         // From inside a caster this strategy has no direction to give: a
         // lost sample, which the mixture's density accounts for (that
         // caster's cone density is 0 here).
-        if (distance2 <= radius * radius) return bsdf_no_sample();
+        lost = mask_and(aim, distance2 <= radius * radius);
         // The cone as sample_light_direction (lights.cl) samples a sphere
         // light's; one shared helper for both measured 2-3% slower on PoCL,
         // which did not inline it.
-        s.wi = sample_uniform_cone(pc * rsqrt(distance2), cone_one_minus_cos(distance2, radius), u, v);
-        f_cos = bsdf_eval(b, wo, s.wi, n, outside, &bsdf_pdf);
-        s.delta = false;
+        s.wi = lv3_select(s.wi, sample_uniform_cone(lv3_scale(pc, rsqrt(distance2)), cone_one_minus_cos(distance2, radius), u, v),
+                          aim);
+        lfloat aimed_pdf;
+        f_cos = lv3_select(f_cos, bsdf_eval(b, wo, s.wi, n, outside, &aimed_pdf), aim);
+        bsdf_pdf = lselect(bsdf_pdf, aimed_pdf, aim);
+        s.delta = lselect(s.delta, mask_of(false), aim);
         // eta2 only steers the roulette's survival chance, which any value
         // keeps unbiased; the BSDF's refraction factor is not known here.
-        s.eta2 = 1.0f;
-    } else {
-        s = bsdf_sample(b, wo, n, outside, u, v, choice);
-        if (s.delta) {
-            // A delta lobe (a smooth coat) is reached only through the
-            // BSDF's share: its probability is scaled by it.
-            s.weight *= 1.0f / (1.0f - ORB_CASTER_SHARE);
-            return s;
-        }
-        bsdf_pdf = s.pdf;
-        f_cos = s.weight * s.pdf;
+        s.eta2 = lselect(s.eta2, (lfloat)(1.0f), aim);
+    }
+    const lmask own = mask_not(aim);
+    lmask delta = mask_of(false);
+    if (lanes_any(own)) {
+        lfloat own_choice = *choice;
+        BsdfSample o = bsdf_sample(b, wo, n, outside, u, v, &own_choice);
+        *choice = lselect(*choice, own_choice, own);
+        // A delta lobe (a smooth coat) is reached only through the BSDF's
+        // share: its probability is scaled by it.
+        delta = mask_and(own, o.delta);
+        o.weight = lv3_select(o.weight, lv3_scale(o.weight, 1.0f / (1.0f - ORB_CASTER_SHARE)), delta);
+        s = bsdf_sample_select(s, o, own);
+        bsdf_pdf = lselect(bsdf_pdf, o.pdf, own);
+        f_cos = lv3_select(f_cos, lv3_scale(o.weight, o.pdf), own);
     }
     // One density for both strategies, after the branch: on a GPU the two
     // sides of a warp then share this code instead of running it twice.
-    s.pdf = continuation_pdf(scene, p, bsdf_pdf, s.wi);
-    if (!(s.pdf > 0.0f)) return bsdf_no_sample();
-    s.weight = f_cos * (1.0f / s.pdf);
+    const lmask mixed = mask_not(delta);
+    if (lanes_any(mixed)) {
+        BsdfSample m = s;
+        m.pdf = continuation_pdf(scene, p, bsdf_pdf, s.wi);
+        m.weight = lv3_scale(f_cos, 1.0f / m.pdf);
+        m = bsdf_sample_select(bsdf_no_sample(), m, mask_and_not(m.pdf > 0.0f, lost));
+        s = bsdf_sample_select(s, m, mixed);
+    }
     return s;
 }

@@ -108,42 +108,72 @@ inline float3 sample_environment(const SceneView* scene, float u, float v, float
 // Next-event estimate at a point p with a density-carrying BSDF (wo towards
 // the viewer, n the normal on wo's side; the interface of kernels/bsdf.cl)
 // from the environment, chosen with probability `pick_pdf`, weighted against
-// BSDF sampling by the power heuristic. The shadow ray must escape: it may
-// hit nothing at all (light_visible with light -1).
-inline float3 estimate_environment_light(const SceneView* scene, float pick_pdf, float3 p, int self, const Bsdf* bsdf,
-                                         float3 wo, float3 n, bool outside, float u, float v)
+// BSDF sampling by the power heuristic, for the lanes in `lanes` (over lanes:
+// the map's searches lane by lane, the rest for all at once). The shadow ray
+// must escape: it may hit nothing at all (light -1).
+LANE_FN lv3 estimate_environment_light(const SceneView* scene, lfloat pick_pdf, lv3 p, lint self, const Bsdf* bsdf,
+                                       lv3 wo, lv3 n, lmask outside, lfloat u, lfloat v, lmask lanes)
 {
-    float4 texel;
-    const float3 wi = sample_environment(scene, u, v, &texel);
-    if (!(texel.w > 0.0f)) return (float3)(0.0f);
-    float bsdf_pdf;
-    const float3 f_cos = bsdf_eval(bsdf, wo, wi, n, outside, &bsdf_pdf);
+    lv3 wi = lv3_zero(), radiance = lv3_zero();
+    lfloat texel_pdf = (lfloat)(0.0f);
+    ORB_FOR_EACH_LANE(l, lanes)
+    {
+        float4 texel;
+        set_lane_v3(wi, l, sample_environment(scene, lane_f(u, l), lane_f(v, l), &texel));
+        set_lane_v3(radiance, l, texel.xyz);
+        set_lane_f(texel_pdf, l, texel.w);
+    }
+    lmask carries = mask_and(lanes, texel_pdf > 0.0f);
+    if (!lanes_any(carries)) return lv3_zero();
+    lfloat bsdf_pdf;
+    const lv3 f_cos = bsdf_eval(bsdf, wo, wi, n, outside, &bsdf_pdf);
     // Nothing to carry (below the surface, outside every lobe, or black): no shadow ray.
-    if (!(f_cos.x + f_cos.y + f_cos.z > 0.0f)) return (float3)(0.0f);
-    if (!light_visible(scene, p, wi, self, -1)) return (float3)(0.0f);
-    const float light_pdf = pick_pdf * texel.w;
-    const float weight = power_heuristic(light_pdf, continuation_pdf(scene, p, bsdf_pdf, wi));
-    return texel.xyz * f_cos * (weight / light_pdf);
+    carries = mask_and(carries, lv3_sum(f_cos) > 0.0f);
+    if (!lanes_any(carries)) return lv3_zero();
+    carries = mask_and(carries, lanes_light_visible(scene, p, wi, self, (lint)(-1), carries));
+    if (!lanes_any(carries)) return lv3_zero();
+    const lfloat light_pdf = pick_pdf * texel_pdf;
+    const lfloat weight = power_heuristic(light_pdf, continuation_pdf(scene, p, bsdf_pdf, wi));
+    return lv3_select(lv3_zero(), lv3_scale(lv3_mul(radiance, f_cos), weight / light_pdf), carries);
 }
 
-// Next-event estimate from one light of the lights table: an emissive
-// sphere, or the environment (LightRecord.sphere -1).
-inline float3 estimate_light(const SceneView* scene, int light_sphere, float pick_pdf, float3 p, int self,
-                             const Bsdf* bsdf, float3 wo, float3 n, bool outside, float u, float v)
+// Next-event estimate from one light of the lights table for each lane in
+// `lanes`: an emissive sphere, or the environment (LightRecord.sphere -1).
+LANE_FN lv3 estimate_light(const SceneView* scene, lint light_sphere, lfloat pick_pdf, lv3 p, lint self,
+                           const Bsdf* bsdf, lv3 wo, lv3 n, lmask outside, lfloat u, lfloat v, lmask lanes)
 {
-    if (ORB_ENVIRONMENT && light_sphere < 0) return estimate_environment_light(scene, pick_pdf, p, self, bsdf, wo, n, outside, u, v);
-    return estimate_direct_light(scene, light_sphere, pick_pdf, p, self, bsdf, wo, n, outside, u, v);
+    lv3 sum = lv3_zero();
+    lmask spheres = lanes;
+    if (ORB_ENVIRONMENT) {
+        const lmask environment = mask_and(lanes, light_sphere < 0);
+        spheres = mask_and_not(lanes, environment);
+        if (lanes_any(environment))
+            sum = estimate_environment_light(scene, pick_pdf, p, self, bsdf, wo, n, outside, u, v, environment);
+    }
+    if (lanes_any(spheres))
+        sum = lv3_add(sum, estimate_direct_light(scene, light_sphere, pick_pdf, p, self, bsdf, wo, n, outside, u, v,
+                                                 spheres));
+    return sum;
 }
 
-// Radiance a ray that left the scene in direction d brings back, weighted by
-// multiple importance sampling when it was sampled from a lobe with a density
-// (the other strategy being estimate_environment_light there, with the same
-// pdfs); weight 1 from the camera or after a delta lobe. `pick_pdf` is the
-// chance the light sampler picks the environment.
-inline float3 escaped_radiance(const SceneView* scene, float3 d, bool from_density, float from_pdf, float pick_pdf)
+// Radiance a ray that left the scene in direction d brings back, for the
+// lanes in `lanes`, weighted by multiple importance sampling when it was
+// sampled from a lobe with a density (the other strategy being
+// estimate_environment_light there, with the same pdfs); weight 1 from the
+// camera or after a delta lobe. `pick_pdf` is the chance the light sampler
+// picks the environment.
+LANE_FN lv3 escaped_radiance(const SceneView* scene, lv3 d, lmask from_density, lfloat from_pdf, float pick_pdf,
+                             lmask lanes)
 {
-    if (!has_environment(scene)) return (float3)(0.0f);
-    const float4 e = environment_lookup(scene, d);
-    const float weight = from_density ? power_heuristic(from_pdf, pick_pdf * e.w) : 1.0f;
-    return e.xyz * weight;
+    if (!has_environment(scene)) return lv3_zero();
+    lv3 radiance = lv3_zero();
+    lfloat pdf = (lfloat)(0.0f);
+    ORB_FOR_EACH_LANE(l, lanes)
+    {
+        const float4 e = environment_lookup(scene, lane_v3(d, l));
+        set_lane_v3(radiance, l, e.xyz);
+        set_lane_f(pdf, l, e.w);
+    }
+    const lfloat weight = lselect((lfloat)(1.0f), power_heuristic(from_pdf, pick_pdf * pdf), from_density);
+    return lv3_scale(radiance, weight);
 }

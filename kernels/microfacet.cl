@@ -12,53 +12,57 @@
 // would only add float trouble (D reaches 1 / (pi alpha^2) = 3e5).
 #define GGX_SMOOTH_ALPHA 1e-3f
 
-inline float ggx_alpha(float roughness) { return roughness * roughness; }
+LANE_FN lfloat ggx_alpha(lfloat roughness) { return roughness * roughness; }
 
-inline bool ggx_is_smooth(float alpha) { return alpha < GGX_SMOOTH_ALPHA; }
+LANE_FN lmask ggx_is_smooth(lfloat alpha) { return alpha < GGX_SMOOTH_ALPHA; }
 
 // D(m) for a unit microfacet normal m: alpha^2 / (pi (cos^2 (alpha^2 - 1) + 1)^2),
 // with cos^2 (alpha^2 - 1) + 1 written as sin^2 + alpha^2 cos^2 and sin^2 taken
 // from the cross product, which keeps its precision near the peak of a narrow lobe.
-inline float ggx_d(float alpha, float3 m, float3 n)
+LANE_FN lfloat ggx_d(lfloat alpha, lv3 m, lv3 n)
 {
-    const float cos_m = dot(m, n);
-    if (cos_m <= 0.0f) return 0.0f;
-    const float3 c = cross(m, n);
-    const float a2 = alpha * alpha;
-    const float t = dot(c, c) + a2 * cos_m * cos_m;
-    return a2 / (ORB_PI * t * t);
+    const lfloat cos_m = lv3_dot(m, n);
+    const lv3 c = lv3_cross(m, n);
+    const lfloat a2 = alpha * alpha;
+    const lfloat t = lv3_dot(c, c) + a2 * cos_m * cos_m;
+    return lselect(a2 / (ORB_PI * t * t), (lfloat)(0.0f), cos_m <= 0.0f);
 }
 
 // Smith's Lambda for GGX at |cos(theta)| = c > 0:
 // (sqrt(1 + alpha^2 tan^2) - 1) / 2 = (sqrt(c^2 + alpha^2 (1 - c^2)) / c - 1) / 2.
-inline float ggx_lambda(float alpha, float c)
+LANE_FN lfloat ggx_lambda(lfloat alpha, lfloat c)
 {
-    const float c2 = c * c;
-    return 0.5f * (sqrt(c2 + alpha * alpha * fmax(0.0f, 1.0f - c2)) / c - 1.0f);
+    const lfloat c2 = c * c;
+    return 0.5f * (sqrt(c2 + alpha * alpha * fmax((lfloat)(0.0f), 1.0f - c2)) / c - 1.0f);
 }
 
 // The visible-normal density of m seen from wo, divided by D(m) and by wo.m:
 // D_wo(m) = G1(wo) max(0, wo.m) D(m) / cos_o (Heitz 2018, eq. 1). Returned
 // factor: G1(wo) / cos_o, with G1 = 1 / (1 + Lambda).
-inline float ggx_visible_factor(float lambda_o, float cos_o) { return 1.0f / ((1.0f + lambda_o) * cos_o); }
+LANE_FN lfloat ggx_visible_factor(lfloat lambda_o, lfloat cos_o) { return 1.0f / ((1.0f + lambda_o) * cos_o); }
 
 // A microfacet normal distributed as D_wo (Heitz 2018): wo's direction in the
 // configuration stretched to alpha = 1, a point on the projected disk there,
 // and the normal unstretched. u, v uniform in [0, 1).
-inline float3 ggx_sample_visible_normal(float alpha, float3 wo, float3 n, float u, float v)
+LANE_FN lv3 ggx_sample_visible_normal(lfloat alpha, lv3 wo, lv3 n, lfloat u, lfloat v)
 {
-    float3 t, b;
+    lv3 t, b;
     orthonormal_basis(n, &t, &b);
-    const float3 vh = normalize((float3)(alpha * dot(wo, t), alpha * dot(wo, b), dot(wo, n)));
-    const float lensq = vh.x * vh.x + vh.y * vh.y;
-    const float3 t1 = lensq > 0.0f ? (float3)(-vh.y, vh.x, 0.0f) * rsqrt(lensq) : (float3)(1.0f, 0.0f, 0.0f);
-    const float3 t2 = cross(vh, t1);
-    const float r = sqrt(u);
-    const float2 cs = unit_circle(v);
-    const float p1 = r * cs.x;
-    const float s = 0.5f * (1.0f + vh.z);
-    const float p2 = (1.0f - s) * sqrt(fmax(0.0f, 1.0f - p1 * p1)) + s * (r * cs.y);
-    const float3 nh = p1 * t1 + p2 * t2 + sqrt(fmax(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
-    const float3 m_local = normalize((float3)(alpha * nh.x, alpha * nh.y, fmax(1e-7f, nh.z)));
-    return m_local.x * t + m_local.y * b + m_local.z * n;
+    const lv3 vh = lv3_normalize(lv3_make(alpha * lv3_dot(wo, t), alpha * lv3_dot(wo, b), lv3_dot(wo, n)));
+    const lfloat lensq = vh.x * vh.x + vh.y * vh.y;
+    const lfloat inv_len = rsqrt(lensq);
+    const lmask tilted = lensq > 0.0f;
+    const lv3 t1 = lv3_make(lselect((lfloat)(1.0f), -vh.y * inv_len, tilted), lselect((lfloat)(0.0f), vh.x * inv_len, tilted),
+                            (lfloat)(0.0f));
+    const lv3 t2 = lv3_cross(vh, t1);
+    const lfloat r = sqrt(u);
+    lfloat cs_x, cs_y;
+    lanes_unit_circle(v, &cs_x, &cs_y);
+    const lfloat p1 = r * cs_x;
+    const lfloat s = 0.5f * (1.0f + vh.z);
+    const lfloat p2 = (1.0f - s) * sqrt(fmax((lfloat)(0.0f), 1.0f - p1 * p1)) + s * (r * cs_y);
+    const lv3 nh = lv3_add(lv3_add(lv3_scale(t1, p1), lv3_scale(t2, p2)),
+                           lv3_scale(vh, sqrt(fmax((lfloat)(0.0f), 1.0f - p1 * p1 - p2 * p2))));
+    const lv3 m_local = lv3_normalize(lv3_make(alpha * nh.x, alpha * nh.y, fmax((lfloat)(1e-7f), nh.z)));
+    return lv3_add(lv3_add(lv3_scale(t, m_local.x), lv3_scale(b, m_local.y)), lv3_scale(n, m_local.z));
 }

@@ -40,8 +40,8 @@
 #endif
 
 // The integer functions of this file are written once as definitions over
-// a type T (uint here; uint16 and the like in integrator_simd.cl, whose lanes
-// must draw exactly these numbers), with the function's qualifiers Q.
+// a type T (uint here; the lanes' luint below, whose lanes must draw exactly these
+// numbers), with the function's qualifiers Q.
 #define ORB_DEFINE_REVERSE_BITS_SHIFTS(Q, T, name)                    \
     Q T name(T x)                                                     \
     {                                                                 \
@@ -114,41 +114,59 @@ ORB_DEFINE_MIX32(inline, uint, mix32)
     }
 ORB_DEFINE_SOBOL_DIMENSION1_REVERSED(inline, uint, sobol_dimension1_reversed)
 
-inline float scrambled_unit(uint bits) { return (float)(bits >> 8) * 0x1p-24f; }
-
-// Owen scrambling of the sample index, given reversed: a random order of the
-// samples within every aligned power-of-two block.
-inline uint shuffled_index(uint i_reversed, uint seed) { return reverse_bits32(lk_permutation(i_reversed, seed)); }
-
-// Where one camera path's numbers come from: set once when the path starts.
-typedef struct {
-    uint pixel;
-    ulong sample;
-    uint2 seed;
-#if ORB_SAMPLER_SOBOL
-    uint key;         // every Sobol seed of this sample derives from it (below)
-    uint i_reversed;  // the sample index, low 32 bits, bit-reversed
+// The same functions over the lanes' luint (at width 1 the names above).
+#if ORB_LANES == 1
+#define lanes_reverse_bits reverse_bits32
+#define lanes_lk_permutation lk_permutation
+#define lanes_mix32 mix32
+#define lanes_sobol_dimension1_reversed sobol_dimension1_reversed
+#define lanes_philox4x32 philox4x32_words
+#define lanes_philox_units philox_units
+#else
+ORB_DEFINE_REVERSE_BITS_SHIFTS(LANE_FN, luint, lanes_reverse_bits)
+ORB_DEFINE_LK_PERMUTATION(LANE_FN, luint, lanes_lk_permutation)
+ORB_DEFINE_MIX32(LANE_FN, luint, lanes_mix32)
+ORB_DEFINE_SOBOL_DIMENSION1_REVERSED(LANE_FN, luint, lanes_sobol_dimension1_reversed)
+ORB_DEFINE_PHILOX4X32(LANE_FN, luint, lanes_philox4x32)
+#define ORB_LFLOAT_OF_LUINT(x) to_lfloat(x)
+ORB_DEFINE_PHILOX_UNITS(LANE_FN, luint, lfloat, ORB_LFLOAT_OF_LUINT, lanes_philox_units)
 #endif
-} SampleCoords;
 
-// A hash of (pixel, seed), computed once per work-item and pass: Philox is
-// a good hash but costs about as much as a whole Sobol pair, so it is not
-// run per sample or per block.
+LANE_FN lfloat scrambled_units(luint bits) { return to_lfloat(bits >> 8) * 0x1p-24f; }
+
+// A hash of (pixel, seed), computed once per pixel and pass: Philox is a
+// good hash but costs about as much as a whole Sobol pair, so it is not run
+// per sample or per block.
 inline uint sampler_pixel_key(uint pixel, uint2 seed)
 {
     return philox4x32((uint4)(0x536f626cu, pixel, 0x9e3779b9u, pixel ^ 0x85ebca6bu), seed).x;
 }
 
-inline SampleCoords sample_coords(uint pixel_key, uint pixel, ulong sample, uint2 seed)
+// Where each lane's camera path takes its numbers from: set when the path
+// starts. The sample index is held as two 32-bit halves.
+typedef struct {
+    luint pixel;
+    luint sample_lo, sample_hi;
+    uint2 seed;
+#if ORB_SAMPLER_SOBOL
+    luint key;         // every Sobol seed of this sample derives from it (below)
+    luint i_reversed;  // the sample index, low 32 bits, bit-reversed
+#endif
+} SampleCoords;
+
+// Sample first + index of each lane's pixel (pixel_key: sampler_pixel_key).
+LANE_FN SampleCoords sample_coords(luint pixel_key, luint pixel, uint first_lo, uint first_hi, luint index,
+                                   uint2 seed)
 {
     SampleCoords c;
     c.pixel = pixel;
-    c.sample = sample;
+    c.sample_lo = (luint)(first_lo) + index;
+    c.sample_hi = (luint)(first_hi) + lselect((luint)(0u), (luint)(1u), c.sample_lo < (luint)(first_lo));
     c.seed = seed;
 #if ORB_SAMPLER_SOBOL
     // Per 2^32 samples a new key, so indices past 2^32 do not repeat points.
-    c.key = mix32(pixel_key ^ ((uint)(sample >> 32) * 0x632be5abu));
-    c.i_reversed = reverse_bits32((uint)sample);
+    c.key = lanes_mix32(pixel_key ^ (c.sample_hi * 0x632be5abu));
+    c.i_reversed = lanes_reverse_bits(c.sample_lo);
 #endif
     return c;
 }
@@ -160,23 +178,30 @@ inline SampleCoords sample_coords(uint pixel_key, uint pixel, ulong sample, uint
 // time; an independent block is one Philox call for all five.
 typedef struct {
 #if ORB_SAMPLER_SOBOL
-    bool sobol;
-    uint key, i_reversed, block;
+    lmask sobol;  // lanes whose block draws Sobol points
+    luint key, i_reversed, block;
 #endif
-    Rand5 independent;
+    lfloat u0, u1, u2, u3, u4;  // the independent numbers (lanes not sobol)
 } RandBlock;
 
-inline RandBlock rand_block(const SampleCoords* c, uint block)
+// Block `block` for the lanes in `lanes` (the others' numbers are not used).
+LANE_FN RandBlock rand_block(const SampleCoords* c, luint block, lmask lanes)
 {
     RandBlock r;
+    r.u0 = r.u1 = r.u2 = r.u3 = r.u4 = (lfloat)(0.5f);
+    lmask independent = lanes;
 #if ORB_SAMPLER_SOBOL
-    r.sobol = block < ORB_SOBOL_BLOCKS;
+    r.sobol = block < (luint)(ORB_SOBOL_BLOCKS);
     r.key = c->key;
     r.i_reversed = c->i_reversed;
     r.block = block;
-    if (r.sobol) return r;
+    independent = mask_and_not(lanes, r.sobol);
 #endif
-    r.independent = philox_block(c->pixel, c->sample, block, c->seed);
+    if (lanes_any(independent)) {
+        luint c0 = block, c1 = c->sample_lo, c2 = c->sample_hi, c3 = c->pixel;
+        lanes_philox4x32(&c0, &c1, &c2, &c3, c->seed);
+        lanes_philox_units(c0, c1, c2, c3, &r.u0, &r.u1, &r.u2, &r.u3, &r.u4);
+    }
     return r;
 }
 
@@ -184,7 +209,17 @@ inline RandBlock rand_block(const SampleCoords* c, uint block)
 // Seed number `slot` (0..7) of a block: a different 32-bit hash for every
 // (pixel, seed, sample >> 32, block, slot). Slots 0-2 belong to pair 0,
 // 3-5 to pair 1, 6-7 to the fifth number.
-inline uint block_seed(uint key, uint block, uint slot) { return mix32(key ^ ((block * 8u + slot) * 0x9e3779b9u)); }
+LANE_FN luint block_seed(luint key, luint block, uint slot)
+{
+    return lanes_mix32(key ^ ((block * 8u + slot) * 0x9e3779b9u));
+}
+
+// Owen scrambling of the sample index, given reversed: a random order of the
+// samples within every aligned power-of-two block.
+LANE_FN luint shuffled_index(luint i_reversed, luint seed)
+{
+    return lanes_reverse_bits(lanes_lk_permutation(i_reversed, seed));
+}
 
 // One scrambled 2D Sobol point: the sample index in this pair's own random
 // order (an Owen scramble of the index: a random order within every aligned
@@ -194,56 +229,67 @@ inline uint block_seed(uint key, uint block, uint slot) { return mix32(key ^ ((b
 // 0 of j is reverse(j), so both are formed reversed and reversed once.
 // (Scalar arguments, not the RandBlock: where PoCL does not inline this, a
 // struct passed by address went through memory and stalled the caller.)
-inline float2 sobol_pair(uint key, uint i_reversed, uint block, uint pair)
+LANE_FN void sobol_pair(luint key, luint i_reversed, luint block, uint pair, lfloat* u, lfloat* v)
 {
     const uint slot = 3u * pair;
-    const uint j = shuffled_index(i_reversed, block_seed(key, block, slot));
-    return (float2)(scrambled_unit(reverse_bits32(lk_permutation(j, block_seed(key, block, slot + 1u)))),
-                    scrambled_unit(reverse_bits32(
-                        lk_permutation(sobol_dimension1_reversed(j), block_seed(key, block, slot + 2u)))));
+    const luint j = shuffled_index(i_reversed, block_seed(key, block, slot));
+    *u = scrambled_units(lanes_reverse_bits(lanes_lk_permutation(j, block_seed(key, block, slot + 1u))));
+    *v = scrambled_units(lanes_reverse_bits(
+        lanes_lk_permutation(lanes_sobol_dimension1_reversed(j), block_seed(key, block, slot + 2u))));
 }
 
 // A van der Corput point of the index in its own random order, scrambled.
-inline float sobol_single(uint key, uint i_reversed, uint block)
+LANE_FN lfloat sobol_single(luint key, luint i_reversed, luint block)
 {
-    const uint j = shuffled_index(i_reversed, block_seed(key, block, 6u));
-    return scrambled_unit(reverse_bits32(lk_permutation(j, block_seed(key, block, 7u))));
+    const luint j = shuffled_index(i_reversed, block_seed(key, block, 6u));
+    return scrambled_units(lanes_reverse_bits(lanes_lk_permutation(j, block_seed(key, block, 7u))));
 }
 #endif
 
 // Pair 0 is (u0, u1): the light sample at a scattering event (u0 first picks
 // the light), the pixel jitter for the camera. Pair 1 is (u2, u3): the BSDF
-// direction, the lens position for the camera.
-inline float2 rand_pair(const RandBlock* r, uint pair)
+// direction, the lens position for the camera. For the lanes in `lanes`.
+LANE_FN void rand_pair(const RandBlock* r, uint pair, lmask lanes, lfloat* u, lfloat* v)
 {
+    *u = pair == 0u ? r->u0 : r->u2;
+    *v = pair == 0u ? r->u1 : r->u3;
 #if ORB_SAMPLER_SOBOL
-    if (r->sobol) return sobol_pair(r->key, r->i_reversed, r->block, pair);
+    if (lanes_any(mask_and(lanes, r->sobol))) {
+        lfloat su, sv;
+        sobol_pair(r->key, r->i_reversed, r->block, pair, &su, &sv);
+        *u = lselect(*u, su, r->sobol);
+        *v = lselect(*v, sv, r->sobol);
+    }
 #endif
-    return pair == 0u ? (float2)(r->independent.u0, r->independent.u1)
-                      : (float2)(r->independent.u2, r->independent.u3);
 }
 
 // u4: picks a BSDF lobe, and then (rescaled) decides the Russian roulette.
-inline float rand_single(const RandBlock* r)
+LANE_FN lfloat rand_single(const RandBlock* r, lmask lanes)
 {
+    lfloat u = r->u4;
 #if ORB_SAMPLER_SOBOL
-    if (r->sobol) return sobol_single(r->key, r->i_reversed, r->block);
+    if (lanes_any(mask_and(lanes, r->sobol))) u = lselect(u, sobol_single(r->key, r->i_reversed, r->block), r->sobol);
 #endif
-    return r->independent.u4;
+    return u;
 }
 
-// All five numbers of a block at once (the sampler tests and BSDF probes;
-// the integrator asks for what it uses).
+// All five numbers of a block at once, for one pixel (the sampler tests
+// and BSDF probes; the integrator asks for what it uses).
 inline Rand5 rng_block(uint pixel, ulong sample, uint block, uint2 seed)
 {
-    const SampleCoords c = sample_coords(sampler_pixel_key(pixel, seed), pixel, sample, seed);
-    const RandBlock r = rand_block(&c, block);
-    const float2 a = rand_pair(&r, 0u), b = rand_pair(&r, 1u);
+    const SampleCoords c = sample_coords((luint)(sampler_pixel_key(pixel, seed)), (luint)(pixel), (uint)sample,
+                                         (uint)(sample >> 32), (luint)(0u), seed);
+    const lmask all_lanes = mask_of(true);
+    const RandBlock r = rand_block(&c, (luint)(block), all_lanes);
+    lfloat u0, u1, u2, u3, u4;
+    rand_pair(&r, 0u, all_lanes, &u0, &u1);
+    rand_pair(&r, 1u, all_lanes, &u2, &u3);
+    u4 = rand_single(&r, all_lanes);
     Rand5 out;
-    out.u0 = a.x;
-    out.u1 = a.y;
-    out.u2 = b.x;
-    out.u3 = b.y;
-    out.u4 = rand_single(&r);
+    out.u0 = lane_f(u0, 0);
+    out.u1 = lane_f(u1, 0);
+    out.u2 = lane_f(u2, 0);
+    out.u3 = lane_f(u3, 0);
+    out.u4 = lane_f(u4, 0);
     return out;
 }

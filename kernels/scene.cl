@@ -6,6 +6,11 @@
 // ORB_UNIFORM_LIGHTS is 1 when every light has the same power (one light,
 // say): the host then builds the program to pick lights uniformly, which is
 // what the alias table would do, without reading it.
+//
+// At width > 1, above this many records a table is read lane by lane;
+// below it, one select per record that any lane names (fewer memory reads
+// and no spill of the lanes to memory).
+#define ORB_LANES_SELECT_GATHER_MAX 64
 
 // One pointer per scene table of render_pass's argument list, plus the
 // tables' lengths; generated from the list so that a new table needs no edit here.
@@ -23,33 +28,77 @@ typedef struct {
     EnvironmentParams environment;  // width 0: none
 } SceneView;
 
-// A hit sphere with its material, unpacked for shading.
+// Hit spheres with their materials, unpacked for shading: one per lane.
 typedef struct {
-    float3 centre;
-    float radius;
-    float3 emission;
+    lv3 centre;
+    lfloat radius;
+    lv3 emission;
     Bsdf bsdf;
+    lfloat light_probability;  // the light sampler's chance of picking the sphere
 } ShadingSphere;
 
+// One material record in every lane (the BSDF probes of the tests).
 inline Bsdf load_bsdf(SCENE_MEM const MaterialRecord* m)
 {
     Bsdf b;
-    b.color = m->color.xyz;
-    b.kind = m->kind;
-    b.ior = m->ior;
-    b.roughness = m->roughness;
-    b.metallic = m->metallic;
+    b.color = lv3_splat(m->color.xyz);
+    b.kind = (lint)(m->kind);
+    b.ior = (lfloat)(m->ior);
+    b.roughness = (lfloat)(m->roughness);
+    b.metallic = (lfloat)(m->metallic);
     return b;
 }
 
-inline ShadingSphere load_sphere(const SceneView* scene, int id)
+// Lane l of *s becomes sphere slot `id`.
+#define ORB_SET_SPHERE_LANE(s, l, scene, id)                                               \
+    do {                                                                                   \
+        SCENE_MEM const SphereRecord* record_ = &(scene)->spheres[id];                     \
+        SCENE_MEM const MaterialRecord* material_ = &(scene)->materials[record_->material]; \
+        const float4 centre_radius_ = record_->centre_radius;                              \
+        set_lane_v3((s).centre, l, centre_radius_.xyz);                                    \
+        set_lane_f((s).radius, l, centre_radius_.w);                                       \
+        set_lane_v3((s).emission, l, material_->emission.xyz);                             \
+        set_lane_v3((s).bsdf.color, l, material_->color.xyz);                              \
+        set_lane_i((s).bsdf.kind, l, material_->kind);                                     \
+        set_lane_f((s).bsdf.ior, l, material_->ior);                                       \
+        set_lane_f((s).bsdf.roughness, l, material_->roughness);                           \
+        set_lane_f((s).bsdf.metallic, l, material_->metallic);                             \
+        set_lane_f((s).light_probability, l, record_->light_probability);                  \
+    } while (0)
+
+// Sphere slot id of each lane in `lanes`; the other lanes get no material
+// (kind -1), so no BSDF runs for them.
+LANE_FN ShadingSphere load_sphere(const SceneView* scene, lint id, lmask lanes)
 {
-    const float4 centre_radius = scene->spheres[id].centre_radius;
-    SCENE_MEM const MaterialRecord* m = &scene->materials[scene->spheres[id].material];
     ShadingSphere s;
-    s.centre = centre_radius.xyz;
-    s.radius = centre_radius.w;
-    s.emission = m->emission.xyz;
-    s.bsdf = load_bsdf(m);
+#if ORB_LANES == 1
+    ORB_SET_SPHERE_LANE(s, 0, scene, id);
+#else
+    s.centre = s.emission = s.bsdf.color = lv3_zero();
+    s.radius = s.bsdf.ior = (lfloat)(1.0f);
+    s.bsdf.roughness = s.bsdf.metallic = s.light_probability = (lfloat)(0.0f);
+    s.bsdf.kind = (lint)(-1);
+    if (scene->sphere_count > ORB_LANES_SELECT_GATHER_MAX) {
+        ORB_FOR_EACH_LANE(l, lanes) ORB_SET_SPHERE_LANE(s, l, scene, lane_i(id, l));
+        return s;
+    }
+    // Few spheres: one select per sphere the lanes name.
+    for (int i = 0; i < scene->sphere_count; ++i) {
+        const lmask m = mask_and(lanes, id == i);
+        if (!lanes_any(m)) continue;
+        SCENE_MEM const SphereRecord* r = &scene->spheres[i];
+        SCENE_MEM const MaterialRecord* material = &scene->materials[r->material];
+        const float4 cr = r->centre_radius;
+        s.centre = lv3_select(s.centre, lv3_splat(cr.xyz), m);
+        s.radius = lselect(s.radius, (lfloat)(cr.w), m);
+        s.emission = lv3_select(s.emission, lv3_splat(material->emission.xyz), m);
+        s.bsdf.color = lv3_select(s.bsdf.color, lv3_splat(material->color.xyz), m);
+        s.bsdf.kind = lselect(s.bsdf.kind, (lint)(material->kind), m);
+        s.bsdf.ior = lselect(s.bsdf.ior, (lfloat)(material->ior), m);
+        s.bsdf.roughness = lselect(s.bsdf.roughness, (lfloat)(material->roughness), m);
+        s.bsdf.metallic = lselect(s.bsdf.metallic, (lfloat)(material->metallic), m);
+        s.light_probability = lselect(s.light_probability, (lfloat)(r->light_probability), m);
+    }
+#endif
     return s;
 }

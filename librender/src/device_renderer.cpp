@@ -28,11 +28,10 @@ int nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
     return scene.counts.packet_count <= 2 ? 96 : 72;
 }
 
-// The lanes of render_pass_simd (kernels/integrator_simd.cl) on this device,
-// or 0 for render_pass. CPUs only: a GPU already runs work-items in its
-// lanes. The device's native float vector width: 16 with AVX-512, 8 with
-// AVX2. Every scene: what the vector code lacks (pbr, rough glass, trees,
-// environment maps) runs lane by lane through render_pass's functions.
+// The camera paths per work-item of render_pass (ORB_LANES, kernels/lanes.cl)
+// on this device beyond one, or 0 for one. CPUs only: a GPU already runs
+// work-items in its lanes. The device's native float vector width: 16 with
+// AVX-512, 8 with AVX2.
 int simd_lanes(const DeviceInfo& info, const cl::Device& device, const DevelopmentKnobs& knobs)
 {
     if (info.is_gpu) return 0;
@@ -162,7 +161,7 @@ void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraPar
     const cl::Program& program = session_->program(build_options(scene));
     try {
         if (&program != program_) {
-            kernel_ = cl::Kernel(program, simd_lanes_ > 0 ? "render_pass_simd" : "render_pass");
+            kernel_ = cl::Kernel(program, "render_pass");
             program_ = &program;
             kernel_prepared_ = false;
             choose_work_sizes();
@@ -213,7 +212,7 @@ void DeviceRenderer::choose_work_sizes()
     // One work-item per pixel. GPUs: 16x8 tiles keep a warp on neighbouring
     // pixels, whose paths stay coherent. CPUs (PoCL runs a work-group as a
     // loop on one core): short rows give the scheduler many groups to share.
-    // render_pass_simd: one work-item per simd_lanes_ pixels of a row.
+    // With lanes: one work-item per simd_lanes_ pixels of a row.
     const bool gpu = device().is_gpu;
     size_t lx = gpu ? 16 : 8, ly = gpu ? 8 : 1;
     if (simd_lanes_ > 0) lx = 1, ly = 1;

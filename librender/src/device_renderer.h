@@ -35,7 +35,7 @@ void choose_traversal(const DeviceInfo& device, const SceneLayout& scene, device
 std::string with_development_options(std::string options, const DevelopmentKnobs& knobs);
 
 // The features render_pass is built with for `scene` under `config` on the
-// session's device (render_pass_simd with `simd_lanes` > 0): where the scene
+// session's device (`simd_lanes` > 0: that many ORB_LANES): where the scene
 // lives, the traversal, only the code the scene and the film use, the lanes.
 device::KernelFeatures render_features(DeviceSession& session, const SceneLayout& scene, const RenderConfig& config,
                                        int simd_lanes);
@@ -94,7 +94,7 @@ private:
     const cl::Program* program_ = nullptr;
     bool kernel_prepared_ = false;  // prepare_kernel() has run for program_
     cl::Kernel kernel_;
-    int simd_lanes_ = 0;  // > 0: kernel_ is render_pass_simd with this many lanes
+    int simd_lanes_ = 0;  // > 0: kernel_ has this many lanes (ORB_LANES)
     SceneBuffers scene_buffers_;
     std::uint64_t scene_bytes_ = 0;
     device::RenderPassParams params_{};

@@ -194,7 +194,7 @@ INSTANTIATE_TEST_SUITE_P(Lights, PlaneUnderSphereLight,
                                            PlaneCase{2.0, 2.5, IntegratorMode::Global, nullptr},
                                            PlaneCase{1.0, 4.0, IntegratorMode::Direct, nullptr},
                                            // The CPU's kernels one by one (the default above is
-                                           // render_pass_simd with the device's width on PoCL).
+                                           // the device's lane width on PoCL).
                                            PlaneCase{0.1, 5.0, IntegratorMode::Global, "0"},
                                            PlaneCase{0.1, 5.0, IntegratorMode::Global, "4"},
                                            PlaneCase{0.1, 5.0, IntegratorMode::Global, "8"},

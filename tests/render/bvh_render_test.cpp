@@ -62,7 +62,7 @@ void expect_same_with_and_without_tree(const Scene& scene, const char* cl_option
         RenderConfig without = with;
         without.use_bvh = false;
         // Both with render_pass: without a tree the CPU would otherwise render
-        // with render_pass_simd, whose rounding differs (simd_kernel_test.cpp).
+        // with lanes, whose rounding differs (simd_kernel_test.cpp).
         const Film a = render_with_simd_lanes(scene, with, {4}, "0"), b = render_with_simd_lanes(scene, without, {4}, "0");
         expect_identical(a.radiance, b.radiance, "radiance");
         expect_identical(a.direct, b.direct, "direct");
@@ -129,7 +129,7 @@ TEST(BvhRender, LeafRunsNameExactlyTheLeavesOfAllLeafNodes) {
 }
 
 // GPUs build the kernels with one-sphere-at-a-time intersection
-// (ORB_SCALAR_TRAVERSAL); its traversal must find the same spheres too. Run
+// (ORB_SCALAR_TRAVERSAL, ORB_DRAW_ALL_NUMBERS); its traversal must find the same spheres too. Run
 // here on PoCL through the development knob ORB_CL_OPTIONS.
 void expect_same_with_and_without_tree_in_gpu_traversal(int warp_vote) {
     const Scene scene = cloud_scene(300, 5);

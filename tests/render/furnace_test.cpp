@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // The same lossless balls lit by a uniform environment instead of the
 // enclosure (the environment's next-event estimates, its MIS at escaped
-// rays): on PoCL these render with render_pass_simd, the enclosure's too.
+// rays): on PoCL these render with the device's lanes, the enclosure's too.
 TEST(LosslessBallUnderTheEnvironment, LooksExactlyLikeTheEnvironment)
 {
     for (const ExactCase& c : {ExactCase{"diffuse", {MaterialType::Diffuse}, IntegratorMode::Global},

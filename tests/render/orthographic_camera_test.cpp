@@ -66,7 +66,7 @@ int uncertain_pixels(double inner, double outer)
 // Four standard deviations of mean_coverage's bound (see the top of the file).
 double coverage_tolerance(int uncertain) { return 4.0 * std::sqrt(uncertain * kSpp / 4.0) / (double(kSpp) * kWidth * kHeight); }
 
-// The scalar kernel (render_pass) and the CPU's SIMD kernel (render_pass_simd) each.
+// One path per work-item (as on GPUs) and the CPU's lanes each.
 const char* const kKernels[] = {"0", "16"};
 
 TEST(OrthographicCamera, CoverageOfASphereIsItsAreaOverTheViewsAtEveryDistance)

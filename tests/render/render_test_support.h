@@ -40,10 +40,10 @@ Film render_with_cl_options(const Scene& scene, const RenderConfig& config, cons
 // from the defaults (device::kernel_feature_options).
 device::KernelFeatures gpu_traversal(const Scene& scene, int warp_vote = 0);
 
-// Renders as render() with the CPU kernel's lanes chosen (the development knob
-// ORB_SIMD_LANES): "0" renders with render_pass, "4", "8" or "16" with
-// render_pass_simd of that width where the scene is one it covers; nullptr:
-// the device's default.
+// The same with the CPU kernel's lanes chosen (the development knob
+// ORB_SIMD_LANES): "0" renders one path per work-item (ORB_LANES=1, as on
+// GPUs), "4", "8" or "16" that many per work-item; nullptr: the device's
+// default.
 Film render_with_simd_lanes(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
                             const char* lanes);
 
@@ -78,7 +78,7 @@ void expect_same_up_to_rounding(const std::vector<float>& a, const std::vector<f
 void expect_same_films_up_to_rounding(const Film& a, const Film& b);
 
 // Two kernels that render the same paths of the same samples (render_pass
-// and render_pass_simd): only where float
+// at two lane widths): only where float
 // rounding differs (fused multiply-adds, a reciprocal square root for a
 // normalize) can a path take another branch near an edge or a roulette
 // threshold. Expects at most a tenth of the values `a` and `b` (sums of a

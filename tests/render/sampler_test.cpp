@@ -35,7 +35,7 @@ public:
         queue_ = cl::CommandQueue(context_, device_);
         std::string source = device::kernel_feature_defaults();
         for (const char* file : {"include/orb/kernels/film_channels.h", "include/orb/kernels/material_kinds.h",
-                                 "include/orb/kernels/device_types.h", "rng.cl", "sampler.cl"})
+                                 "include/orb/kernels/device_types.h", "lanes.cl", "rng.cl", "sampler.cl"})
             source += std::string(kernels::find_embedded_kernel(file)) + "\n";
         source += R"(
 __kernel void probe(__global float* out, uint first_pixel, uint first_lo, uint first_hi, int samples, uint block,

@@ -1,14 +1,15 @@
-// render_pass_simd (kernels/integrator_simd.cl) against render_pass: the CPU
-// kernel with paths in SIMD lanes draws the same numbers for each pixel,
-// sample and vertex and follows the same estimator, so the two render the
-// same paths. Only where float rounding differs (fused multiply-adds, a
+// render_pass built with camera paths in SIMD lanes (ORB_LANES 4, 8 or 16,
+// kernels/lanes.cl: PoCL's default) against the same text built for one
+// path per work-item (ORB_LANES=1, what GPUs run): each lane draws the same
+// numbers for each pixel, sample and vertex and follows the same estimator,
+// so the two render the same paths. Only where float rounding differs (fused multiply-adds, a
 // reciprocal square root for a normalize) can a path take another branch
 // near an edge or a roulette threshold. The checks: most values agree up to
 // rounding, the centre-ray channels exactly, and the two images agree in
 // the mean within the standard error of their paired differences (no bias
 // between the kernels). The closed forms of analytic_test.cpp run with each
 // lane width as well (PlaneUnderSphereLight), and furnace_test.cpp's
-// environment furnaces run with render_pass_simd on PoCL.
+// environment furnaces run with the device's lanes on PoCL.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,9 +55,9 @@ double total_radiance(const Film& film)
     return total;
 }
 
-// Renders `scene` with render_pass_simd (`lanes`; nullptr: the device's
-// default) and with render_pass, requires a lit image and the same paths,
-// and gives back the render_pass_simd film.
+// Renders `scene` with `lanes` lanes (nullptr: the device's default) and
+// with one, requires a lit image and the same paths, and gives back the
+// film of the lanes.
 Film render_both_expecting_same_paths(const Scene& scene, const RenderConfig& config, const std::vector<int>& passes,
                                       const char* lanes, const std::string& what)
 {
@@ -68,7 +69,7 @@ Film render_both_expecting_same_paths(const Scene& scene, const RenderConfig& co
 }
 
 
-// Every branch of render_pass_simd; 37 pixels per row leave the last
+// Every branch of the path tracer; 37 pixels per row leave the last
 // work-item's lanes partly outside the image.
 TEST(SimdKernel, SamePathsAsRenderPassOnEveryBranch)
 {
@@ -77,8 +78,8 @@ TEST(SimdKernel, SamePathsAsRenderPassOnEveryBranch)
     render_both_expecting_same_paths(scene, config, {3, 13}, "16", "every branch");
 }
 
-// The orthographic camera, through a thin lens and as a pinhole:
-// v_begin_camera_paths restates camera_ray's parallel rays.
+// The orthographic camera, through a thin lens and as a pinhole: camera_ray's
+// parallel rays over lanes.
 TEST(SimdKernel, SamePathsAsRenderPassWithAnOrthographicCamera)
 {
     Scene scene = every_branch_scene();
@@ -172,7 +173,7 @@ TEST(SimdKernel, EveryWidthRendersTheSamePaths)
     }
 }
 
-// Passes, resumes and slices split samples the same way as in render_pass:
+// Passes, resumes and slices split samples the same way as at width 1:
 // one pass of 16 and passes of 1, 7 and 8 hold the same samples.
 TEST(SimdKernel, PassSplitsDoNotChangeTheImage)
 {
@@ -194,8 +195,8 @@ TEST(SimdKernel, SamePathsAsRenderPassInDirectMode)
 }
 
 // pbr spheres (a rough metal, a rough plastic, a smooth metal) and a rough
-// glass ball: their lanes take render_pass's BSDF interface one by one,
-// beside the vector code's diffuse and mirror lanes.
+// glass ball beside diffuse, mirror and smooth glass: every row of the
+// material table, dispatched by kind among the lanes (kernels/bsdf.cl).
 TEST(SimdKernel, SamePathsAsRenderPassWithPbrAndRoughGlass)
 {
     Scene scene = every_branch_scene();
