@@ -115,8 +115,8 @@ TEST(DevelopmentKnobs, TheObserverSeesEveryPassAndItsEndWhenAsked)
     EXPECT_TRUE(finished[0].finished && finished[1].finished);
 }
 
-// ORB_SIMD_LANES: 4 and 8 give render_pass_simd of that width (one
-// work-item per that many pixels of a row), 0 gives render_pass.
+// ORB_SIMD_LANES: 4 and 8 build render_pass with that many lanes (one
+// work-item per that many pixels of a row), 0 with one.
 TEST(DevelopmentKnobs, SimdLanesPickTheKernelAndItsWidth)
 {
     if (device_is_gpu()) GTEST_FAIL() << "these tests expect PoCL's CPU device";
@@ -125,7 +125,7 @@ TEST(DevelopmentKnobs, SimdLanesPickTheKernelAndItsWidth)
         config.development.simd_lanes = lanes;
         const std::vector<SeenPass> passes = observed_passes(config);
         ASSERT_FALSE(passes.empty());
-        EXPECT_EQ(passes[0].kernel, "render_pass_simd") << lanes;
+        EXPECT_EQ(passes[0].kernel, "render_pass") << lanes;
         EXPECT_TRUE(has_option(passes[0].options, "-DORB_LANES=" + std::to_string(lanes)))
             << passes[0].options;
         EXPECT_EQ(passes[0].global_x, static_cast<std::size_t>(40 / lanes)) << lanes;  // local size 1x1

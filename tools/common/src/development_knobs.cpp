@@ -36,7 +36,7 @@ int parse_simd_lanes(const std::string& text)
 {
     const std::optional<unsigned long> lanes = parse_count(text);
     if (!lanes || (*lanes != 0 && *lanes != 4 && *lanes != 8 && *lanes != 16))
-        malformed("ORB_SIMD_LANES", text, "0 (render_pass), 4, 8 or 16 (render_pass_simd's lanes)");
+        malformed("ORB_SIMD_LANES", text, "0 (one path per work-item), 4, 8 or 16 (lanes)");
     return static_cast<int>(*lanes);
 }
 

@@ -61,7 +61,7 @@
     FEATURE(ORB_FILM_CHANNELS_BUILT, film_channels_built, Uint, 0xffffffffu,                                          \
             "bit k: the film channel k is computed (film_channels.h); the others stay at their clear value")          \
     FEATURE(ORB_LANES, lanes, Int, 1,                                                                                 \
-            "camera paths per work-item: 1, or 4, 8 or 16 vector lanes on CPUs (integrator_simd.cl)")                 \
+            "camera paths per work-item: 1, or 4, 8 or 16 vector lanes on CPUs (lanes.cl)")                         \
     FEATURE(ORB_TRACE_KERNEL, trace_kernel, Bool, 0, "the trace_rays kernel (trace_rays.cl, ray casting alone)")      \
     FEATURE(ORB_BVH_CHECK, bvh_check, Bool, 0,                                                                        \
             "development: check every index the traversal reads and printf the first violation")                     \

@@ -34,13 +34,13 @@ struct DevelopmentKnobs {
     // so that its -D definitions win over the renderer's (variants such as
     // -DORB_SCALAR_TRAVERSAL=1 on a CPU, register caps, debug counters).
     std::string cl_options;
-    // ORB_SIMD_LANES: the lanes of render_pass_simd on CPUs, 4, 8 or 16, or
-    // 0 for the one-pixel render_pass. Unset: the device's native float
-    // vector width. GPUs always run render_pass.
+    // ORB_SIMD_LANES: render_pass's camera paths per work-item on CPUs
+    // (ORB_LANES), 4, 8 or 16, or 0 for one, as on GPUs. Unset: the
+    // device's native float vector width. GPUs always run one.
     std::optional<int> simd_lanes;
     // ORB_LOCAL_SIZE=XxY: render_pass's work-group shape, for tuning
     // (halved while it exceeds what the kernel allows on the device). Unset:
-    // 16x8 on GPUs, 8x1 on CPUs, 1x1 for render_pass_simd.
+    // 16x8 on GPUs, 8x1 on CPUs, 1x1 with lanes.
     std::optional<LocalSize> local_size;
     // ORB_REFIT_COST_LIMIT: an animation keeps refitting its BVH while the
     // tree's SAH cost stays within this multiple of its built cost, whatever
