@@ -99,7 +99,7 @@ TEST(DevelopmentKnobsParser, AMalformedValueNamesTheVariableAndWhatWasExpected)
 
     const std::string lanes = refusal({{"ORB_SIMD_LANES", "6"}});
     EXPECT_NE(lanes.find("ORB_SIMD_LANES='6'"), std::string::npos) << lanes;
-    EXPECT_NE(lanes.find("0 (render_pass), 4, 8 or 16"), std::string::npos) << lanes;
+    EXPECT_NE(lanes.find("0 (one path per work-item), 4, 8 or 16"), std::string::npos) << lanes;
     for (const char* bad : {"eight", "-8", "8.0", " 8", "32"}) EXPECT_NE(refusal({{"ORB_SIMD_LANES", bad}}), "") << bad;
 
     const std::string limit = refusal({{"ORB_REFIT_COST_LIMIT", "2x"}});

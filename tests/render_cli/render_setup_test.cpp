@@ -112,7 +112,7 @@ TEST_F(RenderCli, DevelopmentKnobsAreCheckedAtTheStart) {
     };
     for (const auto& [assignment, expected] :
          {std::pair<std::string, std::string>{"ORB_LOCAL_SIZE=abc", "ORB_LOCAL_SIZE='abc': expected a work-group shape XxY"},
-          {"ORB_SIMD_LANES=3", "ORB_SIMD_LANES='3': expected 0 (render_pass), 4, 8 or 16"},
+          {"ORB_SIMD_LANES=3", "ORB_SIMD_LANES='3': expected 0 (one path per work-item), 4, 8 or 16"},
           {"ORB_REFIT_COST_LIMIT=much", "ORB_REFIT_COST_LIMIT='much': expected a finite number"},
           {"ORB_SHOW_BUILD_LOG=yes", "ORB_SHOW_BUILD_LOG='yes': expected 1 (on) or 0 (off)"}}) {
         const auto run = with_env(assignment);
