@@ -4,33 +4,13 @@
 #include <cmath>
 #include <functional>
 
+#include "orb/cli/number_checks.h"
 #include "orb/scene/auto_framing.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::cli {
 namespace {
-
-std::optional<double> parse_number(const std::string& text) {
-    try {
-        std::size_t used = 0;
-        const double value = std::stod(text, &used);
-        if (used == text.size() && !text.empty() && text.front() != ' ') return value;
-    } catch (const std::exception&) {
-    }
-    return std::nullopt;
-}
-
-// A number option's check: the whole text a finite number for which `fits` holds.
-CLI::Validator number_where(std::function<bool(double)> fits, const std::string& what) {
-    return CLI::Validator(
-        [fits, what](std::string& text) -> std::string {
-            const std::optional<double> value = parse_number(text);
-            if (value && std::isfinite(*value) && fits(*value)) return {};
-            return "expected " + what + ", got '" + text + "'";
-        },
-        "NUMBER");
-}
 
 const CLI::Validator kPoint(
     [](std::string& text) -> std::string {
@@ -79,23 +59,23 @@ void add_camera_options(CLI::App& app, CameraOptions& o) {
     add_point_option(app, "--look-at", o.look_at, "The point the camera looks at (default: the scene's target)");
     add_point_option(app, "--up", o.up, "The camera's up direction (default: the scene's)");
     app.add_option("--vfov", o.vfov_deg, "Vertical field of view in degrees, in (0, 180) (default: the scene's)")
-        ->check(number_where([](double v) { return v > 0 && v < 180; }, "degrees in (0, 180)"))
+        ->check(finite_number_where([](double v) { return v > 0 && v < 180; }, "degrees in (0, 180)"))
         ->option_text("DEGREES")
         ->group("Camera");
     app.add_option("--aperture", o.aperture, "Lens diameter; 0 is a pinhole (default: the scene's)")
-        ->check(number_where([](double v) { return v >= 0 && v <= kMaxSceneMagnitude; }, "a lens diameter >= 0"))
+        ->check(finite_number_where([](double v) { return v >= 0 && v <= kMaxSceneMagnitude; }, "a lens diameter >= 0"))
         ->option_text("D")
         ->group("Camera");
     app.add_option("--focus-distance", o.focus_distance,
                    "Distance from the lens to the plane in focus (default: the scene's)")
-        ->check(number_where([](double v) { return v >= kMinScenePositive && v <= kMaxSceneMagnitude; },
+        ->check(finite_number_where([](double v) { return v >= kMinScenePositive && v <= kMaxSceneMagnitude; },
                              "a distance > 0"))
         ->option_text("D")
         ->group("Camera");
     CLI::Option* orthographic =
         app.add_option("--orthographic", o.orthographic_height,
                        "An orthographic camera whose view is HEIGHT scene units high (default: the scene's)")
-            ->check(number_where([](double v) { return v >= kMinScenePositive && v <= kMaxSceneMagnitude; },
+            ->check(finite_number_where([](double v) { return v >= kMinScenePositive && v <= kMaxSceneMagnitude; },
                                  "a height > 0 in scene units"))
             ->option_text("HEIGHT")
             ->group("Camera");

@@ -3,13 +3,14 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace orb::cli {
-namespace {
 
-// The whole text as a double, or nothing ("1.5x", "" and "0x10" are not numbers here).
-std::optional<double> parse_double(const std::string& text) {
+std::optional<double> parse_number(const std::string& text) {
+    if (text.empty() || text.front() == ' ') return std::nullopt;
     try {
         std::size_t used = 0;
         const double value = std::stod(text, &used);
@@ -19,16 +20,18 @@ std::optional<double> parse_double(const std::string& text) {
     return std::nullopt;
 }
 
-}  // namespace
-
-CLI::Validator finite_number_in(double lo, double hi, const std::string& what) {
+CLI::Validator finite_number_where(std::function<bool(double)> fits, const std::string& what) {
     return CLI::Validator(
-        [lo, hi, what](std::string& text) -> std::string {
-            const std::optional<double> value = parse_double(text);
-            if (value && std::isfinite(*value) && *value >= lo && *value <= hi) return {};
+        [fits, what](std::string& text) -> std::string {
+            const std::optional<double> value = parse_number(text);
+            if (value && std::isfinite(*value) && fits(*value)) return {};
             return "expected " + what + ", got '" + text + "'";
         },
         "NUMBER");
+}
+
+CLI::Validator finite_number_in(double lo, double hi, const std::string& what) {
+    return finite_number_where([lo, hi](double value) { return value >= lo && value <= hi; }, what);
 }
 
 CLI::Validator one_of(std::initializer_list<int> allowed) {

@@ -75,10 +75,6 @@
 #error "the program lacks the kernel features' defaults: prepend orb::device::kernel_feature_defaults() (librender's program_source does)"
 #endif
 
-#if ORB_LANES != 1 && ORB_LANES != 4 && ORB_LANES != 8 && ORB_LANES != 16
-#error "ORB_LANES must be 1, 4, 8 or 16"
-#endif
-
 #else
 
 #include <array>
