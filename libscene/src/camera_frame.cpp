@@ -7,6 +7,14 @@
 
 namespace orb {
 
+double view_up_sine(const Vec3& forward, const Vec3& up) {
+    const double forward_length = std::hypot(forward[0], forward[1], forward[2]);
+    const double up_length = std::hypot(up[0], up[1], up[2]);
+    const Vec3 f{forward[0] / forward_length, forward[1] / forward_length, forward[2] / forward_length};
+    const Vec3 u{up[0] / up_length, up[1] / up_length, up[2] / up_length};
+    return std::hypot(f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2], f[0] * u[1] - f[1] * u[0]);
+}
+
 CameraFrame camera_frame(const Camera& camera) {
     CameraFrame frame;
     const Vec3 towards = vec3::sub(camera.target, camera.position);

@@ -2,6 +2,7 @@
 // every problem, and a writer whose output is stable and diff-friendly.
 #include "orb/scene/scene_json.h"
 
+#include "orb/scene/camera_frame.h"
 #include "orb/scene/content_hash.h"
 
 #include <nlohmann/json.hpp>
@@ -225,11 +226,7 @@ void validate_scene(const Scene& scene, const std::string& source) {
     check(forward_length > 0, source, "camera.target", "must differ from camera.position, both are " + fmt(c.position));
     const double up_length = std::hypot(c.up[0], c.up[1], c.up[2]);
     check(up_length > 0, source, "camera.up", "must not be the zero vector");
-    // Sine of the angle between the unit view direction and unit up.
-    const Vec3 f{forward[0] / forward_length, forward[1] / forward_length, forward[2] / forward_length};
-    const Vec3 u{c.up[0] / up_length, c.up[1] / up_length, c.up[2] / up_length};
-    const double sine = std::hypot(f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2], f[0] * u[1] - f[1] * u[0]);
-    check(sine > 1e-9, source, "camera.up",
+    check(view_up_sine(forward, c.up) > kMinViewUpSine, source, "camera.up",
           "the view direction (target - position) is parallel to up " + fmt(c.up) + ": the camera's roll is undefined");
     check(std::isfinite(c.vfov_deg) && c.vfov_deg > 0 && c.vfov_deg < 180, source, "camera.vfov_deg",
           "must be in (0, 180), got " + fmt(c.vfov_deg));

@@ -6,6 +6,7 @@
 
 #include "orb/cli/number_checks.h"
 #include "orb/scene/auto_framing.h"
+#include "orb/scene/camera_frame.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 
@@ -148,11 +149,8 @@ void apply_camera_options(const CameraOptions& o, Camera& camera, const std::str
     const Vec3& u = camera.up;
     const double up_length = std::hypot(u[0], u[1], u[2]);
     if (!(up_length > 0)) throw InputError(source + ": --up must not be the zero vector");
-    // Sine of the angle between the view and up, as the scene loader measures it.
-    const Vec3 f{forward[0] / forward_length, forward[1] / forward_length, forward[2] / forward_length};
-    const Vec3 n{u[0] / up_length, u[1] / up_length, u[2] / up_length};
-    const double sine = std::hypot(f[1] * n[2] - f[2] * n[1], f[2] * n[0] - f[0] * n[2], f[0] * n[1] - f[1] * n[0]);
-    if (!(sine > 1e-9)) {
+    // The scene loader's own test, so an option refuses what a scene file would.
+    if (!(view_up_sine(forward, u) > kMinViewUpSine)) {
         const std::string view = "the view direction " + format_point(forward);
         const std::string why = o.up ? "--up " + format_point(u) + " is parallel to " + view
                                      : view + " (from " + std::string(o.position ? "--camera-position" : "the scene's position") +

@@ -15,6 +15,13 @@ struct CameraFrame {
     double target_distance = 0;  // |target - position|
 };
 
+// The sine of the angle between a view direction and an up direction, both
+// non-zero (they are made unit with std::hypot, so huge but finite
+// coordinates do not overflow). At or below kMinViewUpSine the camera's roll
+// is undefined: scene validation and the camera options refuse such a pose.
+double view_up_sine(const Vec3& forward, const Vec3& up);
+inline constexpr double kMinViewUpSine = 1e-9;
+
 // The frame of `camera`. An up parallel to the view leaves the roll
 // undefined (scene validation refuses it; a pose reached by animation may
 // still come close): then right is taken from the world axis least aligned
