@@ -7,6 +7,7 @@
 #include "orb/cli/development_knobs.h"
 #include "orb/cli/io.h"
 #include "orb/cli/tool_main.h"
+#include "orb/scene/importers.h"
 #include "render_options.h"
 #include "render_outputs.h"
 #include "render_frames.h"
@@ -18,7 +19,7 @@ int main(int argc, char** argv) {
     RenderOptions options;
     return orb::cli::run_tool(
         argc, argv, "orb-render",
-        "Render a scene (Orb JSON or binary .orb, .scn, glTF, PLY) with OpenCL path tracing into a multi-pass OpenEXR.",
+        "Render a scene (" + orb::readable_file_names() + ") with OpenCL path tracing into a multi-pass OpenEXR.",
         [&](CLI::App& app) { add_render_options(app, options); },
         [&]() -> int {
             check_option_combinations(options);

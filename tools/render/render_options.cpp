@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "orb/scene/importers.h"
 #include "orb/cli/exr_output_name.h"
 #include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
@@ -52,7 +53,7 @@ Details: docs/orb-render.md)";
 
 void add_render_options(CLI::App& app, RenderOptions& o) {
     const CLI::Validator& seconds = request::positive_number();
-    app.add_option("SCENE", o.scene, "Scene file (Orb JSON or binary .orb, .scn, glTF, PLY) or - for stdin");
+    app.add_option("SCENE", o.scene, "Scene file (" + orb::readable_file_names() + ") or - for stdin");
     app.add_flag("--allow-empty", o.allow_empty, "Render a scene without spheres instead of failing");
     app.add_option("-o,--output", o.output, "Output EXR, or - for stdout");
     app.add_flag("--list-devices", o.list_devices, "List OpenCL devices and exit");
