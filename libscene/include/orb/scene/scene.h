@@ -11,6 +11,7 @@
 
 #include "orb/kernels/material_kinds.h"
 #include "orb/scene/animation.h"
+#include "orb/scene/sphere_attributes.h"
 #include "orb/scene/vec3.h"
 
 namespace orb {
@@ -118,6 +119,9 @@ struct Scene {
     std::vector<Sphere> spheres;
     Animation animation;  // empty for static scenes
     Environment environment;  // kind None for scenes without one
+    // Per-sphere colours and properties, index for index with `spheres`
+    // (orb/scene/sphere_attributes.h); empty for most scenes.
+    SphereAttributes sphere_attributes;
     bool operator==(const Scene&) const = default;
 };
 
