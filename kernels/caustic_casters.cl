@@ -88,11 +88,28 @@ LANE_FN BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, lv
 {
     const int count = scene->caster_count;
     if (ORB_CASTER_SHARE <= 0.0f || count == 0) return bsdf_sample(b, wo, n, outside, u, v, choice);
-    BsdfSample s = bsdf_no_sample();
-    lv3 f_cos = lv3_zero();          // f |cos| of the direction, whichever strategy drew it
-    lfloat bsdf_pdf = (lfloat)(0.0f);  // the BSDF's own density of it
-    lmask lost = mask_of(false);
+    // The BSDF's own sample first, for every lane that draws one (at width
+    // > 1 that is nearly always some lane, so it runs for all of them and
+    // the aimed lanes overwrite theirs below, instead of selecting the whole
+    // sample into place).
     const lmask aim = choose_lobe((lfloat)(ORB_CASTER_SHARE), choice);
+    const lmask own = mask_not(aim);
+    BsdfSample s = bsdf_no_sample();
+    lv3 f_cos = lv3_zero();            // f |cos| of the direction, whichever strategy drew it
+    lfloat bsdf_pdf = (lfloat)(0.0f);  // the BSDF's own density of it
+    lmask delta = mask_of(false);
+    if (lanes_any(own)) {
+        lfloat own_choice = *choice;
+        s = bsdf_sample(b, wo, n, outside, u, v, &own_choice);
+        *choice = lselect(*choice, own_choice, own);
+        // A delta lobe (a smooth coat) is reached only through the BSDF's
+        // share: its probability is scaled by it.
+        delta = mask_and(own, s.delta);
+        s.weight = lv3_select(s.weight, lv3_scale(s.weight, 1.0f / (1.0f - ORB_CASTER_SHARE)), delta);
+        bsdf_pdf = s.pdf;
+        f_cos = lv3_scale(s.weight, s.pdf);
+    }
+    lmask lost = mask_of(false);
     if (lanes_any(aim)) {
         const lfloat scaled = *choice * (float)count;
         const lint k = min(to_lint(scaled), (lint)(count - 1));
@@ -119,29 +136,16 @@ LANE_FN BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, lv
         // keeps unbiased; the BSDF's refraction factor is not known here.
         s.eta2 = lselect(s.eta2, (lfloat)(1.0f), aim);
     }
-    const lmask own = mask_not(aim);
-    lmask delta = mask_of(false);
-    if (lanes_any(own)) {
-        lfloat own_choice = *choice;
-        BsdfSample o = bsdf_sample(b, wo, n, outside, u, v, &own_choice);
-        *choice = lselect(*choice, own_choice, own);
-        // A delta lobe (a smooth coat) is reached only through the BSDF's
-        // share: its probability is scaled by it.
-        delta = mask_and(own, o.delta);
-        o.weight = lv3_select(o.weight, lv3_scale(o.weight, 1.0f / (1.0f - ORB_CASTER_SHARE)), delta);
-        s = bsdf_sample_select(s, o, own);
-        bsdf_pdf = lselect(bsdf_pdf, o.pdf, own);
-        f_cos = lv3_select(f_cos, lv3_scale(o.weight, o.pdf), own);
-    }
     // One density for both strategies, after the branch: on a GPU the two
-    // sides of a warp then share this code instead of running it twice.
+    // sides of a warp then share this code instead of running it twice. A
+    // lane without a direction (lost, or of density 0) carries nothing: its
+    // path ends on the zero weight, whatever the rest of its sample says.
     const lmask mixed = mask_not(delta);
     if (lanes_any(mixed)) {
-        BsdfSample m = s;
-        m.pdf = continuation_pdf(scene, p, bsdf_pdf, s.wi);
-        m.weight = lv3_scale(f_cos, 1.0f / m.pdf);
-        m = bsdf_sample_select(bsdf_no_sample(), m, mask_and_not(m.pdf > 0.0f, lost));
-        s = bsdf_sample_select(s, m, mixed);
+        const lfloat pdf = continuation_pdf(scene, p, bsdf_pdf, s.wi);
+        const lmask valid = mask_and_not(pdf > 0.0f, lost);
+        s.pdf = lselect(s.pdf, lselect((lfloat)(0.0f), pdf, valid), mixed);
+        s.weight = lv3_select(s.weight, lv3_select(lv3_zero(), lv3_scale(f_cos, 1.0f / pdf), valid), mixed);
     }
     return s;
 }

@@ -49,7 +49,7 @@ LANE_FN lv3 sample_light_direction(lv3 p, lint self, lint light_id, lv3 centre, 
 LANE_FN lv3 estimate_direct_light(const SceneView* scene, lint light_id, lfloat pick_pdf, lv3 p, lint self,
                                   const Bsdf* bsdf, lv3 wo, lv3 n, lmask outside, lfloat u, lfloat v, lmask lanes)
 {
-    const ShadingSphere light = load_sphere(scene, light_id, lanes);
+    const EmitterSphere light = load_emitter(scene, light_id, lanes);
     lfloat direction_pdf;
     const lv3 wi = sample_light_direction(p, self, light_id, light.centre, light.radius, u, v, &direction_pdf);
     lfloat bsdf_pdf;

@@ -102,3 +102,45 @@ LANE_FN ShadingSphere load_sphere(const SceneView* scene, lint id, lmask lanes)
 #endif
     return s;
 }
+
+// A light's sphere for next-event estimation: only its place and emission,
+// the three of ShadingSphere's fields that sampling a light reads (at width
+// > 1 each field is a select per sphere the lanes name).
+typedef struct {
+    lv3 centre;
+    lfloat radius;
+    lv3 emission;
+} EmitterSphere;
+
+LANE_FN EmitterSphere load_emitter(const SceneView* scene, lint id, lmask lanes)
+{
+    EmitterSphere s;
+#if ORB_LANES == 1
+    SCENE_MEM const SphereRecord* r = &scene->spheres[id];
+    s.centre = r->centre_radius.xyz;
+    s.radius = r->centre_radius.w;
+    s.emission = scene->materials[r->material].emission.xyz;
+#else
+    s.centre = s.emission = lv3_zero();
+    s.radius = (lfloat)(1.0f);
+    if (scene->sphere_count > ORB_LANES_SELECT_GATHER_MAX) {
+        ORB_FOR_EACH_LANE(l, lanes)
+        {
+            SCENE_MEM const SphereRecord* r = &scene->spheres[lane_i(id, l)];
+            set_lane_v3(s.centre, l, r->centre_radius.xyz);
+            set_lane_f(s.radius, l, r->centre_radius.w);
+            set_lane_v3(s.emission, l, scene->materials[r->material].emission.xyz);
+        }
+        return s;
+    }
+    for (int i = 0; i < scene->sphere_count; ++i) {
+        const lmask m = mask_and(lanes, id == i);
+        if (!lanes_any(m)) continue;
+        SCENE_MEM const SphereRecord* r = &scene->spheres[i];
+        s.centre = lv3_select(s.centre, lv3_splat(r->centre_radius.xyz), m);
+        s.radius = lselect(s.radius, (lfloat)(r->centre_radius.w), m);
+        s.emission = lv3_select(s.emission, lv3_splat(scene->materials[r->material].emission.xyz), m);
+    }
+#endif
+    return s;
+}
