@@ -156,10 +156,12 @@ FILE_WORDS = {"FILE", "OUT", "OUTPUT", "PATTERN", "PATH", "SCENE", "INPUT", "INP
 EXTENSION_IN_TEXT = re.compile(r"(?:^|(?<=[\s(/,]))\.([a-z][a-z0-9]{1,4})\b")
 
 
-def value_kind(help: Help, name: str, placeholder: str, description: str) -> tuple:
+def value_kind(cli: Help, name: str, placeholder: str, description: str) -> tuple:
     """How to complete the value of option `name` (or of a positional)."""
-    if name == "--device" and any(i.name == "--list-devices" for e in help.entries for i in e.items):
+    if name == "--device" and any(i.name == "--list-devices" for e in cli.entries for i in e.items):
         return ("devices",)
+    if re.fullmatch(r"N|X|[XYZ](,[XYZ])+", placeholder):
+        return ("none",)  # a number or coordinates, whatever the description mentions
     alternatives = placeholder.split("|")
     if len(alternatives) > 1 and all(re.fullmatch(r"[a-z0-9][a-z0-9_.-]*", w) for w in alternatives):
         return ("words", alternatives)
@@ -193,10 +195,10 @@ def bash_action(kind: tuple, function: str) -> str:
     return ":"  # a number, a list or a name: nothing to offer
 
 
-def bash_completion(help: Help) -> str:
-    function = "_" + re.sub(r"[^A-Za-z0-9]", "_", help.name)
-    options = [e for e in help.entries if not e.positional]
-    positionals = [e for e in help.entries if e.positional]
+def bash_completion(cli: Help) -> str:
+    function = "_" + re.sub(r"[^A-Za-z0-9]", "_", cli.name)
+    options = [e for e in cli.entries if not e.positional]
+    positionals = [e for e in cli.entries if e.positional]
     by_action: dict[str, list[str]] = {}
     valued: list[str] = []
     names: list[str] = []
@@ -205,13 +207,13 @@ def bash_completion(help: Help) -> str:
             names.append(item.name)
             if item.placeholder:
                 valued.append(item.name)
-                action = bash_action(value_kind(help, item.name, item.placeholder, entry.description), function)
+                action = bash_action(value_kind(cli, item.name, item.placeholder, entry.description), function)
                 by_action.setdefault(action, []).append(item.name)
 
-    out = [f"# bash completion for {help.name}: generated from `{help.name} --help` by",
+    out = [f"# bash completion for {cli.name}: generated from `{cli.name} --help` by",
            "# packaging/cli_reference.py when Orb was built; do not edit.", ""]
     if any(a.startswith("COMPREPLY=($(compgen -W \"$(") for a in by_action):
-        out += [f"# The devices {help.name} --device takes: all, and each device's index and",
+        out += [f"# The devices {cli.name} --device takes: all, and each device's index and",
                 "# platform (its first word), from the tool's own --list-devices.",
                 f"{function}_devices() {{",
                 '    "$1" --list-devices 2>/dev/null | awk \'NR == 1 { at = index($0, "platform"); next }',
@@ -249,11 +251,11 @@ def bash_completion(help: Help) -> str:
         out.append("    case $positional in")
         for index, entry in enumerate(positionals):
             name = entry.items[0].name
-            action = bash_action(value_kind(help, name, name, entry.description), function)
+            action = bash_action(value_kind(cli, name, name, entry.description), function)
             pattern = "*" if entry.variadic else str(index)  # a variadic one is the last
             out.append(f"    {pattern}) {action} ;;")
         out.append("    esac")
-    out += ["}", f"complete -F {function} {help.name}", ""]
+    out += ["}", f"complete -F {function} {cli.name}", ""]
     return "\n".join(out)
 
 
@@ -277,20 +279,20 @@ def first_clause(text: str) -> str:
     return clause[:1].lower() + clause[1:] if clause[1:2].islower() else clause
 
 
-def man_page(help: Help, version: str, date: str, see_also: list[str]) -> str:
-    title = help.name.upper()
-    out = [f".\\\" Generated from `{help.name} --help` by packaging/cli_reference.py; do not edit.",
+def man_page(cli: Help, version: str, date: str, see_also: list[str]) -> str:
+    title = cli.name.upper()
+    out = [f".\\\" Generated from `{cli.name} --help` by packaging/cli_reference.py; do not edit.",
            f'.TH {roff(title)} 1 "{date}" "Orb {version}" "Orb manual"',
            ".SH NAME",
-           f"{roff(help.name)} \\- {roff(first_clause(help.description[0] if help.description else help.name))}",
+           f"{roff(cli.name)} \\- {roff(first_clause(cli.description[0] if cli.description else cli.name))}",
            ".SH SYNOPSIS",
-           f".B {roff(help.name)}",
-           roff(help.synopsis),
+           f".B {roff(cli.name)}",
+           roff(cli.synopsis),
            ".SH DESCRIPTION"]
-    for paragraph in help.description:
+    for paragraph in cli.description:
         out += [".PP", roff(paragraph)]
     section = group = None
-    for entry in sorted(help.entries, key=lambda e: not e.positional):  # arguments first, else in order
+    for entry in sorted(cli.entries, key=lambda e: not e.positional):  # arguments first, else in order
         heading = "ARGUMENTS" if entry.positional else "OPTIONS"
         if heading != section:
             out.append(f".SH {heading}")
@@ -305,24 +307,24 @@ def man_page(help: Help, version: str, date: str, see_also: list[str]) -> str:
         if entry.positional:
             names = f"\\fI{roff(entry.items[0].name)}\\fR" + ("..." if entry.variadic else "")
         out += [".TP", names, roff(entry.description) or "\\&"]
-    if help.examples:
+    if cli.examples:
         out += [".SH EXAMPLES", ".nf"]
-        out += [roff(example) for example in help.examples]
+        out += [roff(example) for example in cli.examples]
         out.append(".fi")
-    exit_status = [n for n in help.notes if n.startswith("Exit status:")]
-    other_notes = [n for n in help.notes if not n.startswith("Exit status:")]
+    exit_status = [n for n in cli.notes if n.startswith("Exit status:")]
+    other_notes = [n for n in cli.notes if not n.startswith("Exit status:")]
     if other_notes:
         out.append(".SH NOTES")
         for note in other_notes:
             out += [".PP", roff(note)]
     if exit_status:
         out += [".SH EXIT STATUS", roff(exit_status[0][len("Exit status:"):].strip())]
-    others = [p for p in see_also if p != help.name]
+    others = [p for p in see_also if p != cli.name]
     out += [".SH SEE ALSO", ",\n".join(f".BR {roff(p)} (1)" for p in others),
             ".PP",
             "Orb's documentation, in /usr/share/doc/orb/ when Orb is installed from its package:",
             "README.md and docs/*.md (each tool has a page, e.g.",
-            f"docs/{roff(help.name)}.md, where one exists)."]
+            f"docs/{roff(cli.name)}.md, where one exists)."]
     return "\n".join(out) + "\n"
 
 
@@ -344,17 +346,17 @@ def main() -> None:
     parser.add_argument("--bash", help="write the bash completion here")
     args = parser.parse_args()
 
-    help = parse_help(args.name, run(args.program, "--help"))
-    if not help.entries:
+    cli = parse_help(args.name, run(args.program, "--help"))
+    if not cli.entries:
         sys.exit(f"cli_reference: found no options in {args.name} --help")
     if args.man:
-        page = man_page(help, args.version, args.date, sorted(filter(None, args.see_also.split(","))))
+        page = man_page(cli, args.version, args.date, sorted(filter(None, args.see_also.split(","))))
         # mtime 0 and no file name: the same bytes at every build.
         with open(args.man, "wb") as out:
             out.write(gzip.compress(page.encode(), compresslevel=9, mtime=0))
     if args.bash:
         with open(args.bash, "w") as out:
-            out.write(bash_completion(help))
+            out.write(bash_completion(cli))
 
 
 if __name__ == "__main__":

@@ -22,7 +22,8 @@ git -C "$work/orb" checkout --quiet --detach "$commit"
 # Debian's compiler and linker flags (fortify, stack protector, RELRO, bindnow);
 # CMake reads CFLAGS/CXXFLAGS/LDFLAGS, not CPPFLAGS. The Release build type's
 # -O3 comes after them and wins over their -O2.
-eval "$(DEB_BUILD_MAINT_OPTIONS=hardening=+all dpkg-buildflags --export=sh)"
+# Asked in the clone, so that -ffile-prefix-map maps its path to ".".
+eval "$(cd "$work/orb" && DEB_BUILD_MAINT_OPTIONS=hardening=+all dpkg-buildflags --export=sh)"
 export CFLAGS="$CPPFLAGS $CFLAGS" CXXFLAGS="$CPPFLAGS $CXXFLAGS"
 cmake -S "$work/orb" -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DORB_BUILD_TESTS=OFF "$@" >/dev/null
 cmake --build "$work/build" -j "$jobs"
