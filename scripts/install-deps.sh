@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs what building and testing Orb needs, from Debian's packages.
-# Idempotent and quick when everything is already there; non-interactive.
+# Installs what building Orb needs, from Debian's packages; with --tests also
+# what running the test suite needs, with --package what scripts/package.sh
+# needs. Idempotent and quick when everything is already there; non-interactive.
+#   scripts/install-deps.sh [--tests] [--package]
 set -euo pipefail
 
 packages=(
@@ -10,13 +12,30 @@ packages=(
   libtinygltf-dev libstb-dev nlohmann-json3-dev libcli11-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libopenexr-dev libdeflate-dev libopenimageio-dev libopencolorio-dev
-  # tests: GoogleTest, schema validation, reference image tools
-  libgtest-dev python3-jsonschema openimageio-tools opencolorio-tools
-  # tests: orb-farm on a one-node Slurm cluster started in a temporary folder
+  # GoogleTest: the default build configures the test suite too
+  libgtest-dev
+)
+test_packages=(
+  # schema validation, reference image tools
+  python3-jsonschema openimageio-tools opencolorio-tools
+  # orb-farm on a one-node Slurm cluster started in a temporary folder
   slurm-wlm munge
-  # tests: the tutorial's video step (docs.commands runs every block of the docs)
+  # the tutorial's video step (docs.commands runs every block of the docs)
   ffmpeg
 )
+package_packages=(
+  # cpack's Depends (dpkg-shlibdeps), the package's check, reading its man pages
+  dpkg-dev lintian man-db
+  # the bash completions' test
+  bash-completion
+)
+for argument in "$@"; do
+  case $argument in
+  --tests) packages+=("${test_packages[@]}" "${package_packages[@]}") ;;  # the suite checks the package too
+  --package) packages+=("${package_packages[@]}") ;;
+  *) echo "install-deps: unknown argument '$argument' (expected --tests or --package)" >&2; exit 2 ;;
+  esac
+done
 if [[ "${ORB_WITH_FUZZ:-0}" == 1 ]]; then packages+=(clang libclang-rt-dev); fi
 
 missing=()

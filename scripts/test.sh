@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 [[ -n "${ORB_FUZZ_SECONDS:-}" ]] && export ORB_WITH_FUZZ=1
-"$root/scripts/install-deps.sh"
+"$root/scripts/install-deps.sh" --tests
 "$root/scripts/build.sh"
 build=${ORB_BUILD_DIR:-$root/build}
 ctest --test-dir "$build" -j "${ORB_JOBS:-$(nproc)}" --output-on-failure --timeout 600

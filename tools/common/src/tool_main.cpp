@@ -12,6 +12,7 @@
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
+#include "orb/cli/version.h"
 #include "orb/scene/error.h"
 
 namespace orb::cli {
@@ -50,7 +51,7 @@ int run_tool(int argc, char** argv, const std::string& name, const std::string& 
     set_tool_name(name);
     CLI::App app{description, name};
     app.formatter(std::make_shared<HelpFormatter>());
-    app.set_version_flag("--version", name + " (Orb) " + version_string());
+    app.set_version_flag("--version", version_text(name));
     bool quiet_flag = false;
     app.add_flag("-q,--quiet", quiet_flag, "Print only errors");
     app.get_formatter()->column_width(34);
@@ -62,7 +63,7 @@ int run_tool(int argc, char** argv, const std::string& name, const std::string& 
     } catch (const CLI::CallForAllHelp&) {
         return print_help(app.help("", CLI::AppFormatMode::All));
     } catch (const CLI::CallForVersion& e) {
-        return print_help(std::string(e.what()) + "\n");
+        return print_help(e.what());
     } catch (const CLI::ParseError& e) {
         error(e.what());
         std::cerr << "Run with --help for more information." << std::endl;
