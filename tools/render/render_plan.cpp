@@ -45,7 +45,12 @@ void require_same(const std::optional<T>& given, const T& in_file, const std::st
 
 // The layers the output will hold, and with them the film channels the
 // kernels compute (the others would never be written).
+// --denoise needs the albedo and normal the denoiser is guided by.
 void set_passes(RenderPlan& plan, std::vector<exr::Pass> passes) {
+    if (plan.denoiser)
+        for (exr::Pass guide : {exr::Pass::Albedo, exr::Pass::Normal})
+            if (!exr::contains(passes, guide)) passes.push_back(guide);
+    passes = exr::parse_passes(exr::format_passes(passes));  // back in the documented order
     plan.passes = std::move(passes);
     plan.config.film_channels = film::channels_for(plan.passes);
 }
@@ -109,6 +114,7 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     plan.config.use_binary_cache = !o.no_cache;
     plan.half = o.half;
     if (o.compression) plan.compression = exr::parse_compression(*o.compression);
+    if (o.denoise) plan.denoiser = std::make_shared<denoise::Denoiser>(denoise::DenoiseSettings{});
 
     if (!o.resume.empty()) {
         apply_resume(o, imported, plan);
