@@ -34,7 +34,10 @@ struct RenderPlan {
     // The film to continue from (--resume, or an output --skip-existing
     // continues); its metadata stays once its film is on the device.
     std::optional<exr::ExrFilm> resumed;
-    // --denoise: loaded before anything renders, shared by every frame.
+    // --denoise: the passes include its guides, and the denoiser is loaded
+    // before anything renders (not for --missing, which renders nothing),
+    // shared by every frame.
+    bool denoise = false;
     std::shared_ptr<denoise::Denoiser> denoiser;
 
     // Animations (--frame/--frames): the frames in order, and the scene as
