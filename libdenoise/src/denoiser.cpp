@@ -1,5 +1,6 @@
 #include "orb/denoise/denoiser.h"
 
+#include <chrono>
 #include <cstddef>
 #include <mutex>
 #include <stdexcept>
@@ -79,6 +80,7 @@ struct Denoiser::State {
     oidn::Buffer color = nullptr, albedo = nullptr, normal = nullptr, output = nullptr;
     int width = 0, height = 0;
     std::mutex mutex;
+    double setup_seconds = 0, filter_seconds = 0;
 
     explicit State(const oidn::Api& oidn_api) : api(oidn_api) {}
 
@@ -168,7 +170,10 @@ std::vector<float> Denoiser::denoise(const DenoiseImages& images) {
         throw std::invalid_argument("denoiser: the colour, albedo and normal images are all needed");
     State& s = *state_;
     const std::lock_guard lock(s.mutex);
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
     s.prepare(images.width, images.height);
+    const Clock::time_point prepared = Clock::now();
     const std::size_t floats = static_cast<std::size_t>(images.width) * static_cast<std::size_t>(images.height) * 3;
     const std::size_t bytes = floats * sizeof(float);
     s.api.oidnWriteBuffer(s.color, 0, bytes, images.color);
@@ -180,6 +185,8 @@ std::vector<float> Denoiser::denoise(const DenoiseImages& images) {
     std::vector<float> result(floats);
     s.api.oidnReadBuffer(s.output, 0, bytes, result.data());
     s.check(s.device, "copying the result back");
+    s.setup_seconds = std::chrono::duration<double>(prepared - start).count();
+    s.filter_seconds = std::chrono::duration<double>(Clock::now() - prepared).count();
     return result;
 }
 
@@ -187,5 +194,7 @@ const std::string& Denoiser::description() const { return state_->description; }
 const std::string& Denoiser::version() const { return state_->version; }
 const std::string& Denoiser::device_name() const { return state_->device_name; }
 const DenoiseSettings& Denoiser::settings() const { return state_->settings; }
+double Denoiser::last_setup_seconds() const { return state_->setup_seconds; }
+double Denoiser::last_filter_seconds() const { return state_->filter_seconds; }
 
 }  // namespace orb::denoise

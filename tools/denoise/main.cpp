@@ -73,7 +73,9 @@ int run(const Arguments& args) {
     const std::string denoised = orb::denoise::add_denoised_layer(bytes, source, denoiser);
     const double seconds = seconds_since(start);
     output.write(denoised);
-    orb::cli::info("denoised " + source + " in " + seconds_text(seconds) + " (" + denoiser.description() + ") -> " +
+    orb::cli::info("denoised " + source + " in " + seconds_text(seconds) + " (filter set-up " +
+                   seconds_text(denoiser.last_setup_seconds()) + ", filter " +
+                   seconds_text(denoiser.last_filter_seconds()) + "; " + denoiser.description() + ") -> " +
                    output.display_name());
     return orb::cli::kSuccess;
 }

@@ -64,6 +64,12 @@ public:
     const std::string& device_name() const;  // "CPU", "CUDA", ...
     const DenoiseSettings& settings() const;
 
+    // Seconds the last denoise() spent setting up the filter and buffers
+    // (0 when the size was the last one's) and running it (the copies to and
+    // from the device included): what a sequence pays once, and per frame.
+    double last_setup_seconds() const;
+    double last_filter_seconds() const;
+
 private:
     struct State;
     std::unique_ptr<State> state_;
