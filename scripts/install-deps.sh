@@ -43,17 +43,53 @@ for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
   [[ "$status" == "install ok installed" ]] || missing+=("$p")
 done
-if ((${#missing[@]} == 0)); then
-  echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
-fi
 
 sudo=()
-if [[ $(id -u) != 0 ]]; then
-  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
-  sudo=(sudo)
+need_root() {
+  if [[ $(id -u) != 0 ]]; then
+    command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: $*" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+}
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages present"
+else
+  need_root "${missing[*]}"
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -qq
+  "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-"${sudo[@]}" apt-get update -qq
-"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+
+# Intel Open Image Denoise 2 (orb-denoise, orb-render --denoise). Debian 12
+# has no package; PyPI's pyoidn wheel carries Intel's official shared
+# libraries. pip installs that one wheel (pinned by hash, without its Python
+# dependencies, which Orb does not use) with --target into ORB_OIDN_PREFIX,
+# where libdenoise looks for pyoidn/oidn/lib/libOpenImageDenoise.so.2; its
+# default must match the CMake setting of the same name
+# (docs/design/denoising-with-oidn.md). ORB_WITH_OIDN=0 skips it: the tools
+# then work, and denoising fails with a message that says how to install it.
+oidn_version=2.5.1.0
+oidn_sha256=32ad13368f8de1ef63001942ad05b02a00cd732d1206d97f352d3a3f606d823e
+oidn_prefix=${ORB_OIDN_PREFIX:-/usr/local/lib/orb/oidn}
+if [[ "${ORB_WITH_OIDN:-1}" == 0 ]]; then
+  echo "install-deps: ORB_WITH_OIDN=0: Intel Open Image Denoise not installed"
+elif [[ -e "$oidn_prefix/pyoidn-$oidn_version.dist-info" && -e "$oidn_prefix/pyoidn/oidn/lib/libOpenImageDenoise.so.2" ]]; then
+  echo "install-deps: Intel Open Image Denoise (pyoidn $oidn_version) present in $oidn_prefix"
+else
+  echo "install-deps: installing Intel Open Image Denoise (pyoidn $oidn_version from PyPI) into $oidn_prefix"
+  parent=$(dirname "$oidn_prefix")
+  { mkdir -p "$parent" 2>/dev/null && [[ -w "$parent" ]]; } || need_root "pyoidn into $oidn_prefix"
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  python3 -m venv "$work/venv"
+  echo "pyoidn==$oidn_version --hash=sha256:$oidn_sha256" >"$work/requirements.txt"
+  "$work/venv/bin/pip" install --quiet --disable-pip-version-check --no-deps --only-binary=:all: \
+    --require-hashes -r "$work/requirements.txt" --target "$work/oidn"
+  # Moved into place whole, so an interrupted install leaves no half prefix.
+  "${sudo[@]}" mkdir -p "$(dirname "$oidn_prefix")"
+  "${sudo[@]}" rm -rf "$oidn_prefix"
+  "${sudo[@]}" mv "$work/oidn" "$oidn_prefix"
+  "${sudo[@]}" chmod -R a+rX "$oidn_prefix"
+fi

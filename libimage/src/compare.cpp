@@ -35,13 +35,18 @@ Image prepare_color(const LoadedImage& source, const Pass& pass, const CompareSe
 PassComparison compare_pass(const LoadedImage& reference, const LoadedImage& test, const std::string& pass_name,
                             const CompareSettings& s) {
     const Pass ref_pass = extract_pass(reference.image, pass_name, display_name(reference.source));
-    const Pass test_pass = extract_pass(test.image, pass_name, display_name(test.source));
+    const Pass test_pass =
+        extract_pass(test.image, s.test_pass.empty() ? pass_name : s.test_pass, display_name(test.source));
+    if (test_pass.kind != ref_pass.kind)
+        throw InputError("cannot compare " + display_name(reference.source) + "'s " + ref_pass.name + " (" +
+                         kind_name(ref_pass.kind) + ") with " + display_name(test.source) + "'s " + test_pass.name +
+                         " (" + kind_name(test_pass.kind) + ")");
     if (ref_pass.image.width != test_pass.image.width || ref_pass.image.height != test_pass.image.height)
         throw InputError("images differ in size: " + display_name(reference.source) + " is " + dims(ref_pass.image) +
                          ", " + display_name(test.source) + " is " + dims(test_pass.image));
 
     PassComparison result;
-    result.pass = ref_pass.name;
+    result.pass = ref_pass.name == test_pass.name ? ref_pass.name : ref_pass.name + " vs " + test_pass.name;
     result.kind = ref_pass.kind;
     result.width = ref_pass.image.width;
     result.height = ref_pass.image.height;

@@ -150,23 +150,33 @@ const std::vector<std::string>& canonical_pass_names() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> list;
         for (const film::LayerInfo& layer : film::kLayers) list.push_back(layer.name);
+        for (const film::PostLayerInfo& layer : film::kPostLayers) list.push_back(layer.name);
         return list;
     }();
     return names;
 }
 
+namespace {
+
+PassKind pass_kind(film::LayerKind kind) {
+    switch (kind) {
+        case film::LayerKind::Color: return PassKind::Color;
+        case film::LayerKind::Normal: return PassKind::Normal;
+        case film::LayerKind::Depth: return PassKind::Depth;
+        case film::LayerKind::Id: return PassKind::Id;
+        case film::LayerKind::Variance: return PassKind::Variance;
+    }
+    return PassKind::Data;
+}
+
+}  // namespace
+
 PassKind kind_of_pass(const std::string& canonical_name) {
     const std::string n = lower(canonical_name);
-    for (const film::LayerInfo& layer : film::kLayers) {
-        if (n != layer.name) continue;
-        switch (layer.kind) {
-            case film::LayerKind::Color: return PassKind::Color;
-            case film::LayerKind::Normal: return PassKind::Normal;
-            case film::LayerKind::Depth: return PassKind::Depth;
-            case film::LayerKind::Id: return PassKind::Id;
-            case film::LayerKind::Variance: return PassKind::Variance;
-        }
-    }
+    for (const film::LayerInfo& layer : film::kLayers)
+        if (n == layer.name) return pass_kind(layer.kind);
+    for (const film::PostLayerInfo& layer : film::kPostLayers)
+        if (n == layer.name) return pass_kind(layer.kind);
     return PassKind::Color;  // a colour layer of another renderer's file
 }
 

@@ -23,7 +23,7 @@ problem() {
 }
 
 # ---- --help ----
-tools=(orb-import orb-render orb-tonemap orb-diff orb-merge orb-frames)
+tools=(orb-import orb-render orb-tonemap orb-diff orb-merge orb-frames orb-denoise)
 noise=('UINT' 'TEXT' 'FLOAT' 'INT:' '{false}' '{true}' 'in [' 'Excludes:' 'Needs:' 'REQUIRED' 'BOOLEAN')
 for tool in "${tools[@]}"; do
     help=$("$bin/$tool" --help 2>"$work/err")
@@ -60,6 +60,7 @@ check_listed orb-import --output --environment
 check_listed orb-tonemap --output --frames --skip-existing --missing --view --exposure
 check_listed orb-diff --pass --all-passes --fail-flip --fail-rmse --json --diff-image
 check_listed orb-merge --output
+check_listed orb-denoise --output --device --quality
 check_listed orb-frames --missing --paths
 
 # Placeholders: numbers, choices, files.
@@ -131,6 +132,12 @@ for i in 1 2 3; do
         --height 48 --stats-json stats.json -q -o -
     closes_quietly "orb-diff report | head -c 1" "$bin/orb-diff" ref.exr test.exr --all-passes --json diff.json
     closes_quietly "orb-tonemap -o - | head -c 1" "$bin/orb-tonemap" ref.exr --format png -q -o -
+done
+# orb-denoise -o - the same way (OIDN as scripts/install-deps.sh installs it).
+"$bin/orb-render" "$scenes/cornell.json" --spp 1 --width 64 --height 48 --passes beauty,albedo,normal -q -o guided.exr ||
+    problem "cannot render the image to denoise"
+for i in 1 2 3; do
+    closes_quietly "orb-denoise -o - | head -c 1" "$bin/orb-denoise" guided.exr -q -o -
 done
 # With the reader gone before it writes, orb-diff still leaves its JSON report whole.
 "$bin/orb-diff" ref.exr test.exr --json report.json 2>"$work/err" | true

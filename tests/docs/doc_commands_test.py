@@ -35,7 +35,7 @@ NOT_RUN = {
 
 # What the blocks of each document leave in its folder (at the scaled frame range).
 EXPECTED_FILES = {
-    "README.md": ["cornell.png", "shots/beauty.0002.exr", "shots/beauty.0002.png", "shared/shots/beauty.0002.exr",
+    "README.md": ["cornell.png", "quick.png", "shots/beauty.0002.exr", "shots/beauty.0002.png", "shared/shots/beauty.0002.exr",
                   "shared/shots/beauty.0002.png", "spheres.json", "spheres.png", "cloud.orb", "cloud.png"],
     "docs/tutorial.md": ["bounce.json", "preview.png", "shots/beauty.0001.exr", "shots/beauty.0002.exr",
                          "shared/bounce/beauty.0002.exr", "shared/bounce/beauty.0002.png", "png/beauty.0002.png",

@@ -338,6 +338,31 @@ run "$farm" "${common[@]}" --spp 4 --dry-run -- --seed 7
 expect_in "task_frames=(1 2 3)"
 render_frame 4 4 # back to seed 0
 
+section "--denoise: a whole frame's task denoises it; slices are denoised once merged"
+run "$farm" "${common[@]}" --spp 4 --denoise --dry-run
+expect_status 0
+expect_in "--spp 4 -o $work/shots/beauty.%04d.exr --denoise --skip-existing"
+run "$farm" "${common[@]}" --spp 4 --slices 2 --denoise --dry-run -- --passes=beauty,depth
+expect_status 0
+expect_in "--passes=beauty,depth,albedo,normal --skip-existing"
+expect_in "--denoise -- --passes=beauty,depth,albedo,normal"
+expect_not_in "--denoise --skip-existing"
+usage_case "-- --denoise: use orb-farm --denoise" "${common[@]}" --dry-run -- --denoise
+rm -f shots/orb-farm/slices/*
+for k in 1 2; do
+    "$bin/orb-render" "$scene" --frame 3 --width 8 --height 6 --sample-range $(((k - 1) * 2)):2 --passes beauty,albedo,normal \
+        -q -o "shots/orb-farm/slices/beauty.%04d.s${k}of2.exr" || problem "could not render frame 3's guided slice $k"
+done
+run "$farm" --collect "$scene" --frames 3 -o shots/beauty.%04d.exr --spp 4 --slices 2 --width 8 --height 6 --denoise \
+    -- --passes beauty,albedo,normal
+expect_status 0
+expect_in "merged 1 of 1 frames" err
+checks=$((checks + 1))
+oiiotool --info -v shots/beauty.0003.exr | grep -q 'orb:denoised:' || problem "the collect job did not denoise frame 3"
+expect_no_file shots/orb-farm/slices/beauty.f3.merged.exr
+expect_no_file shots/orb-farm/slices/beauty.0003.s1of2.exr
+render_frame 3 4 # back to a plain frame
+
 section "re-run: images that are absent or stale"
 rm -f shots/*.png
 render_frame 2 4

@@ -15,6 +15,9 @@ set(forbidden_orb_kernels orb_scene orb_film orb_render ${image_formats})
 set(forbidden_orb_render ${image_formats})
 set(forbidden_orb_exr ${opencl} orb_image OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
 set(forbidden_orb_image ${opencl} orb_exr)
+# The denoiser reads and writes EXR through OpenEXR and loads OIDN at run time:
+# no OpenCL, no OpenImageIO or OpenColorIO, and it links no OIDN.
+set(forbidden_orb_denoise ${opencl} orb_image OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
 
 # Everything `library` reaches: its links and, for Orb's own libraries, theirs.
 function(reach library out)

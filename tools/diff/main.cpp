@@ -35,6 +35,7 @@ constexpr int kExitPass = 0, kExitFail = 1, kExitError = 2;
 struct Settings {
     std::string reference, test;
     std::string pass = "beauty";
+    std::string test_pass;  // --test-pass: the test image's pass, when not --pass
     bool all_passes = false;
     ColorOptions color;
     Gates gates;
@@ -112,6 +113,7 @@ int run(const Settings& s) {
     if (s.reference.empty() || s.test.empty()) throw UsageError("need two images: orb-diff A B (see --help)");
     if (s.reference == "-" && s.test == "-") throw UsageError("only one of the two images can be '-' (stdin)");
     if (s.all_passes && s.pass != "beauty") throw UsageError("--pass and --all-passes exclude each other");
+    if (s.all_passes && !s.test_pass.empty()) throw UsageError("--test-pass and --all-passes exclude each other");
     const bool through_display = !s.color.display.empty() || !s.color.view.empty();
     if (!s.color.look.empty() && !through_display) throw UsageError("--look needs --display/--view");
 
@@ -138,6 +140,7 @@ int run(const Settings& s) {
     cs.ppd = s.ppd;
     cs.thresholds = {s.gates.fail_tolerance(), s.gates.warn_tolerance()};
     cs.want_heatmap = !s.diff_image.empty();
+    cs.test_pass = s.test_pass;
 
     const std::vector<std::string> passes = passes_to_compare(s, a, b);
     if (s.diff_image == "-" && passes.size() > 1) throw UsageError("--diff-image - (stdout) needs a single pass");
@@ -213,7 +216,11 @@ int main(int argc, char** argv) {
         [&](CLI::App& app) {
             app.add_option("reference", s.reference, "Reference image A ('-' = stdin)");
             app.add_option("test", s.test, "Test image B ('-' = stdin)");
-            app.add_option("--pass", s.pass, "Pass to compare (default beauty): direct, indirect, albedo, normal, depth, ...")
+            app.add_option("--pass", s.pass,
+                           "Pass to compare (default beauty): direct, indirect, albedo, normal, depth, denoised, ...")
+                ->option_text("NAME");
+            app.add_option("--test-pass", s.test_pass,
+                           "Compare this pass of the test image with --pass of the reference (e.g. denoised)")
                 ->option_text("NAME");
             app.add_flag("--all-passes", s.all_passes, "Compare every pass the two images have in common");
             add_color_options(app, s.color);
@@ -232,6 +239,7 @@ int main(int argc, char** argv) {
                 "  orb-diff reference.exr render.exr --fail-flip 0.05 --warn-flip 0.02\n"
                 "  orb-diff golden.png out.png --fail-percent 0.5 --fail-threshold 0.02 --diff-image diff.png\n"
                 "  orb-diff a.exr b.exr --all-passes --fail-rmse 0.01 --json report.json\n"
+                "  orb-diff converged.exr denoised.exr --test-pass denoised   # its denoised layer against the beauty\n"
                 "  orb-diff a.exr b.exr --display sRGB --view Filmic --fail-flip 0.1\n"
                 "  orb-render scene.json -o - | orb-diff golden.exr - --fail-relmse 0.001\n"
                 "Metrics run over R,G,B (alpha is not compared). Without any --fail-* option, any\n"

@@ -54,8 +54,7 @@ void BackgroundWriter::submit(Job job) {
     Write write{std::make_shared<Job>(std::move(job)), std::move(encoding), std::make_shared<std::exception_ptr>(), {}};
     write.thread = std::thread([job = write.job, encoding = write.encoding, error = write.error] {
         try {
-            job->image.encode(*encoding);
-            job->output.write(encoding->bytes());
+            job->output.write(job->image.encode(*encoding));
         } catch (...) {
             *error = std::current_exception();
         }

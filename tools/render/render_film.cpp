@@ -99,6 +99,7 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     progress.finish(final_state);
     if (renderer.samples_per_pixel() == 0) return outcome;
     outcome.image = writer.image(final_state.elapsed_seconds, std::move(reuse), read_later);
+    outcome.image.denoiser = plan.denoiser;
     outcome.rendered = true;
 
     outcome.stats = renderer_stats(renderer);

@@ -3,11 +3,14 @@
 // and by every frame of an animation.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "frame_claim.h"
 #include "orb/cli/output_file.h"
+#include "orb/denoise/denoise_exr.h"
 #include "orb/exr/film_exr.h"
 #include "orb/render/progressive.h"
 #include "orb/render/renderer.h"
@@ -33,6 +36,10 @@ struct FinalImage {
     exr::ExrMetadata metadata;
     exr::ExrWriteOptions options;
     std::optional<render::PendingFilm> arriving;  // set while the film is on its way
+    // --denoise: adds the denoised layer to the encoded image (final images
+    // only, never checkpoints).
+    std::shared_ptr<denoise::Denoiser> denoiser = nullptr;
+    std::string denoised_bytes = {};  // the file encode(into) returns when denoised
 
     // Waits for the film, if it is still on its way.
     void wait_for_film() {
@@ -41,11 +48,16 @@ struct FinalImage {
     }
     std::string encode() {
         wait_for_film();
-        return exr::encode_film_exr(film, metadata, options);
+        std::string bytes = exr::encode_film_exr(film, metadata, options);
+        return denoiser ? denoise::add_denoised_layer(bytes, "the rendered image", *denoiser) : bytes;
     }
-    void encode(exr::ExrEncoding& into) {
+    // The file's bytes, valid until `into` or this image encodes again.
+    std::string_view encode(exr::ExrEncoding& into) {
         wait_for_film();
         exr::encode_film_exr(film, metadata, options, into);
+        if (!denoiser) return into.bytes();
+        denoised_bytes = denoise::add_denoised_layer(into.bytes(), "the rendered image", *denoiser);
+        return denoised_bytes;
     }
 };
 

@@ -65,6 +65,8 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_option("--compression", o.compression,
                    "EXR compression, all lossless: zip (default), zips, piz, rle or none")
         ->check(CLI::IsMember(exr::compression_names()));
+    app.add_flag("--denoise", o.denoise,
+                 "Add a layer 'denoised' to the final image (Intel Open Image Denoise; adds albedo,normal to --passes)");
     app.add_option("--stats-json", o.stats_json, "Write the run's figures as JSON to FILE (- for stdout)");
     app.add_flag("--benchmark", o.benchmark, "Time warm-up and timed passes, write no image, print samples_per_second=");
     app.add_option("--benchmark-seconds", o.benchmark_seconds, "Timed part of --benchmark (default 5)")->check(seconds);
@@ -134,6 +136,7 @@ void check_option_combinations(const RenderOptions& o) {
                                   : o.time_limit      ? "--time"
                                   : o.half            ? "--half"
                                   : o.compression && !renders_frames(o) ? "--compression (but --benchmark --frames takes it)"
+                                  : o.denoise         ? "--denoise"
                                                       : nullptr;
         if (conflicting)
             throw UsageError(std::string("--benchmark writes no image and takes no ") + conflicting +

@@ -25,6 +25,7 @@ struct RenderOptions : request::RequestOptions {
     std::optional<double> checkpoint;
     std::string resume;
     std::optional<std::string> compression;
+    bool denoise = false;  // --denoise: add the `denoised` layer to the final image (libdenoise)
     std::string stats_json;
     bool benchmark = false;
     double benchmark_seconds = 5.0;

@@ -45,7 +45,12 @@ void require_same(const std::optional<T>& given, const T& in_file, const std::st
 
 // The layers the output will hold, and with them the film channels the
 // kernels compute (the others would never be written).
+// --denoise needs the albedo and normal the denoiser is guided by.
 void set_passes(RenderPlan& plan, std::vector<exr::Pass> passes) {
+    if (plan.denoise)
+        for (exr::Pass guide : {exr::Pass::Albedo, exr::Pass::Normal})
+            if (!exr::contains(passes, guide)) passes.push_back(guide);
+    passes = exr::parse_passes(exr::format_passes(passes));  // back in the documented order
     plan.passes = std::move(passes);
     plan.config.film_channels = film::channels_for(plan.passes);
 }
@@ -109,6 +114,8 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     plan.config.use_binary_cache = !o.no_cache;
     plan.half = o.half;
     if (o.compression) plan.compression = exr::parse_compression(*o.compression);
+    plan.denoise = o.denoise;
+    if (o.denoise && !o.missing) plan.denoiser = std::make_shared<denoise::Denoiser>(denoise::DenoiseSettings{});
 
     if (!o.resume.empty()) {
         apply_resume(o, imported, plan);
@@ -181,6 +188,7 @@ bool posed_at(const RenderPlan& plan, long frame) { return plan.frame && plan.fr
 
 exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame) {
     exr::RenderRequest request = plan.settings.request(frame, plan.scene_time);
+    if (plan.denoise) request.passes = plan.passes;  // --passes with the denoiser's guides
     request.scene = [&plan, frame] {
         if (frame && !posed_at(plan, *frame)) pose_frame(plan, *frame);
         return request::scene_identity(plan.scene, plan.scene_hash, plan.config.width, plan.config.height);

@@ -3,10 +3,12 @@
 // and checked against the command line.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "orb/denoise/denoiser.h"
 #include "orb/exr/film_exr.h"
 #include "orb/exr/render_request.h"
 #include "orb/render/renderer.h"
@@ -32,6 +34,11 @@ struct RenderPlan {
     // The film to continue from (--resume, or an output --skip-existing
     // continues); its metadata stays once its film is on the device.
     std::optional<exr::ExrFilm> resumed;
+    // --denoise: the passes include its guides, and the denoiser is loaded
+    // before anything renders (not for --missing, which renders nothing),
+    // shared by every frame.
+    bool denoise = false;
+    std::shared_ptr<denoise::Denoiser> denoiser;
 
     // Animations (--frame/--frames): the frames in order, and the scene as
     // read, posed anew for each frame by pose_frame.

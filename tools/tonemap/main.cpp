@@ -414,7 +414,7 @@ int main(int argc, char** argv) {
             app.add_option("-o,--output", s.output, "Output file ('-' = stdout, needs --format), or a directory for several inputs")
                 ->option_text("OUT");
             app.add_option("--pass", s.pass,
-                           "Pass to show: beauty, direct, indirect, emission, albedo, normal, depth, variance, id, background, or any layer name")
+                           "Pass to show: beauty, direct, indirect, emission, albedo, normal, depth, variance, id, background, denoised, or any layer name")
                 ->option_text("NAME");
             // +-100 stops keeps the gain 2^STOPS a normal float (7.9e-31 ... 1.3e30).
             app.add_option("--exposure", s.exposure, "Exposure adjustment in stops (-100 ... 100), applied in scene-linear")

@@ -64,6 +64,17 @@
     LAYER(Id, id, Id)                   \
     LAYER(Background, background, Color)
 
+/* ORB_POST_LAYERS(LAYER): layers that a tool adds to a finished render's EXR
+ * from its other layers. No kernel computes them and they hold no sums, so
+ * --passes does not take them and --resume and orb-merge drop them (they
+ * would no longer match the samples); image tools show and compare them as
+ * they do the film's layers:
+ *   LAYER(Enumerator, name, kind, (exr channel names))
+ *     Denoised  orb-denoise's (and --denoise's) image: the beauty's R,G,B
+ *               denoised by Intel Open Image Denoise, guided by albedo and
+ *               normal (docs/orb-denoise.md) */
+#define ORB_POST_LAYERS(LAYER) LAYER(Denoised, denoised, Color, ("denoised.R", "denoised.G", "denoised.B"))
+
 /* radiance     the sample's radiance L
  * alpha        1 when the camera ray hit a sphere, 0 for a miss
  * direct       light of paths with exactly one diffuse vertex
@@ -115,6 +126,7 @@ enum FilmChannelIndex { ORB_FILM_CHANNELS(ORB_FILM_CHANNEL_INDEX) FilmChannel_co
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string_view>
 
 #define ORB_FILM_INFINITY (std::numeric_limits<float>::infinity())
 
@@ -195,6 +207,39 @@ inline constexpr std::array kChannels{
     ORB_FILM_CHANNELS(ORB_FILM_CHANNEL_INFO)
 #undef ORB_FILM_CHANNEL_INFO
 };
+
+enum class PostLayer : int {
+#define ORB_FILM_POST_LAYER_ENUMERATOR(Enumerator, name, kind, names) Enumerator,
+    ORB_POST_LAYERS(ORB_FILM_POST_LAYER_ENUMERATOR)
+#undef ORB_FILM_POST_LAYER_ENUMERATOR
+};
+
+struct PostLayerInfo {
+    PostLayer layer;
+    const char* name;
+    LayerKind kind;
+    std::array<const char*, kMaxExrNames> exr_names;
+    int exr_name_count;
+};
+
+inline constexpr std::array kPostLayers{
+#define ORB_FILM_POST_LAYER_INFO(Enumerator, name, kind, names) \
+    PostLayerInfo{PostLayer::Enumerator, #name, LayerKind::kind, detail::exr_names names, detail::exr_name_count names},
+    ORB_POST_LAYERS(ORB_FILM_POST_LAYER_INFO)
+#undef ORB_FILM_POST_LAYER_INFO
+};
+
+constexpr const PostLayerInfo& info(PostLayer layer) { return kPostLayers[static_cast<std::size_t>(layer)]; }
+
+// One name is one layer: a post layer is named like no film layer.
+constexpr bool post_layers_are_distinct()
+{
+    for (const PostLayerInfo& post : kPostLayers)
+        for (const LayerInfo& layer : kLayers)
+            if (std::string_view(post.name) == layer.name) return false;
+    return true;
+}
+static_assert(post_layers_are_distinct(), "ORB_POST_LAYERS repeats a name of ORB_FILM_LAYERS");
 
 inline constexpr int kChannelCount = static_cast<int>(kChannels.size());
 inline constexpr int kLayerCount = static_cast<int>(kLayers.size());

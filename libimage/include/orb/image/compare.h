@@ -29,6 +29,10 @@ struct CompareSettings {
     double ppd = 0;                 // FLIP pixels per degree (0 = default)
     std::vector<Tolerance> thresholds; // for "% of pixels over threshold"
     bool want_heatmap = false;
+    // The test image's pass, when it is not the reference's (a denoised
+    // layer against a converged beauty); "" = the same pass. Both must be of
+    // one kind.
+    std::string test_pass;
 };
 
 struct PassComparison {

@@ -1,0 +1,227 @@
+#include "orb/denoise/denoise_exr.h"
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputPart.h>
+#include <OpenEXR/ImfMultiPartInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfPartType.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "exr_memory_streams.h"
+#include "orb/kernels/film_channels.h"
+#include "orb/scene/error.h"
+
+namespace orb::denoise {
+namespace {
+
+// Guards the allocations below against a hostile header, as libexr's reader does.
+constexpr long long kMaxPixels = 1LL << 28;
+
+// OpenEXR decodes and encodes blocks on this many threads: a 1920x1080 frame
+// of the guided layers takes seconds on one.
+int codec_threads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
+// Every channel is kept in 4 bytes a pixel whatever its type, read and
+// written back in that type, so the input's values travel bit for bit.
+struct Plane {
+    std::string name;
+    Imf::PixelType type = Imf::FLOAT;
+    std::vector<char> bytes;
+};
+
+using Names = std::array<const char*, 3>;
+
+// The three shown channels of a film channel's layer, from the table.
+Names names_of(film::Channel channel) {
+    const film::ChannelInfo& info = film::info(channel);
+    return {info.exr_names[0], info.exr_names[1], info.exr_names[2]};
+}
+Names denoised_names() {
+    const film::PostLayerInfo& info = film::info(film::PostLayer::Denoised);
+    return {info.exr_names[0], info.exr_names[1], info.exr_names[2]};
+}
+
+std::string format(const Names& names) { return std::string(names[0]) + ", " + names[1] + ", " + names[2]; }
+
+const Plane* find(const std::vector<Plane>& planes, const char* name) {
+    for (const Plane& plane : planes)
+        if (plane.name == name) return &plane;
+    return nullptr;
+}
+
+bool has_all(const std::vector<Plane>& planes, const Names& names) {
+    return std::all_of(names.begin(), names.end(), [&](const char* n) { return find(planes, n) != nullptr; });
+}
+
+// The three channels interleaved as floats; every value must be finite (the
+// filter spreads a NaN or an infinity over its whole neighbourhood).
+std::vector<float> interleave(const std::vector<Plane>& planes, const Names& names, int width,
+                              const std::string& source, const char* layer) {
+    const std::size_t pixels = static_cast<std::size_t>(width) * (planes.front().bytes.size() / 4 / width);
+    std::vector<float> rgb(pixels * 3);
+    for (int c = 0; c < 3; ++c) {
+        const Plane& plane = *find(planes, names[c]);
+        if (plane.type == Imf::UINT)
+            throw InputError(source + ": channel " + plane.name + " of the " + layer +
+                             " layer holds integers (UINT), expected HALF or FLOAT");
+        for (std::size_t i = 0; i < pixels; ++i) {
+            float value = 0;
+            if (plane.type == Imf::FLOAT) {
+                std::memcpy(&value, plane.bytes.data() + 4 * i, sizeof value);
+            } else {
+                Imath::half h;
+                std::memcpy(&h, plane.bytes.data() + 4 * i, sizeof h);
+                value = h;
+            }
+            if (!std::isfinite(value))
+                throw InputError(source + ": " + layer + " pixel (" + std::to_string(i % width) + ", " +
+                                 std::to_string(i / width) + ") channel " + plane.name + " is " +
+                                 std::to_string(value) + "; the denoiser needs finite values");
+            rgb[3 * i + c] = value;
+        }
+    }
+    return rgb;
+}
+
+struct DecodedImage {
+    Imf::Header header;
+    std::vector<Plane> planes;  // every channel but an old denoised layer's
+    int width = 0;
+    int height = 0;
+    bool had_denoised = false;
+};
+
+DecodedImage decode(std::string_view exr, const std::string& source) {
+    static constexpr char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+    if (exr.size() < 4 || std::memcmp(exr.data(), kMagic, 4) != 0)
+        throw InputError(source + ": not an OpenEXR file (expected an orb-render EXR with beauty, albedo and normal)");
+    try {
+        MemoryInput stream(exr, source);
+        Imf::MultiPartInputFile file(stream, codec_threads());
+        if (file.parts() != 1)
+            throw InputError(source + ": has " + std::to_string(file.parts()) +
+                             " parts; orb-denoise reads single-part EXRs (as orb-render writes)");
+        DecodedImage image;
+        image.header = file.header(0);
+        if (image.header.hasType() && Imf::isDeepData(image.header.type()))
+            throw InputError(source + ": is a deep EXR; orb-denoise reads flat images");
+        const Imath::Box2i window = image.header.dataWindow();
+        const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
+        const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
+        if (width <= 0 || height <= 0 || width * height > kMaxPixels)
+            throw InputError(source + ": a data window of " + std::to_string(width) + "x" + std::to_string(height) +
+                             " pixels");
+        image.width = static_cast<int>(width);
+        image.height = static_cast<int>(height);
+        const Names old = denoised_names();
+        Imf::FrameBuffer buffer;
+        for (auto it = image.header.channels().begin(); it != image.header.channels().end(); ++it) {
+            const std::string name = it.name();
+            if (std::find(old.begin(), old.end(), name) != old.end()) {
+                image.had_denoised = true;
+                continue;
+            }
+            if (it.channel().xSampling != 1 || it.channel().ySampling != 1)
+                throw InputError(source + ": channel " + name + " is subsampled; orb-denoise reads full-resolution channels");
+            image.planes.push_back({name, it.channel().type, std::vector<char>(static_cast<std::size_t>(width * height) * 4)});
+        }
+        for (Plane& plane : image.planes)
+            buffer.insert(plane.name, Imf::Slice::Make(plane.type, plane.bytes.data(), window, 4,
+                                                        static_cast<std::size_t>(width) * 4));
+        Imf::InputPart part(file, 0);
+        part.setFrameBuffer(buffer);
+        part.readPixels(window.min.y, window.max.y);
+        return image;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError(source + ": not a readable OpenEXR image (" + e.what() + ")");
+    }
+}
+
+void require_layers(const std::vector<Plane>& planes, const std::string& source) {
+    const Names beauty = names_of(film::Channel::radiance);
+    if (!has_all(planes, beauty))
+        throw InputError(source + ": no beauty layer (" + format(beauty) + ") to denoise");
+    const Names albedo = names_of(film::Channel::albedo);
+    const Names normal = names_of(film::Channel::normal);
+    std::string missing;
+    if (!has_all(planes, albedo)) missing = "no albedo layer (" + format(albedo) + ")";
+    if (!has_all(planes, normal))
+        missing += (missing.empty() ? "no " : " and no ") + std::string("normal layer (") + format(normal) + ")";
+    if (!missing.empty())
+        throw InputError(source + ": " + missing +
+                         "; the denoiser needs both to keep edges and textures: render with --passes "
+                         "beauty,albedo,normal (orb-render --denoise adds them)");
+}
+
+std::string encode(DecodedImage& image, const std::vector<float>& denoised, const std::string& description) {
+    const Names names = denoised_names();
+    const Imf::PixelType type = find(image.planes, names_of(film::Channel::radiance)[0])->type;
+    const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+    for (int c = 0; c < 3; ++c) {
+        Plane plane{names[c], type, std::vector<char>(pixels * 4)};
+        for (std::size_t i = 0; i < pixels; ++i) {
+            const float value = denoised[3 * i + c];
+            if (type == Imf::HALF) {
+                const Imath::half h(value);
+                std::memcpy(plane.bytes.data() + 4 * i, &h, sizeof h);
+            } else {
+                std::memcpy(plane.bytes.data() + 4 * i, &value, sizeof value);
+            }
+        }
+        image.planes.push_back(std::move(plane));
+    }
+
+    Imf::Header header = image.header;
+    // Written as scanlines, whatever the input's layout was.
+    if (header.hasTileDescription()) header.erase("tiles");
+    if (header.hasType()) header.setType(Imf::SCANLINEIMAGE);
+    if (header.lineOrder() == Imf::RANDOM_Y) header.lineOrder() = Imf::INCREASING_Y;
+    Imf::ChannelList channels;
+    for (const Plane& plane : image.planes) channels.insert(plane.name, Imf::Channel(plane.type));
+    header.channels() = channels;
+    header.insert(kDenoisedAttribute, Imf::StringAttribute(description));
+
+    const Imath::Box2i window = header.dataWindow();
+    Imf::FrameBuffer buffer;
+    for (Plane& plane : image.planes)
+        buffer.insert(plane.name, Imf::Slice::Make(plane.type, plane.bytes.data(), window, 4,
+                                                    static_cast<std::size_t>(image.width) * 4));
+    std::string bytes;
+    MemoryOutput stream(bytes);
+    Imf::OutputFile file(stream, header, codec_threads());
+    file.setFrameBuffer(buffer);
+    file.writePixels(image.height);
+    return bytes;
+}
+
+}  // namespace
+
+std::string add_denoised_layer(std::string_view exr, const std::string& source, Denoiser& denoiser) {
+    DecodedImage image = decode(exr, source);
+    require_layers(image.planes, source);
+    const std::vector<float> color = interleave(image.planes, names_of(film::Channel::radiance), image.width, source, "beauty");
+    const std::vector<float> albedo = interleave(image.planes, names_of(film::Channel::albedo), image.width, source, "albedo");
+    const std::vector<float> normal = interleave(image.planes, names_of(film::Channel::normal), image.width, source, "normal");
+    const std::vector<float> denoised =
+        denoiser.denoise({image.width, image.height, color.data(), albedo.data(), normal.data()});
+    try {
+        return encode(image, denoised, denoiser.description());
+    } catch (const std::exception& e) {
+        throw std::runtime_error(source + ": cannot encode the denoised image: " + e.what());
+    }
+}
+
+}  // namespace orb::denoise
