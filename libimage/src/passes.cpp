@@ -165,6 +165,7 @@ PassKind kind_of_pass(const std::string& canonical_name) {
             case film::LayerKind::Depth: return PassKind::Depth;
             case film::LayerKind::Id: return PassKind::Id;
             case film::LayerKind::Variance: return PassKind::Variance;
+            case film::LayerKind::Count: return PassKind::Data;
         }
     }
     return PassKind::Color;  // a colour layer of another renderer's file

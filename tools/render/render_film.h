@@ -9,6 +9,7 @@
 #include "frame_claim.h"
 #include "orb/cli/output_file.h"
 #include "orb/exr/film_exr.h"
+#include "orb/render/adaptive_sampler.h"
 #include "orb/render/progressive.h"
 #include "orb/render/renderer.h"
 #include "render_options.h"

@@ -9,6 +9,7 @@
 
 #include "orb/exr/film_exr.h"
 #include "orb/exr/render_request.h"
+#include "orb/render/adaptive_sampler.h"
 #include "orb/render/renderer.h"
 #include "orb/request/request_settings.h"
 #include "orb/scene/scene.h"
@@ -32,6 +33,9 @@ struct RenderPlan {
     // The film to continue from (--resume, or an output --skip-existing
     // continues); its metadata stays once its film is on the device.
     std::optional<exr::ExrFilm> resumed;
+    // Adaptive sampling: from the command line, else the resumed file's. Its
+    // layers (variance, and samples for a noise threshold) are in `passes`.
+    render::AdaptiveSettings adaptive;
 
     // Animations (--frame/--frames): the frames in order, and the scene as
     // read, posed anew for each frame by pose_frame.
