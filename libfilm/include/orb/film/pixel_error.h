@@ -24,7 +24,10 @@ inline constexpr double kRelMseEpsilon = 0.01;
 double pixel_samples(const Film& film, std::size_t pixel);
 
 // The expected relMSE of one pixel's mean: the mean over R, G, B of
-// Var[mean] / (mean^2 + kRelMseEpsilon), with Var[mean] = (S2/n - mean^2) / (n - 1).
+// Var[mean] / (A^2 + kRelMseEpsilon), with Var[mean] = (S2/n - mean^2) / (n - 1)
+// and A^2 = max(0, mean^2 - Var[mean]), since E[mean^2] = A^2 + Var[mean]:
+// with the mean's own square a firefly's large mean would cancel its large
+// variance, and the pixel would pass for converged.
 // Infinity with fewer than two samples (nothing is known). Needs the
 // radiance and radiance_sq channels (std::invalid_argument otherwise).
 double pixel_relmse(const Film& film, std::size_t pixel);
