@@ -260,3 +260,32 @@ TEST(AdaptiveRender, AContinuedRenderDecidesAsTheUninterruptedOne)
 }
 
 }  // namespace orb::render::test
+
+namespace orb::render::test {
+
+// The list of active pixels feeds one pixel a work-item at width 1 (GPUs run
+// this) and one a lane at 4 and 16: the same samples of the same pixels,
+// so the same counts and, up to float rounding, the same film.
+TEST(AdaptiveRender, EveryWidthRendersTheSamePixelsFromTheList)
+{
+    const Scene scene = ball_under_sky();
+    AdaptiveSettings settings;
+    settings.noise_threshold = 0.02;
+    std::vector<Film> films;
+    for (int lanes : {0, 4, 16}) {
+        RenderConfig config = adaptive_config(20, 14);
+        config.development.simd_lanes = lanes;
+        Renderer renderer(scene, config);
+        renderer.clear();
+        films.push_back(render_adaptively(renderer, settings, 64).film);
+    }
+    for (std::size_t i = 1; i < films.size(); ++i) {
+        EXPECT_EQ(films[i].sample_count, films[0].sample_count) << i;
+        expect_same_films_up_to_rounding(films[0], films[i]);
+    }
+    float fewest = 1e9f;
+    for (float count : films[0].sample_count) fewest = std::min(fewest, count);
+    EXPECT_LT(fewest, 64.0f);  // some pixels did stop
+}
+
+}  // namespace orb::render::test
