@@ -1,6 +1,7 @@
 #include "orb/render/adaptive_sampler.h"
 
 #include <algorithm>
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
 
@@ -104,6 +105,7 @@ void AdaptiveSampler::decide()
 
 void AdaptiveSampler::decide_among(const std::vector<std::uint32_t>& candidates)
 {
+    const auto began = std::chrono::steady_clock::now();
     renderer_.read_film(film_);
     const std::vector<double> errors = film::pixel_relmse(film_);
     estimated_relmse_ = film::frame_relmse(errors);
@@ -113,6 +115,8 @@ void AdaptiveSampler::decide_among(const std::vector<std::uint32_t>& candidates)
         if (active_.empty()) stop_ = StopReason::Converged;
     }
     if (settings_.target_error && *estimated_relmse_ < *settings_.target_error) stop_ = StopReason::ReachedError;
+    ++decisions_;
+    decision_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 }
 
 }  // namespace orb::render

@@ -117,6 +117,8 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     if (adaptive) {
         stats.estimated_relmse = adaptive->estimated_relmse();
         stats.active_pixels = adaptive->active_pixel_count();
+        stats.decisions = adaptive->decisions();
+        stats.decision_seconds = adaptive->decision_seconds();
     }
     stats.passes = final_state.pass;
     stats.seconds = final_state.elapsed_seconds;

@@ -42,6 +42,8 @@ nlohmann::ordered_json to_json(const RunStats& s) {
     if (s.setup_seconds) j["setup_seconds"] = *s.setup_seconds;
     if (s.estimated_relmse) j["estimated_relmse"] = *s.estimated_relmse;
     if (s.active_pixels) j["active_pixels"] = *s.active_pixels;
+    if (s.decisions) j["decisions"] = *s.decisions;
+    if (s.decision_seconds) j["decision_seconds"] = *s.decision_seconds;
     if (s.frame) j["frame"] = *s.frame;
     return j;
 }

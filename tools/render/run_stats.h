@@ -29,6 +29,8 @@ struct RunStats {
     // Adaptive sampling: the image's estimated relMSE at the last decision, and the pixels still sampling then.
     std::optional<double> estimated_relmse;
     std::optional<std::size_t> active_pixels;
+    std::optional<int> decisions;            // adaptive sampling's decisions in this run
+    std::optional<double> decision_seconds;  // and their time (part of `seconds`)
     int passes = 0;
     double seconds = 0;              // this run's rendering (or timed benchmark) time
     double samples_per_second = 0;   // pixel samples per second over `seconds`

@@ -70,7 +70,7 @@ ExrCompression parse_compression(const std::string& name);
 
 struct ExrWriteOptions {
     bool half = false;  // HALF for colour layers; Z, id and orb.* stay FLOAT
-    std::vector<Pass> passes = all_passes();
+    std::vector<Pass> passes = image_passes();
     ExrCompression compression = ExrCompression::Zip;
 };
 

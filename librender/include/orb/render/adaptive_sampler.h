@@ -57,6 +57,11 @@ public:
     // The frame's estimated relMSE at the last decision (none before one).
     std::optional<double> estimated_relmse() const { return estimated_relmse_; }
     std::size_t active_pixel_count() const;
+    // Decisions made, and the seconds they took (the film's read-back, the
+    // estimates, the list's upload): what adaptive sampling costs on top of
+    // the passes.
+    int decisions() const { return decisions_; }
+    double decision_seconds() const { return decision_seconds_; }
 
 private:
     // Reads the film and decides among `candidates`.
@@ -68,6 +73,8 @@ private:
     std::vector<std::uint32_t> active_;  // with a noise threshold: the pixels still sampling
     std::optional<StopReason> stop_;
     std::optional<double> estimated_relmse_;
+    int decisions_ = 0;
+    double decision_seconds_ = 0;
 };
 
 }  // namespace orb::render
