@@ -116,4 +116,5 @@ LANE_FN void film_add_sample(FilmSums* sums, const PathSample* s, lmask lanes)
     sums->normal = lv3_add_where(sums->normal, s->normal, lanes);
     sums->radiance_sq = lv3_add_where(sums->radiance_sq, lv3_mul(radiance, radiance), lanes);
     sums->background = lv3_add_where(sums->background, background, lanes);
+    sums->sample_count = lselect(sums->sample_count, sums->sample_count + 1.0f, lanes);
 }

@@ -35,6 +35,16 @@
 // then hash together instead of in turn (3% more samples/s on the Cornell
 // box, docs/design/sampler.md).
 
+// A lane's row: with a list of active pixels (adaptive sampling) each lane
+// has its own; otherwise the work-item's lanes share one.
+#if ORB_ACTIVE_PIXELS
+typedef lint PixelRow;
+#define ROW_AS_FLOAT(y) to_lfloat(y)
+#else
+typedef int PixelRow;
+#define ROW_AS_FLOAT(y) ((float)(y))
+#endif
+
 // The state of each lane's camera path between two ray casts.
 typedef struct {
     lv3 o, d;      // the ray to cast next
@@ -53,7 +63,7 @@ typedef struct {
 // Starts, for the lanes in `lanes`, the camera path of each lane's sample
 // (`coords`) of pixel (x, y) (RNG block 0: pair 0 jitters the pixel, pair 1,
 // drawn only for a thin lens, the lens). The other lanes keep their state.
-LANE_FN void begin_camera_paths(const CameraParams* cam, lint x, int y, int width, int height,
+LANE_FN void begin_camera_paths(const CameraParams* cam, lint x, PixelRow y, int width, int height,
                                 const SampleCoords* coords, lmask lanes, PathState* path, PathSample* out)
 {
     const RandBlock r = rand_block(coords, (luint)(0u), lanes);
@@ -61,7 +71,7 @@ LANE_FN void begin_camera_paths(const CameraParams* cam, lint x, int y, int widt
     rand_pair(&r, 0u, lanes, &jitter_x, &jitter_y);
     if (cam->lens_radius > 0.0f) rand_pair(&r, 1u, lanes, &lens_u, &lens_v);
     lv3 o, d;
-    camera_ray(cam, to_lfloat(x) + jitter_x, (float)y + jitter_y, width, height, lens_u, lens_v, &o, &d);
+    camera_ray(cam, to_lfloat(x) + jitter_x, ROW_AS_FLOAT(y) + jitter_y, width, height, lens_u, lens_v, &o, &d);
     path->o = lv3_select(path->o, o, lanes);
     path->d = lv3_select(path->d, d, lanes);
     path->self = lselect(path->self, (lint)(-1), lanes);
@@ -352,13 +362,36 @@ inline FilmCentre film_centre_ray(const SceneView* scene, const CameraParams* ca
     scene.bvh_node_count = params.scene.bvh_node_count;                                              \
     scene.caster_count = params.scene.caster_count;                                                  \
     scene.environment = params.environment;
-__kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG))
+__kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KERNEL_TABLE_ARG, ORB_KERNEL_PARAMS_ARG),
+                          __global const uint* active_pixels)
 {
     const int width = params.settings.width;
     const int height = params.settings.height;
+#if ORB_ACTIVE_PIXELS
+    // Adaptive sampling: work-item i renders entries i * ORB_LANES ... of the
+    // list of pixels still sampling (device_types.h), one a lane, so that the
+    // lanes and warps stay full however few pixels are left. The list is
+    // ascending: its padding comes last, and neighbouring entries are mostly
+    // neighbouring pixels.
+    const uint entry = (uint)get_global_id(0) * ORB_LANES;
+    if (active_pixels[entry] == ORB_NO_PIXEL) return;
+    luint pixels = (luint)(0u);
+    lint x = (lint)(0);
+    PixelRow y = (lint)(0);
+    lmask listed = mask_of(false);
+    for (int lane = 0; lane < ORB_LANES; ++lane) {
+        const uint p = active_pixels[entry + lane];
+        if (p == ORB_NO_PIXEL) continue;
+        set_lane_i(pixels, lane, p);
+        set_lane_i(x, lane, (int)(p % (uint)width));
+        set_lane_i(y, lane, (int)(p / (uint)width));
+        set_lane_i(listed, lane, -1);  // a mask's true: -1 in a vector lane, true at width 1
+    }
+#else
     const int x0 = (int)get_global_id(0) * ORB_LANES;
     const int y = get_global_id(1);
     if (x0 >= width || y >= height) return;
+#endif
 
     ORB_SCENE_VIEW_OF_ARGUMENTS
 
@@ -367,8 +400,10 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     const int max_depth = params.settings.max_depth;
     const int mode = params.settings.mode;
     const int sample_count = params.pass.sample_count;
+#if !ORB_ACTIVE_PIXELS
     // This work-item's pixels: lanes past the image's right edge have none.
     const int lanes_in_image = min(ORB_LANES, width - x0);
+#endif
 
     // The centre-ray channels first, on the pass that writes them. Cast after
     // the sample loop, as it once was, NVIDIA's driver 580 faulted (OpenCL
@@ -377,18 +412,34 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     // register cap but one; cast before the loop, never
     // (docs/design/nvidia-fault-36.md).
     if ((ORB_FILM_BUILT(depth) || ORB_FILM_BUILT(object_id)) && params.pass.write_centre_ray) {
+#if ORB_ACTIVE_PIXELS
+        ORB_FOR_EACH_LANE(lane, listed)
+        {
+            const uint pixel = (uint)lane_i(pixels, lane);
+            const FilmCentre centre =
+                film_centre_ray(&scene, &cam, lane_i(x, lane), lane_i(y, lane), width, height);
+            ORB_FILM_SET_CENTRE
+        }
+#else
         for (int lane = 0; lane < lanes_in_image; ++lane) {
             const uint pixel = (uint)y * (uint)width + (uint)(x0 + lane);
             const FilmCentre centre = film_centre_ray(&scene, &cam, x0 + lane, y, width, height);
             ORB_FILM_SET_CENTRE
         }
+#endif
     }
 
+#if ORB_ACTIVE_PIXELS
+    luint pixel_key = pixels;
+    for (int lane = 0; lane < ORB_LANES; ++lane)
+        set_lane_i(pixel_key, lane, sampler_pixel_key((uint)lane_i(pixels, lane), seed));
+#else
     const lint x = (lint)(x0) + lane_index();
     const luint pixels = (luint)((uint)y * (uint)width) + to_luint(x);
     luint pixel_key = pixels;
     for (int lane = 0; lane < ORB_LANES; ++lane)
         set_lane_i(pixel_key, lane, sampler_pixel_key((uint)(y * width + x0 + lane), seed));
+#endif
 
     FilmSums sums;
     film_sums_clear(&sums);
@@ -406,7 +457,11 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     path.eta2 = path.from_pdf = (lfloat)(0.0f);
     path_sample_clear(&s, mask_of(true));
     luint index = (luint)(0u);
+#if ORB_ACTIVE_PIXELS
+    lmask active = mask_and(listed, mask_of(sample_count > 0));
+#else
     lmask active = mask_and(x < width, mask_of(sample_count > 0));
+#endif
     const uint first_lo = params.pass.first_sample_lo, first_hi = params.pass.first_sample_hi;
     SampleCoords coords = sample_coords(pixel_key, pixels, first_lo, first_hi, index, seed);
     if (lanes_any(active)) begin_camera_paths(&cam, x, y, width, height, &coords, active, &path, &s);
@@ -433,9 +488,18 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
     // Read lane by lane from a copy, so that only the copy, not the sums of
     // the loop above, has its address taken (which would keep them in memory).
     const FilmSums pass_sums = sums;
+#if ORB_ACTIVE_PIXELS
+    ORB_FOR_EACH_LANE(lane, listed)
+    {
+        const uint pixel = (uint)lane_i(pixels, lane);
+        const FilmSums sums = pass_sums;
+        ORB_FILM_ADD_SUMS
+    }
+#else
     for (int lane = 0; lane < lanes_in_image; ++lane) {
         const uint pixel = (uint)y * (uint)width + (uint)(x0 + lane);
         const FilmSums sums = pass_sums;
         ORB_FILM_ADD_SUMS
     }
+#endif
 }

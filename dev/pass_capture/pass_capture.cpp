@@ -77,6 +77,10 @@ void PassCapture::write_inputs(cl::CommandQueue& queue, const PassLaunch& launch
     const cl_uint params_index = static_cast<cl_uint>(PassArg::params);
     write_file(folder / arg_file(params_index, ""), &launch.params, sizeof launch.params);
     text << "arg " << params_index << " value " << sizeof launch.params << ' ' << arg_file(params_index, "") << '\n';
+    // render_pass's argument after the list: the active pixels (a placeholder without adaptive sampling).
+    const cl_uint pixels_index = params_index + 1;
+    const std::size_t pixels_size = write_buffer(folder, queue, pixels_index, launch.active_pixels, "");
+    text << "arg " << pixels_index << " buffer " << pixels_size << ' ' << arg_file(pixels_index, "") << '\n';
     if (!text) throw std::runtime_error("capturing a pass: cannot write " + (folder / "launch.txt").string());
 }
 

@@ -110,15 +110,15 @@ TEST(PassCapture, WritesTheSecondPassExactlyAsTheRendererRanIt)
     EXPECT_GT(std::filesystem::file_size(dir.path() / "program.bin"), 0u);
 
     // One line per argument, in the kernel's order: the film channels, then
-    // each scene table, then the parameters.
+    // each scene table, then the parameters, then the active pixels.
     const int film_args = film::kChannelCount;
-    ASSERT_EQ(args.size(), static_cast<std::size_t>(PassArg::count));
-    ASSERT_EQ(args.size(), film_args + kSceneTableCount + 1);
+    ASSERT_EQ(args.size(), static_cast<std::size_t>(PassArg::count) + 1);
+    ASSERT_EQ(args.size(), film_args + kSceneTableCount + 2);
     for (std::size_t i = 0; i < args.size(); ++i) {
         EXPECT_EQ(args[i].index, static_cast<int>(i));
         EXPECT_EQ(args[i].kind, i < static_cast<std::size_t>(film_args) ? "film"
-                                : i + 1 < args.size()                    ? "buffer"
-                                                                         : "value");
+                                : i + 2 == args.size()                   ? "value"
+                                                                         : "buffer");
         EXPECT_EQ(std::filesystem::file_size(dir.path() / args[i].file), args[i].bytes) << args[i].file;
     }
 

@@ -21,5 +21,7 @@ inline constexpr const char* kPasses = "orb:passes";
 inline constexpr const char* kEnvironmentSeen = "orb:environmentSeen";
 inline constexpr const char* kFrame = "orb:frame";
 inline constexpr const char* kFps = "orb:fps";
+inline constexpr const char* kNoiseThreshold = "orb:noiseThreshold";
+inline constexpr const char* kTargetError = "orb:targetError";
 
 }  // namespace orb::exr::attr

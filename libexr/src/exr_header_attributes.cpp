@@ -45,6 +45,8 @@ std::vector<HeaderAttribute> header_attributes(const Film& film, const ExrMetada
         a.push_back({attr::kFrame, checked_int(m.frame->number, attr::kFrame)});
         a.push_back({attr::kFps, m.frame->fps});
     }
+    if (m.noise_threshold) a.push_back({attr::kNoiseThreshold, *m.noise_threshold});
+    if (m.target_error) a.push_back({attr::kTargetError, *m.target_error});
     // OpenEXR's standard names and types (ImfStandardAttributes.h).
     a.push_back({"worldToCamera", m.world_to_camera});
     a.push_back({"worldToNDC", m.world_to_ndc});

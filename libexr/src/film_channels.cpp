@@ -13,6 +13,26 @@ using film::StoredAs;
 using Sums = std::vector<float>;
 using Planes = std::map<std::string, std::vector<float>>;
 
+// The samples each pixel's sums are over: the film's samples_per_pixel, or,
+// in a file with the samples layer (adaptive sampling), each pixel's own
+// count from the sample_count channel.
+struct Counts {
+    double uniform = 0;
+    const float* per_pixel = nullptr;
+
+    double at(std::size_t pixel) const { return per_pixel ? static_cast<double>(per_pixel[pixel]) : uniform; }
+};
+
+Counts film_counts(const Film& film, const std::vector<Pass>& passes) {
+    Counts counts{static_cast<double>(film.samples_per_pixel), nullptr};
+    if (contains(passes, film::Layer::Samples)) {
+        if (film.sample_count.size() != film.pixel_count())
+            throw std::invalid_argument("the samples layer needs the film's sample_count channel");
+        counts.per_pixel = film.sample_count.data();
+    }
+    return counts;
+}
+
 // Each of these fills pixels [first, end) of its output planes.
 
 // Means are computed in double and rounded once, so mean * n gives the sum
@@ -20,9 +40,18 @@ using Planes = std::map<std::string, std::vector<float>>;
 // double's rounding of the quotient, so the same float nearly always) and
 // every component in one sweep over the sums: this is most of what writing a
 // frame costs besides compressing it.
-void mean_channel(const Sums& sums, int components, double n, std::span<const Plane> out, std::size_t first,
-                  std::size_t end) {
-    const double inverse = 1.0 / n;
+void mean_channel(const Sums& sums, int components, const Counts& counts, std::span<const Plane> out,
+                  std::size_t first, std::size_t end) {
+    if (counts.per_pixel) {
+        for (std::size_t i = first; i < end; ++i) {
+            const double n = counts.at(i);
+            for (int c = 0; c < components; ++c)
+                out[c].values[i] =
+                    n > 0 ? static_cast<float>(static_cast<double>(sums[i * components + c]) / n) : 0.0f;
+        }
+        return;
+    }
+    const double inverse = 1.0 / counts.uniform;
     if (components == 1) {
         float* to = out[0].values.data();
         for (std::size_t i = first; i < end; ++i) to[i] = static_cast<float>(static_cast<double>(sums[i]) * inverse);
@@ -36,14 +65,14 @@ void mean_channel(const Sums& sums, int components, double n, std::span<const Pl
 // Variance of the pixel mean: the unbiased sample variance divided by n,
 // (sum_sq/n - mean^2) * n/(n-1) / n. Zero with fewer than two samples,
 // where it is unknown (and where sum_sq = mean^2 recovers exactly).
-void variance_channel(const Sums& sums, const Sums& sums_sq, int components, int component, std::uint64_t n,
+void variance_channel(const Sums& sums, const Sums& sums_sq, int components, int component, const Counts& counts,
                       std::span<float> out, std::size_t first, std::size_t end) {
-    if (n < 2) {
-        std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(end), 0.0f);
-        return;
-    }
-    const double nd = static_cast<double>(n);
     for (std::size_t i = first; i < end; ++i) {
+        const double nd = counts.at(i);
+        if (nd < 2) {
+            out[i] = 0.0f;
+            continue;
+        }
         const double mean = static_cast<double>(sums[i * components + component]) / nd;
         const double mean_sq = static_cast<double>(sums_sq[i * components + component]) / nd;
         out[i] = static_cast<float>(std::max(0.0, mean_sq - mean * mean) / (nd - 1.0));
@@ -52,9 +81,10 @@ void variance_channel(const Sums& sums, const Sums& sums_sq, int components, int
 
 // The mean normalised (0 where it is 0), then its length: planes
 // out[0 .. components-1] and out[components].
-void unit_vector_planes(const Sums& sums, int components, double n, std::span<const Plane> out, std::size_t first,
-                        std::size_t end) {
+void unit_vector_planes(const Sums& sums, int components, const Counts& counts, std::span<const Plane> out,
+                        std::size_t first, std::size_t end) {
     for (std::size_t i = first; i < end; ++i) {
+        const double n = counts.at(i) > 0 ? counts.at(i) : 1.0;  // no samples: the sums are 0
         double mean[3] = {0, 0, 0};
         double length_sq = 0;
         for (int c = 0; c < components; ++c) {
@@ -79,33 +109,34 @@ const std::vector<float>& plane(const Planes& planes, const std::string& name) {
     return it->second;
 }
 
-void recover_means(const Planes& planes, const ChannelInfo& channel, double n, Sums& sums) {
+void recover_means(const Planes& planes, const ChannelInfo& channel, const Counts& counts, Sums& sums) {
     const int components = channel.components;
     for (int c = 0; c < components; ++c) {
         const auto& means = plane(planes, channel.exr_names[c]);
         for (std::size_t i = 0; i < means.size(); ++i)
-            sums[i * components + c] = static_cast<float>(static_cast<double>(means[i]) * n);
+            sums[i * components + c] = static_cast<float>(static_cast<double>(means[i]) * counts.at(i));
     }
 }
 
-void recover_unit_vector(const Planes& planes, const ChannelInfo& channel, double n, Sums& sums) {
+void recover_unit_vector(const Planes& planes, const ChannelInfo& channel, const Counts& counts, Sums& sums) {
     const int components = channel.components;
     const auto& length = plane(planes, channel.exr_names[components]);
     for (int c = 0; c < components; ++c) {
         const auto& unit = plane(planes, channel.exr_names[c]);
         for (std::size_t i = 0; i < unit.size(); ++i)
-            sums[i * components + c] = static_cast<float>(static_cast<double>(unit[i]) * length[i] * n);
+            sums[i * components + c] = static_cast<float>(static_cast<double>(unit[i]) * length[i] * counts.at(i));
     }
 }
 
 // sum_sq = n ((n-1) var + mean^2), from the paired channel's stored mean.
-void recover_second_moment(const Planes& planes, const ChannelInfo& channel, double n, Sums& sums_sq) {
+void recover_second_moment(const Planes& planes, const ChannelInfo& channel, const Counts& counts, Sums& sums_sq) {
     const ChannelInfo& paired = film::info(channel.paired);
     const int components = channel.components;
     for (int c = 0; c < components; ++c) {
         const auto& variance = plane(planes, channel.exr_names[c]);
         const auto& mean = plane(planes, paired.exr_names[c]);
         for (std::size_t i = 0; i < variance.size(); ++i) {
+            const double n = counts.at(i);
             const double m = mean[i];
             sums_sq[i * components + c] =
                 static_cast<float>(n * ((n - 1.0) * static_cast<double>(variance[i]) + m * m));
@@ -150,7 +181,7 @@ std::vector<Plane> plane_layout(const Film& film, const std::vector<Pass>& passe
 void fill_planes(const Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
                  std::size_t first, std::size_t end) {
     if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
-    const double n = static_cast<double>(film.samples_per_pixel);
+    const Counts n = film_counts(film, passes);
     std::size_t next = 0;  // the planes come in plane_layout's order
     for (Pass pass : passes) {
         for (const ChannelInfo* channel : pass_film_channels(pass)) {
@@ -167,8 +198,8 @@ void fill_planes(const Film& film, const std::vector<Pass>& passes, const std::v
                     break;
                 case StoredAs::VarianceOfMean:
                     for (int c = 0; c < components; ++c)
-                        variance_channel(film.channel(channel->paired), sums, components, c, film.samples_per_pixel,
-                                         planes[next++].values, first, end);
+                        variance_channel(film.channel(channel->paired), sums, components, c, n, planes[next++].values,
+                                         first, end);
                     break;
                 case StoredAs::Value:
                     for (int c = 0; c < components; ++c) component_values(sums, components, c, planes[next++].values, first, end);
@@ -187,7 +218,12 @@ std::vector<Plane> film_to_planes(const Film& film, const std::vector<Pass>& pas
 }
 
 void planes_to_film(const Planes& planes, const std::vector<Pass>& passes, Film& film) {
-    const double n = static_cast<double>(film.samples_per_pixel);
+    // The pixels' own counts first: every mean is over them.
+    if (contains(passes, film::Layer::Samples))
+        recover_values(planes, film::info(film::Channel::sample_count), film.sample_count);
+    else  // every pixel holds the film's samples
+        film.sample_count.assign(film.pixel_count(), static_cast<float>(film.samples_per_pixel));
+    const Counts n = film_counts(film, passes);
     for (Pass pass : passes) {
         for (const ChannelInfo* channel : pass_film_channels(pass)) {
             Sums& sums = film.channel(channel->channel);

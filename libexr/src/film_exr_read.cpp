@@ -9,11 +9,13 @@
 #include <OpenEXR/ImfTestFile.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <stdexcept>
+#include <utility>
 
 #include "exr_attributes.h"
 #include "film_channels.h"
@@ -117,6 +119,12 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
     m.world_to_ndc = from_imath(Imf::worldToNDC(header));
     if (const auto* seen = header.findTypedAttribute<Imf::IntAttribute>(attr::kEnvironmentSeen))
         m.environment_seen = seen->value() != 0;
+    for (auto [name, value] : {std::pair{attr::kNoiseThreshold, &m.noise_threshold}, std::pair{attr::kTargetError, &m.target_error}})
+        if (const auto* given = header.findTypedAttribute<Imf::DoubleAttribute>(name)) {
+            if (!(given->value() > 0) || !std::isfinite(given->value()))
+                fail(path, std::string(name) + " must be a positive number, got " + std::to_string(given->value()));
+            *value = given->value();
+        }
     if (const auto* frame = header.findTypedAttribute<Imf::IntAttribute>(attr::kFrame)) {
         const auto& fps = required<Imf::DoubleAttribute>(header, attr::kFps, path);
         m.frame = FrameInfo{frame->value(), fps.value()};
@@ -257,7 +265,8 @@ void require_resumable(const ExrFilm& file, const std::vector<Pass>& wanted, con
     if (file.half)
         fail(path, "was written with --half; resuming within float rounding needs FLOAT channels (render without --half to resume)");
     for (Pass pass : wanted)
-        if (!contains(file.passes, pass))
+        // A file without per-pixel counts holds orb:spp samples in every pixel (planes_to_film fills them in).
+        if (!contains(file.passes, pass) && pass != film::Layer::Samples)
             fail(path, std::string("has no ") + pass_name(pass) + " pass to continue (it holds " +
                            format_passes(file.passes) + ")");
     // A variance is continued from its sum of squares, which needs the mean it is the variance of.

@@ -14,6 +14,15 @@ const std::vector<Pass>& all_passes() {
     return passes;
 }
 
+const std::vector<Pass>& image_passes() {
+    static const std::vector<Pass> passes = [] {
+        std::vector<Pass> list = all_passes();
+        list.erase(std::find(list.begin(), list.end(), film::Layer::Samples));
+        return list;
+    }();
+    return passes;
+}
+
 const char* pass_name(Pass pass) { return film::info(pass).name; }
 
 std::vector<const film::ChannelInfo*> pass_film_channels(Pass pass) {
@@ -53,7 +62,8 @@ std::vector<Pass> parse_passes(const std::string& list) {
         const std::string item = list.substr(start, comma - start);
         start = comma + 1;
         if (item == "all") {
-            chosen = all_passes();
+            for (Pass p : image_passes())
+                if (!contains(chosen, p)) chosen.push_back(p);
             continue;
         }
         auto match = std::find_if(all_passes().begin(), all_passes().end(),

@@ -165,6 +165,7 @@ PassKind pass_kind(film::LayerKind kind) {
         case film::LayerKind::Depth: return PassKind::Depth;
         case film::LayerKind::Id: return PassKind::Id;
         case film::LayerKind::Variance: return PassKind::Variance;
+        case film::LayerKind::Count: return PassKind::Data;
     }
     return PassKind::Data;
 }

@@ -1,5 +1,6 @@
 #include "device_renderer.h"
 
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -101,6 +102,13 @@ DeviceRenderer::DeviceRenderer(std::shared_ptr<DeviceSession> session, const Ren
     settings.max_depth = config_.max_depth;
     settings.mode = static_cast<int>(config_.mode);
     set_seed(config_.seed);
+    try {
+        const device::uint none = ORB_NO_PIXEL;
+        active_pixels_ = cl::Buffer(session_->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof none,
+                                    const_cast<device::uint*>(&none));
+    } catch (const cl::Error& error) {
+        fail(error, "allocating the list of active pixels");
+    }
     clear_film();
 }
 
@@ -144,6 +152,7 @@ device::KernelFeatures render_features(DeviceSession& session, const SceneLayout
     features.sampler_sobol = config.sampler == SamplerKind::Sobol;
     features.film_channels_built = config.film_channels;
     features.lanes = simd_lanes > 0 ? simd_lanes : 1;
+    features.active_pixels = config.adaptive;
     return features;
 }
 
@@ -168,7 +177,9 @@ void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraPar
         }
         upload_scene(session_->context(), session_->queue(), scene.tables, scene_buffers_);
         scene_bytes_ = scene_table_bytes(scene.tables);
-        bind_buffers(kernel_, film_, scene_buffers_);
+        bind_buffers(kernel_, film_, scene_buffers_, 1);
+        if (config_.adaptive) upload_active_pixels();
+        kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
     } catch (const cl::Error& error) {
         fail(error, "uploading the scene");
     }
@@ -221,12 +232,63 @@ void DeviceRenderer::choose_work_sizes()
     const size_t max_group = kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(session_->device());
     while (lx * ly > max_group && ly > 1) ly /= 2;
     while (lx * ly > max_group && lx > 1) lx /= 2;
+    if (config_.adaptive) {
+        // A list, not the image's grid: one dimension, the same work-group size.
+        local_size_ = cl::NDRange(lx * ly, 1);
+        return;  // the global size follows the list (upload_active_pixels)
+    }
     local_size_ = cl::NDRange(lx, ly);
     const auto round_up = [](size_t n, size_t m) { return (n + m - 1) / m * m; };
     const size_t columns = simd_lanes_ > 0 ? (static_cast<size_t>(config_.width) + simd_lanes_ - 1) / simd_lanes_
                                            : static_cast<size_t>(config_.width);
     global_size_ = cl::NDRange(round_up(columns, lx),
                                round_up(static_cast<size_t>(config_.height), ly));
+}
+
+std::size_t DeviceRenderer::active_pixel_count() const
+{
+    return active_list_ ? active_list_->size()
+                        : static_cast<std::size_t>(config_.width) * static_cast<std::size_t>(config_.height);
+}
+
+void DeviceRenderer::set_active_pixels(const std::vector<std::uint32_t>& pixels)
+{
+    if (!config_.adaptive) throw std::logic_error("set_active_pixels needs a renderer made for adaptive sampling");
+    const std::size_t image = static_cast<std::size_t>(config_.width) * static_cast<std::size_t>(config_.height);
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        if (pixels[i] >= image || (i > 0 && pixels[i] <= pixels[i - 1]))
+            throw std::invalid_argument("active pixels must be ascending indices into the image");
+    active_list_ = pixels;
+    if (program_) {
+        try {
+            upload_active_pixels();
+            kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
+        } catch (const cl::Error& error) {
+            fail(error, "uploading the list of active pixels");
+        }
+    }
+}
+
+// The list padded with ORB_NO_PIXEL to whole work-groups of ORB_LANES
+// entries per work-item, and the launch over it. At least one work-group,
+// which prepare_kernel launches.
+void DeviceRenderer::upload_active_pixels()
+{
+    const std::size_t lanes = simd_lanes_ > 0 ? static_cast<std::size_t>(simd_lanes_) : 1;
+    const std::size_t group = local_size_[0] * local_size_[1];
+    const std::size_t count = active_pixel_count();
+    const std::size_t items = std::max<std::size_t>(group, (count + lanes - 1) / lanes);
+    const std::size_t global = (items + group - 1) / group * group;
+    std::vector<device::uint> padded(global * lanes, ORB_NO_PIXEL);
+    if (active_list_)
+        std::copy(active_list_->begin(), active_list_->end(), padded.begin());
+    else
+        std::iota(padded.begin(), padded.begin() + static_cast<std::ptrdiff_t>(count), device::uint{0});
+    const std::size_t bytes = padded.size() * sizeof(device::uint);
+    if (active_pixels_.getInfo<CL_MEM_SIZE>() < bytes)
+        active_pixels_ = cl::Buffer(session_->context(), CL_MEM_READ_ONLY, bytes);
+    session_->queue().enqueueWriteBuffer(active_pixels_, CL_TRUE, 0, bytes, padded.data());
+    global_size_ = cl::NDRange(global, 1);
 }
 
 void DeviceRenderer::clear_film()
@@ -244,6 +306,7 @@ void DeviceRenderer::enqueue(std::uint64_t first_sample, int count)
     if (count < 0) throw std::invalid_argument("a pass cannot add a negative number of samples");
     if (count == 0) return;
     if (!program_) throw std::logic_error("DeviceRenderer::enqueue before set_scene");
+    if (config_.adaptive && active_pixel_count() == 0) return;  // every pixel has stopped: nothing to launch
     if (pending_samples_ == 0) pending_since_ = std::chrono::steady_clock::now();
     try {
         device::PassRange& pass = params_.pass;
@@ -254,7 +317,8 @@ void DeviceRenderer::enqueue(std::uint64_t first_sample, int count)
         bind_params(kernel_, params_);
         cl::CommandQueue& queue = session_->queue();
         PassObserver* observer = config_.development.pass_observer.get();
-        const PassLaunch launch{*program_, kernel_, film_, scene_buffers_, params_, global_size_, local_size_};
+        const PassLaunch launch{*program_, kernel_,      film_,        scene_buffers_,
+                                 params_,   active_pixels_, global_size_, local_size_};
         const bool observed = observer && observer->pass_launching(queue, launch);
         queue.enqueueNDRangeKernel(kernel_, cl::NullRange, global_size_, local_size_);
         queue.flush();  // start now: another device may be waiting for its turn

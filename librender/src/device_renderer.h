@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "device_film.h"
 #include "device_session.h"
@@ -68,6 +69,12 @@ public:
     void enqueue(std::uint64_t first_sample, int count);
     void wait();
 
+    // Adaptive sampling (config.adaptive): the pixels later passes render,
+    // ascending row-major indices; every pixel until this is called. Without
+    // config.adaptive the program renders every pixel and this is an error.
+    void set_active_pixels(const std::vector<std::uint32_t>& pixels);
+    std::size_t active_pixel_count() const;
+
     void read_film(Film& film);    // the sums, into `film` (its memory reused); samples and ranges are the caller's
     // The same while the device goes on (DeviceFilm::read_later).
     FilmArrival read_film_later();
@@ -85,6 +92,7 @@ public:
 private:
     std::string build_options(const SceneLayout& scene) const;
     void choose_work_sizes();
+    void upload_active_pixels();
     void prepare_kernel();
     [[noreturn]] void fail(const cl::Error& error, const std::string& what) const;
 
@@ -100,6 +108,10 @@ private:
     device::RenderPassParams params_{};
     cl::NDRange local_size_;
     cl::NDRange global_size_;
+    // render_pass's argument after the list (device_types.h): the active
+    // pixels with adaptive sampling, padded to global_size_; else a placeholder.
+    cl::Buffer active_pixels_;
+    std::optional<std::vector<std::uint32_t>> active_list_;  // none: every pixel
     bool centre_ray_pending_ = true;  // the centre-ray channels are not yet on the film
     PassTuner tuner_;
     int pending_samples_ = 0;  // enqueued since the last wait()

@@ -21,6 +21,7 @@ struct PassLaunch {
     const DeviceFilm& film;
     const SceneBuffers& scene;
     const device::RenderPassParams& params;
+    const cl::Buffer& active_pixels;  // the argument after the list (device_types.h)
     cl::NDRange global;
     cl::NDRange local;
 };

@@ -26,7 +26,9 @@ std::uint64_t next_pass_samples(const PassRenderer& renderer, const ProgressiveL
         const double affordable = std::floor(time_left / seconds_per_sample_per_pixel);
         samples = std::min<std::uint64_t>(samples, static_cast<std::uint64_t>(std::max(1.0, affordable)));
     }
-    return std::min(samples, remaining);
+    samples = std::min(samples, remaining);
+    if (limits.gate) samples = std::min(samples, limits.gate->next_decision(state.spp) - state.spp);
+    return samples;
 }
 
 }  // namespace
@@ -35,11 +37,10 @@ StopReason render_progressively(PassRenderer& renderer, const ProgressiveLimits&
                                 const ProgressiveCallbacks& callbacks, const std::atomic<bool>& stop_requested,
                                 ProgressState* final_state) {
     const Clock::time_point start = Clock::now();
-    const std::uint64_t start_spp = renderer.samples_per_pixel();
-    const double pixels = static_cast<double>(renderer.pixel_count());
+    const std::uint64_t start_pixel_samples = renderer.pixel_samples();
 
     ProgressState state;
-    state.spp = start_spp;
+    state.spp = renderer.samples_per_pixel();
     state.target_spp = limits.target_spp;
 
     Clock::time_point last_checkpoint = start;
@@ -48,6 +49,8 @@ StopReason render_progressively(PassRenderer& renderer, const ProgressiveLimits&
 
     auto reached = [&](StopReason& reason) {
         if (stop_requested.load()) return reason = StopReason::Interrupted, true;
+        if (limits.gate)
+            if (const std::optional<StopReason> done = limits.gate->stop()) return reason = *done, true;
         if (state.spp >= limits.target_spp) return reason = StopReason::ReachedSpp, true;
         if (limits.max_seconds > 0 && state.elapsed_seconds >= limits.max_seconds)
             return reason = StopReason::ReachedTime, true;
@@ -57,6 +60,7 @@ StopReason render_progressively(PassRenderer& renderer, const ProgressiveLimits&
     StopReason reason = StopReason::ReachedSpp;
     while (!reached(reason)) {
         const std::uint64_t samples = next_pass_samples(renderer, limits, state, seconds_per_sample_per_pixel);
+        const std::uint64_t decision = limits.gate ? limits.gate->next_decision(state.spp) : 0;
         const Clock::time_point pass_start = Clock::now();
         renderer.render_pass(static_cast<int>(std::min<std::uint64_t>(samples, 1u << 30)));
         const Clock::time_point pass_end = Clock::now();
@@ -64,9 +68,12 @@ StopReason render_progressively(PassRenderer& renderer, const ProgressiveLimits&
         seconds_per_sample_per_pixel = seconds_between(pass_start, pass_end) / static_cast<double>(samples);
         state.pass += 1;
         state.spp = renderer.samples_per_pixel();
+        if (limits.gate && state.spp == decision) limits.gate->decide();
         state.elapsed_seconds = seconds_between(start, pass_end);
         state.samples_per_second =
-            state.elapsed_seconds > 0 ? static_cast<double>(state.spp - start_spp) * pixels / state.elapsed_seconds : 0;
+            state.elapsed_seconds > 0
+                ? static_cast<double>(renderer.pixel_samples() - start_pixel_samples) / state.elapsed_seconds
+                : 0;
         if (callbacks.on_pass) callbacks.on_pass(state);
 
         // The final image is written by the caller once the loop ends, so a

@@ -35,6 +35,7 @@ struct Renderer::Impl {
     std::vector<SampleRanges> device_ranges;  // what each device's film holds
     SampleRanges ranges;                      // their union: what the film holds
     std::uint64_t cursor = 0;                 // where render_pass() continues
+    std::uint64_t pixel_samples = 0;          // pixel samples in the film (adaptive sampling leaves pixels out)
     bool film_clear = true;                   // every device film is at its clear values (new frames skip a clear)
     AnimationTree tree;                       // the BVH, refitted from frame to frame while that pays
     double frame_render_seconds = 0;          // spent in render_samples since the scene was set
@@ -48,6 +49,7 @@ struct Renderer::Impl {
 
     std::vector<int> split(int count) const;
     void wait_all(const std::vector<std::size_t>& busy);
+    void all_pixels_active();  // adaptive sampling: every pixel renders again
 };
 
 std::vector<int> Renderer::Impl::split(int count) const
@@ -84,6 +86,13 @@ void Renderer::Impl::wait_all(const std::vector<std::size_t>& busy)
     for (std::thread& waiter : waiters) waiter.join();
     for (const std::exception_ptr& error : errors)
         if (error) std::rethrow_exception(error);
+}
+
+void Renderer::Impl::all_pixels_active()
+{
+    std::vector<std::uint32_t> every(static_cast<std::size_t>(config.width) * static_cast<std::size_t>(config.height));
+    for (std::size_t i = 0; i < every.size(); ++i) every[i] = static_cast<std::uint32_t>(i);
+    for (auto& device : devices) device->set_active_pixels(every);
 }
 
 struct PreparedScene::Data {
@@ -173,6 +182,8 @@ void Renderer::clear(std::uint64_t first_sample)
     for (SampleRanges& ranges : r.device_ranges) ranges = {};
     r.ranges = {};
     r.cursor = first_sample;
+    r.pixel_samples = 0;
+    if (r.config.adaptive) r.all_pixels_active();
 }
 
 int Renderer::suggested_samples_per_pass() const
@@ -221,6 +232,7 @@ void Renderer::render_samples(std::uint64_t first_sample, int count)
     r.frame_render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.ranges.add(range);
     r.cursor = range.end();
+    r.pixel_samples += range.count * active_pixel_count();
 }
 
 std::uint64_t Renderer::samples_per_pixel() const { return impl_->ranges.total(); }
@@ -228,6 +240,19 @@ std::uint64_t Renderer::pixel_count() const
 {
     return static_cast<std::uint64_t>(impl_->config.width) * static_cast<std::uint64_t>(impl_->config.height);
 }
+std::uint64_t Renderer::pixel_samples() const { return impl_->pixel_samples; }
+
+void Renderer::set_active_pixels(const std::vector<std::uint32_t>& pixels)
+{
+    if (!impl_->config.adaptive) throw std::logic_error("set_active_pixels needs RenderConfig::adaptive");
+    for (auto& device : impl_->devices) device->set_active_pixels(pixels);
+}
+
+std::size_t Renderer::active_pixel_count() const
+{
+    return impl_->config.adaptive ? impl_->devices.front()->active_pixel_count() : pixel_count();
+}
+
 std::uint64_t Renderer::next_sample() const { return impl_->cursor; }
 const SampleRanges& Renderer::sample_ranges() const { return impl_->ranges; }
 const std::vector<SampleRanges>& Renderer::device_sample_ranges() const { return impl_->device_ranges; }
@@ -333,6 +358,15 @@ void Renderer::load_film(const Film& film)
     r.device_ranges.front() = held;
     r.ranges = held;
     r.cursor = held.end();
+    const std::vector<float>& counts = film.sample_count;
+    if (counts.empty()) {
+        r.pixel_samples = held.total() * pixel_count();
+    } else {
+        double total = 0;
+        for (float count : counts) total += count;
+        r.pixel_samples = static_cast<std::uint64_t>(total);
+    }
+    if (r.config.adaptive) r.all_pixels_active();
 }
 
 std::uint64_t Renderer::device_memory_bytes() const

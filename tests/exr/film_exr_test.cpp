@@ -53,7 +53,7 @@ TEST(FilmExr, RoundTripRecoversEverySumWithinFloatRounding) {
     EXPECT_EQ(back.film.width, kWidth);
     EXPECT_EQ(back.film.height, kHeight);
     EXPECT_EQ(back.film.samples_per_pixel, 37u);
-    EXPECT_EQ(back.passes, all_passes());
+    EXPECT_EQ(back.passes, image_passes());  // the default: every layer but the sample counts
     EXPECT_FALSE(back.half);
     expect_sums_near(film.radiance, back.film.radiance, "radiance");
     expect_sums_near(film.direct, back.film.direct, "direct");
@@ -69,6 +69,31 @@ TEST(FilmExr, RoundTripRecoversEverySumWithinFloatRounding) {
     for (std::size_t i = 0; i < film.radiance_sq.size(); ++i)
         ASSERT_TRUE(within_float_rounding(film.radiance_sq[i], back.film.radiance_sq[i], 16))
             << i << ": " << film.radiance_sq[i] << " vs " << back.film.radiance_sq[i];
+}
+
+// With the samples layer (adaptive sampling) every mean is over its pixel's
+// own count, and the sums and counts come back.
+TEST(FilmExr, PerPixelCountsNormaliseEachPixelAndComeBack) {
+    // Sums made for 40 samples stay a valid set (sum of squares x n >= sum^2) over more.
+    auto film = synthetic_film(kWidth, kHeight, 40);
+    film.samples_per_pixel = 64;
+    film.sample_ranges = orb::SampleRanges(orb::SampleRange{0, 64});
+    for (std::size_t i = 0; i < film.sample_count.size(); ++i) film.sample_count[i] = static_cast<float>(40 + i % 25);
+    const std::string path = scratch_path("film.exr");
+    ExrWriteOptions options;
+    options.passes = parse_passes("beauty,normal,variance,samples");
+    write_film_exr(path, film, synthetic_metadata(), options);
+    const ExrFilm back = read_film_exr(path);
+    EXPECT_EQ(back.film.sample_count, film.sample_count);
+    expect_sums_near(film.radiance, back.film.radiance, "radiance");
+    expect_sums_near(film.normal, back.film.normal, "normal");
+    for (std::size_t i = 0; i < film.radiance_sq.size(); ++i)
+        ASSERT_TRUE(within_float_rounding(film.radiance_sq[i], back.film.radiance_sq[i], 16)) << i;
+    // The stored mean is the sum over the pixel's count, not over orb:spp.
+    const orb::exr::testing::RawExr raw = orb::exr::testing::read_raw_exr(path);
+    const std::vector<float>& red = raw.channels.at("R");
+    for (std::size_t i = 0; i < red.size(); ++i)
+        ASSERT_FLOAT_EQ(red[i], static_cast<float>(static_cast<double>(film.radiance[i * 3]) / film.sample_count[i])) << i;
 }
 
 TEST(FilmExr, RoundTripKeepsEveryAttribute) {

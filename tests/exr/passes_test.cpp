@@ -8,7 +8,8 @@ using namespace orb::exr;
 
 TEST(Passes, ParsesAListInDocumentedOrderWithoutDuplicates) {
     EXPECT_EQ(parse_passes("albedo,beauty,albedo"), (std::vector<Pass>{Pass::Beauty, Pass::Albedo}));
-    EXPECT_EQ(parse_passes("all"), all_passes());
+    EXPECT_EQ(parse_passes("all"), image_passes());  // every layer but the sample counts
+    EXPECT_EQ(parse_passes("all,samples"), all_passes());
     EXPECT_EQ(format_passes(parse_passes("id,depth")), "depth,id");
 }
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "device_renderer.h"
+#include "orb/film/pixel_error.h"
 #include "orb/scene/scn.h"
 #include "scene_layout.h"
 
@@ -117,10 +118,11 @@ Scene load_scene_file(const std::string& path)
 PixelStatistics radiance_statistics(const Film& film, const std::vector<std::size_t>& pixels, int channel)
 {
     PixelStatistics stats;
-    const double n = static_cast<double>(film.samples_per_pixel);
-    if (pixels.empty() || n < 2) throw std::invalid_argument("need pixels and at least two samples");
+    if (pixels.empty()) throw std::invalid_argument("need pixels");
     double sum_of_means = 0, sum_of_variances = 0;
     for (std::size_t p : pixels) {
+        const double n = film::pixel_samples(film, p);  // each pixel's own count (adaptive sampling)
+        if (n < 2) throw std::invalid_argument("need at least two samples in every pixel");
         const double sum = film.radiance[p * 3 + channel];
         const double sum_sq = film.radiance_sq[p * 3 + channel];
         const double mean = sum / n;

@@ -61,6 +61,8 @@ const char* stop_reason_name(render::StopReason reason) {
         case render::StopReason::ReachedSpp: return "spp";
         case render::StopReason::ReachedTime: return "time";
         case render::StopReason::Interrupted: return "interrupted";
+        case render::StopReason::Converged: return "noise";
+        case render::StopReason::ReachedError: return "error";
     }
     return "?";
 }
@@ -69,6 +71,7 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
                         cli::OutputFile& image, const std::string& label, FrameClaim* claim, Film reuse,
                         bool read_later) {
     const std::uint64_t start_spp = renderer.samples_per_pixel();
+    const std::uint64_t start_samples = renderer.pixel_samples();
     ImageWriter writer(plan, image, renderer);
     ProgressReporter progress(cli::quiet(), static_cast<double>(renderer.pixel_count()),
                               options.time_limit.value_or(0), label, options.progress_interval);
@@ -77,6 +80,12 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     limits.target_spp = plan.target_spp;
     limits.max_seconds = options.time_limit.value_or(0);
     limits.checkpoint_seconds = options.checkpoint.value_or(0);
+    std::optional<render::AdaptiveSampler> adaptive;
+    if (plan.adaptive.any()) {
+        adaptive.emplace(renderer, plan.adaptive,
+                         plan.resumed ? plan.resumed->metadata.noise_threshold : std::optional<double>{});
+        limits.gate = &*adaptive;
+    }
     render::ProgressiveCallbacks callbacks;
     callbacks.on_pass = [&](const render::ProgressState& state) {
         progress.on_pass(state);
@@ -105,6 +114,13 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     outcome.stats = renderer_stats(renderer);
     RunStats& stats = outcome.stats;
     stats.spp_this_run = stats.spp - start_spp;
+    stats.samples_this_run = stats.samples - start_samples;
+    if (adaptive) {
+        stats.estimated_relmse = adaptive->estimated_relmse();
+        stats.active_pixels = adaptive->active_pixel_count();
+        stats.decisions = adaptive->decisions();
+        stats.decision_seconds = adaptive->decision_seconds();
+    }
     stats.passes = final_state.pass;
     stats.seconds = final_state.elapsed_seconds;
     stats.samples_per_second = final_state.samples_per_second;

@@ -12,6 +12,7 @@
 #include "orb/cli/output_file.h"
 #include "orb/denoise/denoise_exr.h"
 #include "orb/exr/film_exr.h"
+#include "orb/render/adaptive_sampler.h"
 #include "orb/render/progressive.h"
 #include "orb/render/renderer.h"
 #include "render_options.h"

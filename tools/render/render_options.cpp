@@ -11,6 +11,7 @@
 #include "orb/cli/exr_output_name.h"
 #include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
+#include "orb/cli/number_checks.h"
 #include "orb/cli/orbit_options.h"
 #include "orb/cli/tool_main.h"
 #include "orb/exr/film_exr.h"
@@ -36,6 +37,7 @@ const char* kExamples = R"(Examples:
   orb-render scene.json -o out.exr --time 60 --device 1
   orb-render --resume out.exr scene.json -o out.exr --spp 4096
   orb-render scene.json --sample-range 512:512 -o part2.exr && orb-merge part*.exr -o out.exr
+  orb-render scene.json -o out.exr --spp 4096 --noise-threshold 0.02 --target-error 0.0005
   orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
   orb-render shot.glb --frames 1-240 -o shots/beauty.%04d.exr
   orb-render shot.glb --frame 48 -o shots/beauty.####.exr --skip-existing
@@ -59,6 +61,16 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
     app.add_flag("--list-devices", o.list_devices, "List OpenCL devices and exit");
     app.add_option("--device", o.device, "Device index or name substring (default: fastest GPU, else CPU)");
     request::add_request_options(app, o);
+    const CLI::Validator positive = cli::finite_number_where([](double v) { return v > 0; }, "a number > 0");
+    app.add_option("--noise-threshold", o.noise_threshold,
+                   "Adaptive sampling: a pixel stops once its estimated relative error is below T (0.01: 1%); "
+                   "--spp stays the most a pixel gets")
+        ->check(positive)
+        ->option_text("T");
+    app.add_option("--target-error", o.target_error,
+                   "Stop once the image's estimated relMSE (as orb-diff's relmse) is below E")
+        ->check(positive)
+        ->option_text("E");
     app.add_option("--time", o.time_limit, "Stop after this many seconds of rendering")->check(seconds);
     app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")->check(seconds);
     app.add_option("--resume", o.resume, "Continue the render stored in this orb-render EXR")->option_text("FILE");
@@ -114,6 +126,18 @@ void check_option_combinations(const RenderOptions& o) {
     } else {
         const char* frame_only = o.fps ? "--fps" : o.same_seed ? "--same-seed" : nullptr;
         if (frame_only) throw UsageError(std::string(frame_only) + " needs --frame N or --frames SPEC");
+    }
+    if (o.noise_threshold || o.target_error) {
+        const char* conflicting = o.benchmark        ? "--benchmark"
+                                  : renders_frames(o) ? "--frame/--frames"
+                                  : o.skip_existing   ? "--skip-existing"
+                                  : o.claim           ? "--claim"
+                                  : o.missing         ? "--missing"
+                                                      : nullptr;
+        if (conflicting)
+            throw UsageError(std::string("adaptive sampling (--noise-threshold, --target-error) renders one image "
+                                         "and takes no ") +
+                             conflicting);
     }
     if (!o.resume.empty() && (o.skip_existing || o.claim))
         throw UsageError(std::string(o.claim ? "--claim" : "--skip-existing") + " and --resume exclude each other");

@@ -40,6 +40,9 @@ struct RenderOptions : request::RequestOptions {
     double progress_interval = 5;     // seconds between progress lines when stderr is not a terminal
     std::string kernel_dir;
     bool no_cache = false;
+    // Adaptive sampling (docs/design/adaptive-sampling.md).
+    std::optional<double> noise_threshold;  // --noise-threshold: a pixel stops below this relative error
+    std::optional<double> target_error;     // --target-error: the render stops below this relMSE
 };
 
 void add_render_options(CLI::App& app, RenderOptions& options);

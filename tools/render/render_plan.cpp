@@ -55,6 +55,25 @@ void set_passes(RenderPlan& plan, std::vector<exr::Pass> passes) {
     plan.config.film_channels = film::channels_for(plan.passes);
 }
 
+// Adaptive sampling reads the variance, and with a noise threshold the
+// pixels' sample counts, at its decisions; the output keeps both, so that
+// --resume and orb-merge continue from what it decided on.
+void apply_adaptive(const RenderOptions& o, RenderPlan& plan) {
+    const exr::ExrMetadata* file = plan.resumed ? &plan.resumed->metadata : nullptr;
+    plan.adaptive.noise_threshold = o.noise_threshold ? o.noise_threshold : file ? file->noise_threshold : std::nullopt;
+    plan.adaptive.target_error = o.target_error ? o.target_error : file ? file->target_error : std::nullopt;
+    if (!plan.adaptive.any()) return;
+    std::vector<exr::Pass> passes = plan.passes;
+    passes.push_back(exr::Pass::Beauty);
+    passes.push_back(exr::Pass::Variance);
+    if (plan.adaptive.noise_threshold) passes.push_back(exr::Pass::Samples);
+    std::vector<exr::Pass> ordered;
+    for (exr::Pass pass : exr::all_passes())
+        if (exr::contains(passes, pass)) ordered.push_back(pass);
+    set_passes(plan, std::move(ordered));
+    plan.config.adaptive = plan.adaptive.noise_threshold.has_value();
+}
+
 void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& plan) {
     const std::string& path = o.resume;
     exr::ExrFilm file = exr::read_film_exr(path);
@@ -98,8 +117,9 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
         throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
                          " samples per pixel, more than the " + std::to_string(plan.target_spp) + " asked for");
     set_passes(plan, o.passes ? exr::parse_passes(*o.passes) : file.passes);
-    exr::require_resumable(file, plan.passes, path);
     plan.resumed = std::move(file);
+    apply_adaptive(o, plan);
+    exr::require_resumable(*plan.resumed, plan.passes, path);
 }
 
 }  // namespace
@@ -133,6 +153,7 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     plan.target_spp = *s.spp;
     plan.first_sample = s.first_sample;
     set_passes(plan, s.passes);
+    apply_adaptive(o, plan);
     if (renders_frames(o)) {
         plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
         for (const std::string& warning :
@@ -212,6 +233,8 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.world_to_ndc = exr::world_to_ndc(plan.scene.camera, plan.config.width, plan.config.height);
     if (plan.resumed) m.render_seconds = plan.resumed->metadata.render_seconds;
     m.frame = plan.frame;
+    m.noise_threshold = plan.adaptive.noise_threshold;
+    m.target_error = plan.adaptive.target_error;
     return m;
 }
 

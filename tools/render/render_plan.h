@@ -11,6 +11,7 @@
 #include "orb/denoise/denoiser.h"
 #include "orb/exr/film_exr.h"
 #include "orb/exr/render_request.h"
+#include "orb/render/adaptive_sampler.h"
 #include "orb/render/renderer.h"
 #include "orb/request/request_settings.h"
 #include "orb/scene/scene.h"
@@ -39,6 +40,9 @@ struct RenderPlan {
     // shared by every frame.
     bool denoise = false;
     std::shared_ptr<denoise::Denoiser> denoiser;
+    // Adaptive sampling: from the command line, else the resumed file's. Its
+    // layers (variance, and samples for a noise threshold) are in `passes`.
+    render::AdaptiveSettings adaptive;
 
     // Animations (--frame/--frames): the frames in order, and the scene as
     // read, posed anew for each frame by pose_frame.

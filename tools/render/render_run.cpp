@@ -76,8 +76,11 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
         cli::warning("interrupted: wrote " + summary);
         return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
     }
-    cli::info(std::string(outcome.reason == render::StopReason::ReachedTime ? "time limit reached: " : "done: ") +
-              summary);
+    const char* how = outcome.reason == render::StopReason::ReachedTime    ? "time limit reached: "
+                      : outcome.reason == render::StopReason::Converged ? "every pixel below --noise-threshold: "
+                      : outcome.reason == render::StopReason::ReachedError ? "--target-error reached: "
+                                                                           : "done: ";
+    cli::info(how + summary);
     return cli::kSuccess;
 }
 
@@ -92,6 +95,7 @@ int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOu
     if (outputs.stats) {
         RunStats stats = renderer_stats(renderer);
         stats.spp_this_run = stats.spp;
+        stats.samples_this_run = stats.samples;
         stats.passes = result.passes;
         stats.seconds = result.seconds;
         stats.samples_per_second = result.samples_per_second;

@@ -28,6 +28,8 @@ nlohmann::ordered_json to_json(const RunStats& s) {
                              {"height", s.height},
                              {"spp", s.spp},
                              {"spp_this_run", s.spp_this_run},
+                             {"samples", s.samples},
+                             {"samples_this_run", s.samples_this_run},
                              {"sample_ranges", s.sample_ranges},
                              {"passes", s.passes},
                              {"seconds", s.seconds},
@@ -38,6 +40,10 @@ nlohmann::ordered_json to_json(const RunStats& s) {
                              {"stop_reason", s.stop_reason},
                              {"output", s.output}};
     if (s.setup_seconds) j["setup_seconds"] = *s.setup_seconds;
+    if (s.estimated_relmse) j["estimated_relmse"] = *s.estimated_relmse;
+    if (s.active_pixels) j["active_pixels"] = *s.active_pixels;
+    if (s.decisions) j["decisions"] = *s.decisions;
+    if (s.decision_seconds) j["decision_seconds"] = *s.decision_seconds;
     if (s.frame) j["frame"] = *s.frame;
     return j;
 }
@@ -56,6 +62,7 @@ RunStats renderer_stats(const render::Renderer& renderer) {
     stats.bvh_nodes = tree.nodes;
     stats.bvh_seconds = tree.seconds;
     stats.spp = renderer.samples_per_pixel();
+    stats.samples = renderer.pixel_samples();
     return stats;
 }
 

@@ -24,6 +24,13 @@ struct RunStats {
     int height = 0;
     std::uint64_t spp = 0;           // samples per pixel in the image, resumed ones included
     std::uint64_t spp_this_run = 0;  // samples per pixel this run added
+    std::uint64_t samples = 0;           // pixel samples in the image (adaptive sampling skips stopped pixels)
+    std::uint64_t samples_this_run = 0;  // pixel samples this run drew
+    // Adaptive sampling: the image's estimated relMSE at the last decision, and the pixels still sampling then.
+    std::optional<double> estimated_relmse;
+    std::optional<std::size_t> active_pixels;
+    std::optional<int> decisions;            // adaptive sampling's decisions in this run
+    std::optional<double> decision_seconds;  // and their time (part of `seconds`)
     int passes = 0;
     double seconds = 0;              // this run's rendering (or timed benchmark) time
     double samples_per_second = 0;   // pixel samples per second over `seconds`

@@ -283,6 +283,13 @@ typedef struct RenderPassParams {
     TABLE(EnvironmentCdf, environment_cdf)             \
     PARAMS(RenderPassParams, params)
 
+/* After that list render_pass takes one more argument, `__global const uint*
+ * active_pixels`: with ORB_ACTIVE_PIXELS (adaptive sampling) the pixels still
+ * sampling (row-major indices, ascending), ORB_LANES of them per work-item,
+ * padded with ORB_NO_PIXEL to the launch's size; without it a placeholder
+ * the kernel never reads. */
+#define ORB_NO_PIXEL 0xffffffffu
+
 #ifndef __OPENCL_VERSION__
 
 /* ---- Host checks: the layouts above, byte for byte ----

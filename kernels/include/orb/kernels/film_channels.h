@@ -17,7 +17,8 @@
  *   LAYER(Enumerator, name, kind)
  *     kind  how image tools show and compare it: Color (colour-managed),
  *           Normal (unit vectors), Depth (distances), Id (integer labels),
- *           Variance (per-channel variance)
+ *           Variance (per-channel variance), Count (a whole number per
+ *           pixel, shown as data)
  *
  * ORB_FILM_CHANNELS(CHANNEL): the film's per-pixel buffers, in the order of
  * render_pass's film arguments:
@@ -62,7 +63,8 @@
     LAYER(Depth, depth, Depth)          \
     LAYER(Variance, variance, Variance) \
     LAYER(Id, id, Id)                   \
-    LAYER(Background, background, Color)
+    LAYER(Background, background, Color) \
+    LAYER(Samples, samples, Count)
 
 /* ORB_POST_LAYERS(LAYER): layers that a tool adds to a finished render's EXR
  * from its other layers. No kernel computes them and they hold no sums, so
@@ -87,7 +89,10 @@
  * object_id    the scene index of the sphere the pixel-centre ray hits, -1 for none
  * background   the environment's radiance brought by a camera ray that hits no sphere (0 for one that hits):
  *              the part of `radiance` that `alpha` does not cover, so radiance - background is the
- *              spheres' colour premultiplied by alpha (docs/design/background-and-alpha.md) */
+ *              spheres' colour premultiplied by alpha (docs/design/background-and-alpha.md)
+ * sample_count the samples the pixel holds: with adaptive sampling pixels hold different counts, and every
+ *              Mean, UnitVector and VarianceOfMean of a film that has this channel is over the pixel's own
+ *              count instead of the film's samples_per_pixel (docs/design/adaptive-sampling.md) */
 #define ORB_FILM_CHANNELS(CHANNEL)                                                                                    \
     CHANNEL(radiance, 3, 0.0f, Sum, Sum, Beauty, Mean, none, ("R", "G", "B"))                                           \
     CHANNEL(alpha, 1, 0.0f, Sum, Sum, Beauty, Mean, none, ("A"))                                                        \
@@ -100,7 +105,8 @@
     CHANNEL(radiance_sq, 3, 0.0f, Sum, Sum, Variance, VarianceOfMean, radiance, ("variance.R", "variance.G",           \
             "variance.B"))                                                                                             \
     CHANNEL(object_id, 1, -1.0f, CentreRay, Same, Id, Value, none, ("id"))                                              \
-    CHANNEL(background, 3, 0.0f, Sum, Sum, Background, Mean, none, ("background.R", "background.G", "background.B"))
+    CHANNEL(background, 3, 0.0f, Sum, Sum, Background, Mean, none, ("background.R", "background.G", "background.B")) \
+    CHANNEL(sample_count, 1, 0.0f, Sum, Sum, Samples, Value, none, ("samples.count"))
 
 #ifdef __OPENCL_VERSION__
 
@@ -146,7 +152,7 @@ enum class Channel : int {
     none = -1,  // the `paired` of a channel that has no pair
 };
 
-enum class LayerKind { Color, Normal, Depth, Id, Variance };
+enum class LayerKind { Color, Normal, Depth, Id, Variance, Count };
 enum class Accumulation { Sum, CentreRay };
 enum class MergeRule { Sum, Same };
 enum class StoredAs { Mean, UnitVector, VarianceOfMean, Value };

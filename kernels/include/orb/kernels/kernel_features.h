@@ -62,6 +62,8 @@
             "bit k: the film channel k is computed (film_channels.h); the others stay at their clear value")          \
     FEATURE(ORB_LANES, lanes, Int, 1,                                                                                 \
             "camera paths per work-item: 1, or 4, 8 or 16 vector lanes on CPUs (lanes.cl)")                         \
+    FEATURE(ORB_ACTIVE_PIXELS, active_pixels, Bool, 0,                                                                \
+            "adaptive sampling: work-items take their pixels from the list of those still sampling; 0: one a pixel")  \
     FEATURE(ORB_TRACE_KERNEL, trace_kernel, Bool, 0, "the trace_rays kernel (trace_rays.cl, ray casting alone)")      \
     FEATURE(ORB_BVH_CHECK, bvh_check, Bool, 0,                                                                        \
             "development: check every index the traversal reads and printf the first violation")                     \

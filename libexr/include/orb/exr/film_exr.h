@@ -53,6 +53,10 @@ struct ExrMetadata {
     // with 1 it holds the environment too where A < 1 (the background layer
     // takes it out). Files without it count as 1.
     bool environment_seen = true;
+    // Adaptive sampling (orb-render --noise-threshold, --target-error): what
+    // the render stopped on, absent without it; what --resume continues with.
+    std::optional<double> noise_threshold;  // orb:noiseThreshold
+    std::optional<double> target_error;     // orb:targetError
 };
 
 // Only lossless compressions: a resumed or merged render rebuilds the
@@ -66,7 +70,7 @@ ExrCompression parse_compression(const std::string& name);
 
 struct ExrWriteOptions {
     bool half = false;  // HALF for colour layers; Z, id and orb.* stay FLOAT
-    std::vector<Pass> passes = all_passes();
+    std::vector<Pass> passes = image_passes();
     ExrCompression compression = ExrCompression::Zip;
 };
 

@@ -17,6 +17,11 @@ using Pass = film::Layer;
 // Every pass, in the order they are documented and written.
 const std::vector<Pass>& all_passes();
 
+// What "all" means (--passes all, ExrWriteOptions' default): every pass but
+// `samples`, whose per-pixel counts only adaptive sampling makes differ from
+// orb:spp; it is written with --noise-threshold or when named.
+const std::vector<Pass>& image_passes();
+
 const char* pass_name(Pass pass);  // "beauty", "direct", ...
 
 // Channels a pass writes, e.g. Beauty -> R,G,B,A; Normal -> N.X,N.Y,N.Z.
@@ -29,7 +34,7 @@ std::vector<std::string> pass_resume_channels(Pass pass);
 // The film channels stored in a pass, in table order.
 std::vector<const film::ChannelInfo*> pass_film_channels(Pass pass);
 
-// Parses "beauty,albedo" (or "all"); duplicates are dropped, the result is in
+// Parses "beauty,albedo" (or "all": image_passes()); duplicates are dropped, the result is in
 // all_passes() order. Throws std::invalid_argument naming the bad entry.
 std::vector<Pass> parse_passes(const std::string& list);
 

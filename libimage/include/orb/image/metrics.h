@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "orb/film/pixel_error.h"
 #include "orb/image/image.h"
 
 namespace orb::image {
@@ -21,7 +22,8 @@ struct ErrorStats {
     size_t nonfinite = 0;       // values that are NaN/inf in one image and differ in the other
 };
 
-constexpr double kRelMseEpsilon = 0.01;
+// The one definition, which adaptive sampling's error estimate shares (orb/film/pixel_error.h).
+constexpr double kRelMseEpsilon = film::kRelMseEpsilon;
 
 ErrorStats compute_error_stats(const Image& reference, const Image& test);
 

@@ -22,6 +22,10 @@ public:
     virtual std::uint64_t samples_per_pixel() const = 0;
 
     virtual std::uint64_t pixel_count() const = 0;
+
+    // Pixel samples in the film, resumed ones included: fewer than
+    // samples_per_pixel() x pixel_count() where adaptive sampling stopped pixels.
+    virtual std::uint64_t pixel_samples() const { return samples_per_pixel() * pixel_count(); }
 };
 
 }  // namespace orb::render

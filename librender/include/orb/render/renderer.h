@@ -45,6 +45,10 @@ struct RenderConfig {
     // film::channels_for(layers) for the layers a run writes): the others
     // stay at their clear values and cost nothing.
     std::uint32_t film_channels = film::kAllChannels;
+    // Adaptive sampling: passes render only the pixels of
+    // Renderer::set_active_pixels (the kernels' ORB_ACTIVE_PIXELS); false
+    // renders every pixel, without the list's indirection.
+    bool adaptive = false;
     // Settings for measuring and debugging (development_knobs.h); the
     // defaults render as a user's run does.
     DevelopmentKnobs development;
@@ -146,6 +150,16 @@ public:
 
     std::uint64_t samples_per_pixel() const override;
     std::uint64_t pixel_count() const override;
+    // Pixel samples in the film: samples_per_pixel() x pixel_count() unless
+    // adaptive sampling left pixels out of passes.
+    std::uint64_t pixel_samples() const override;
+
+    // Adaptive sampling (config().adaptive): the pixels the following passes
+    // render, as ascending row-major indices (every pixel after clear() or
+    // load_film()). Throws std::logic_error without config().adaptive,
+    // std::invalid_argument for indices out of order or outside the image.
+    void set_active_pixels(const std::vector<std::uint32_t>& pixels);
+    std::size_t active_pixel_count() const;
     std::uint64_t next_sample() const;
     const SampleRanges& sample_ranges() const;
     // The samples each device has rendered into the film, in devices() order

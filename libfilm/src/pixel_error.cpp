@@ -1,0 +1,79 @@
+#include "orb/film/pixel_error.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace orb::film {
+
+double pixel_samples(const Film& film, std::size_t pixel)
+{
+    if (!film.sample_count.empty()) return film.sample_count[pixel];
+    return static_cast<double>(film.samples_per_pixel);
+}
+
+namespace {
+
+// Var[mean] of each channel of pixel i, and its mean; false with fewer than two samples.
+bool pixel_moments(const Film& film, std::size_t pixel, double mean[3], double variance_of_mean[3])
+{
+    const double n = pixel_samples(film, pixel);
+    if (n < 2) return false;
+    for (std::size_t c = 0; c < 3; ++c) {
+        mean[c] = film.radiance[pixel * 3 + c] / n;
+        const double mean_sq = film.radiance_sq[pixel * 3 + c] / n;
+        variance_of_mean[c] = std::max(0.0, mean_sq - mean[c] * mean[c]) / (n - 1.0);
+    }
+    return true;
+}
+
+// A^2 in the denominator from the mean B: E[B^2] = A^2 + Var[B], so
+// B^2 - Var[B] (at least 0). B^2 itself would let a pixel whose few
+// samples include one very bright one (a firefly) pass for converged: its
+// large variance and its large mean would cancel.
+double relmse_of(const double mean[3], const double variance_of_mean[3])
+{
+    double sum = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double converged_sq = std::max(0.0, mean[c] * mean[c] - variance_of_mean[c]);
+        sum += variance_of_mean[c] / (converged_sq + kRelMseEpsilon);
+    }
+    return sum / 3.0;
+}
+
+void check_channels(const Film& film)
+{
+    const std::size_t pixels = film.pixel_count();
+    if (film.radiance.size() != pixels * 3 || film.radiance_sq.size() != pixels * 3)
+        throw std::invalid_argument("estimating a film's error needs its radiance and radiance_sq channels");
+    if (!film.sample_count.empty() && film.sample_count.size() != pixels)
+        throw std::invalid_argument("the film's sample_count channel has the wrong size");
+}
+
+}  // namespace
+
+double pixel_relmse(const Film& film, std::size_t pixel)
+{
+    double mean[3], variance[3];
+    if (!pixel_moments(film, pixel, mean, variance)) return std::numeric_limits<double>::infinity();
+    return relmse_of(mean, variance);
+}
+
+std::vector<double> pixel_relmse(const Film& film)
+{
+    check_channels(film);
+    const std::size_t pixels = film.pixel_count();
+    std::vector<double> errors(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) errors[i] = pixel_relmse(film, i);
+    return errors;
+}
+
+double frame_relmse(const std::vector<double>& pixel_errors)
+{
+    if (pixel_errors.empty()) return 0;
+    double sum = 0;
+    for (double e : pixel_errors) sum += e;
+    return sum / static_cast<double>(pixel_errors.size());
+}
+
+}  // namespace orb::film
