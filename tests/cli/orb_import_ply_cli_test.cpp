@@ -14,6 +14,7 @@
 
 #include "orb/scene/auto_framing.h"
 #include "orb/scene/ply.h"
+#include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "import_cli_fixture.h"
 #include "run_process.h"
@@ -44,6 +45,36 @@ TEST_F(OrbImportPlyCli, PlyFileToOrbJson) {
     EXPECT_EQ(scene.materials.size(), 1u + 2u);  // the points' (their colours are per sphere), two lights
     EXPECT_EQ(scene.sphere_attributes.colors.size(), 3u * (3u + 2u));
     EXPECT_EQ(scene.spheres[0].radius, 0.25);
+}
+
+TEST_F(OrbImportPlyCli, ColourAndSizeByAVertexProperty) {
+    const std::string cloud =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "property float temperature\nend_header\n0 0 0 300\n1 0 0 350\n0 1 0 400\n";
+    write("md.ply", cloud);
+    const ProcessResult r = run({"md.ply", "--color-by", "temperature", "--colormap", "greys", "--radius-by",
+                                 "temperature", "--radius-range", "0.1,0.2", "--material", "plastic", "-o", "md.orb"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("orb-import: md.ply: --color-by temperature: greys from 300 to 400\n"));
+    std::ifstream in(dir_ / "md.orb", std::ios::binary);
+    const Scene scene = load_scene_binary(std::string(std::istreambuf_iterator<char>(in), {}), "md.orb");
+    ASSERT_EQ(scene.sphere_attributes.colors.size(), 3u * (3u + 2u));
+    EXPECT_EQ(scene.sphere_attributes.colors[0], 1.0f);  // greys: white at the minimum
+    EXPECT_EQ(scene.sphere_attributes.colors[6], 0.0f);  // black at the maximum
+    EXPECT_DOUBLE_EQ(scene.spheres[1].radius, 0.15);
+    EXPECT_EQ(scene.materials[0].type, MaterialType::Pbr);
+
+    // An unknown property: one error naming what the file has, and no output.
+    const ProcessResult unknown = run({"md.ply", "--color-by", "temp", "-o", "bad.orb"});
+    EXPECT_EQ(unknown.exit_code, 1);
+    EXPECT_THAT(unknown.err, HasSubstr("orb-import: error: md.ply: --color-by temp: no such sphere property (the scene "
+                                       "has: temperature)\n"));
+    EXPECT_FALSE(fs::exists(dir_ / "bad.orb"));
+    // Malformed options are usage errors, before anything is read.
+    EXPECT_EQ(run({"md.ply", "--color-by", "temperature", "--colormap", "jet"}).exit_code, 2);
+    EXPECT_EQ(run({"md.ply", "--color-by", "temperature", "--color-range", "5,1"}).exit_code, 2);
+    EXPECT_EQ(run({"md.ply", "--radius-by", "temperature"}).exit_code, 2);
+    EXPECT_EQ(run({"md.ply", "--material", "glass"}).exit_code, 2);
 }
 
 TEST_F(OrbImportPlyCli, StdinIsRecognisedByContentAndFromPlyWorks) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "orb/cli/sphere_style_options.h"
 #include "orb/request/request_options.h"
 
 namespace orb::render_cli {
@@ -39,6 +40,7 @@ struct RenderOptions : request::RequestOptions {
     double progress_interval = 5;     // seconds between progress lines when stderr is not a terminal
     std::string kernel_dir;
     bool no_cache = false;
+    cli::SphereStyleArguments style;  // --color-by, --radius-by, ... (orb/scene/sphere_styling.h)
 };
 
 void add_render_options(CLI::App& app, RenderOptions& options);
