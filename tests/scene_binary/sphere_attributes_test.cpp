@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "binary_test_scene.h"
+#include "orb/scene/animation.h"
 #include "orb/scene/content_hash.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_binary.h"
@@ -184,6 +185,15 @@ TEST(SphereAttributes, JsonReaderErrorsNameThePath) {
     EXPECT_EQ(error(R"("sphere_properties": [{ "name": "t", "labels": [], "values": [0] }])"),
               "s.json: sphere_properties[0].labels: must not be empty (leave it out for a numeric property)");
     EXPECT_EQ(error(R"("sphere_colors": [[1, 0, 0.5]])"), "(no error)");
+}
+
+TEST(SphereAttributes, AnimatedSpheresKeepTheirColours) {
+    const Scene scene = attributed_scene();  // sphere 3 is bound to a spinning node
+    ASSERT_FALSE(scene.animation.empty());
+    const Scene posed = scene_at_time(scene, 0.5);
+    EXPECT_NE(posed.spheres[3].center, scene.spheres[3].center);
+    EXPECT_EQ(posed.sphere_attributes, scene.sphere_attributes);
+    validate_scene(posed, "posed");
 }
 
 TEST(SphereAttributes, HashFollowsEveryColourAndValue) {
