@@ -3,9 +3,7 @@
 #include "ply_scene.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <unordered_map>
 
