@@ -49,6 +49,23 @@ inline Bsdf load_bsdf(SCENE_MEM const MaterialRecord* m)
     return b;
 }
 
+// The colour a hit sphere reflects or tints with: its own where the scene
+// gives spheres colours (ORB_SPHERE_COLORS, packed as device_types.h says),
+// else its material's. The material's kind, emission and the rest apply either way.
+#if ORB_SPHERE_COLORS
+inline float3 unpack_sphere_color(uint packed)
+{
+    const float3 root = (float3)((float)(packed & ORB_SPHERE_COLOR_RED_MAX) * (1.0f / ORB_SPHERE_COLOR_RED_MAX),
+                                 (float)((packed >> ORB_SPHERE_COLOR_GREEN_SHIFT) & ORB_SPHERE_COLOR_GREEN_MAX) *
+                                     (1.0f / ORB_SPHERE_COLOR_GREEN_MAX),
+                                 (float)(packed >> ORB_SPHERE_COLOR_BLUE_SHIFT) * (1.0f / ORB_SPHERE_COLOR_BLUE_MAX));
+    return root * root;
+}
+#define ORB_SPHERE_COLOR(record, material) unpack_sphere_color((record)->color)
+#else
+#define ORB_SPHERE_COLOR(record, material) ((material)->color.xyz)
+#endif
+
 // Lane l of *s becomes sphere slot `id`.
 #define ORB_SET_SPHERE_LANE(s, l, scene, id)                                               \
     do {                                                                                   \
@@ -58,7 +75,7 @@ inline Bsdf load_bsdf(SCENE_MEM const MaterialRecord* m)
         set_lane_v3((s).centre, l, centre_radius_.xyz);                                    \
         set_lane_f((s).radius, l, centre_radius_.w);                                       \
         set_lane_v3((s).emission, l, material_->emission.xyz);                             \
-        set_lane_v3((s).bsdf.color, l, material_->color.xyz);                              \
+        set_lane_v3((s).bsdf.color, l, ORB_SPHERE_COLOR(record_, material_));              \
         set_lane_i((s).bsdf.kind, l, material_->kind);                                     \
         set_lane_f((s).bsdf.ior, l, material_->ior);                                       \
         set_lane_f((s).bsdf.roughness, l, material_->roughness);                           \
@@ -92,7 +109,7 @@ LANE_FN ShadingSphere load_sphere(const SceneView* scene, lint id, lmask lanes)
         s.centre = lv3_select(s.centre, lv3_splat(cr.xyz), m);
         s.radius = lselect(s.radius, (lfloat)(cr.w), m);
         s.emission = lv3_select(s.emission, lv3_splat(material->emission.xyz), m);
-        s.bsdf.color = lv3_select(s.bsdf.color, lv3_splat(material->color.xyz), m);
+        s.bsdf.color = lv3_select(s.bsdf.color, lv3_splat(ORB_SPHERE_COLOR(r, material)), m);
         s.bsdf.kind = lselect(s.bsdf.kind, (lint)(material->kind), m);
         s.bsdf.ior = lselect(s.bsdf.ior, (lfloat)(material->ior), m);
         s.bsdf.roughness = lselect(s.bsdf.roughness, (lfloat)(material->roughness), m);

@@ -149,6 +149,7 @@ device::KernelFeatures render_features(DeviceSession& session, const SceneLayout
     // caster after the first diffuse vertex.
     if (scene.counts.caster_count == 0 || config.mode != IntegratorMode::Global) features.caster_share = 0.0f;
     features.rough_dielectric = scene.rough_dielectric;
+    features.sphere_colors = scene.sphere_colors;
     features.sampler_sobol = config.sampler == SamplerKind::Sobol;
     features.film_channels_built = config.film_channels;
     features.lanes = simd_lanes > 0 ? simd_lanes : 1;

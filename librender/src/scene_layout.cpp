@@ -100,6 +100,16 @@ device::BvhNodeRecord empty_node_record() {
 
 }  // namespace
 
+std::uint32_t pack_sphere_color(float red, float green, float blue)
+{
+    auto root = [](float component, std::uint32_t max) {
+        const float clamped = std::clamp(component, 0.0f, 1.0f);  // validate_scene keeps them there; NaN -> 0
+        return static_cast<std::uint32_t>(std::lround(std::sqrt(clamped) * static_cast<float>(max)));
+    };
+    return root(red, ORB_SPHERE_COLOR_RED_MAX) | root(green, ORB_SPHERE_COLOR_GREEN_MAX) << ORB_SPHERE_COLOR_GREEN_SHIFT |
+           root(blue, ORB_SPHERE_COLOR_BLUE_MAX) << ORB_SPHERE_COLOR_BLUE_SHIFT;
+}
+
 SphereBvh scene_bvh(const Scene& scene, bool use_bvh)
 {
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) check_sphere(scene, i);
@@ -138,6 +148,13 @@ SceneLayout layout_scene(const Scene& scene, const SphereBvh& bvh)
         layout.rough_dielectric |= material.kind == static_cast<int>(device::MaterialKind::Dielectric) && material.roughness > 0.0f;
     }
 
+    // Colours for every sphere or for none (validate_scene); the renderer does not assume it.
+    if (!scene.sphere_attributes.colors.empty()) {
+        if (scene.sphere_attributes.colors.size() != 3 * sphere_count)
+            throw std::runtime_error("the scene has " + std::to_string(scene.sphere_attributes.colors.size() / 3) +
+                                     " sphere colours for " + std::to_string(sphere_count) + " spheres");
+        layout.sphere_colors = true;
+    }
     std::vector<int> slot_of(sphere_count, -1);
     auto place = [&](std::uint32_t scene_index, std::size_t slot) {
         const Sphere& sphere = scene.spheres[scene_index];
@@ -151,6 +168,10 @@ SceneLayout layout_scene(const Scene& scene, const SphereBvh& bvh)
         record.centre_radius = to_float4(sphere.center, sphere.radius);
         record.material = static_cast<int>(sphere.material);
         record.scene_index = static_cast<int>(scene_index);
+        if (layout.sphere_colors) {
+            const float* rgb = &scene.sphere_attributes.colors[3 * std::size_t{scene_index}];
+            record.color = pack_sphere_color(rgb[0], rgb[1], rgb[2]);
+        }
         slot_of[scene_index] = static_cast<int>(slot);
     };
     for (std::size_t k = 0; k < bvh.outside.size(); ++k) place(bvh.outside[k], k);

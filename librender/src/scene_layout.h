@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "orb/kernels/device_types.h"
@@ -33,7 +34,14 @@ struct SceneLayout {
     // GPU registers, so its program leaves that code out.
     std::uint32_t material_kinds = 0;
     bool rough_dielectric = false;
+    // The spheres carry their own colours (Scene::sphere_attributes.colors,
+    // in SphereRecord::color): the program reads those (ORB_SPHERE_COLORS).
+    bool sphere_colors = false;
 };
+
+// A linear colour, each component in [0, 1], as SphereRecord::color holds it
+// (device_types.h: the square roots, rounded to 11, 11 and 10 bits).
+std::uint32_t pack_sphere_color(float red, float green, float blue);
 
 // The device tables in BVH order: the spheres outside the tree first (every
 // ray tests them), then one packet per BVH leaf. A scene too small for a tree

@@ -30,6 +30,14 @@ PlyImportResult import_ply(std::string_view bytes, const std::string& source, co
     if (const std::string note = ply::unknown_lines_note(header); !note.empty())
         result.notices.push_back(source + ": header " + note);
     result.warnings = ply::skipped_warnings(header, columns, source);
+    for (std::string& warning : ply::keep_usable_properties(columns.properties, source))
+        result.warnings.push_back(std::move(warning));
+    if (!columns.properties.empty()) {
+        std::vector<std::string> names;
+        for (const SphereProperty& property : columns.properties) names.push_back(property.name);
+        result.notices.push_back(source + ": vertex properties kept as sphere properties (for --color-by, --radius-by): " +
+                                 ply::compact_names(names));
+    }
     if (columns.centers.empty()) {
         // No cloud to frame or light: the scene's defaults, no sphere.
         result.no_spheres = ply::why_no_points(header);

@@ -142,10 +142,11 @@ private:
 };
 
 // What each vertex property is for.
-enum class Role { Skip, X, Y, Z, Radius, Red, Green, Blue };
+enum class Role { Skip, X, Y, Z, Radius, Red, Green, Blue, Property };
 
 struct VertexLayout {
     std::vector<Role> roles;  // one per property
+    std::vector<std::size_t> column;  // Role::Property: its index in VertexColumns::properties
     bool has_radius = false;
     bool has_color = false;
     double color_divisor[3] = {1, 1, 1};  // stored value / divisor is in [0, 1]
@@ -207,6 +208,14 @@ VertexLayout vertex_layout(const Element& vertex, const std::string& source) {
         layout.has_color = true;
         break;
     }
+    // The rest that are single values become the spheres' named properties.
+    layout.column.assign(vertex.properties.size(), 0);
+    std::size_t columns = 0;
+    for (std::size_t i = 0; i < vertex.properties.size(); ++i) {
+        if (layout.roles[i] != Role::Skip || vertex.properties[i].is_list) continue;
+        layout.roles[i] = Role::Property;
+        layout.column[i] = columns++;
+    }
     return layout;
 }
 
@@ -256,6 +265,9 @@ void read_vertex_row(DataCursor& cursor, const Element& vertex, const VertexLayo
             case Role::Red: color[0] = value / layout.color_divisor[0]; break;
             case Role::Green: color[1] = value / layout.color_divisor[1]; break;
             case Role::Blue: color[2] = value / layout.color_divisor[2]; break;
+            case Role::Property:
+                columns.properties[layout.column[property_index]].values.push_back(static_cast<float>(value));
+                break;
         }
         const Role role = layout.roles[property_index];
         if (role == Role::X || role == Role::Y || role == Role::Z) {
@@ -299,6 +311,13 @@ VertexColumns read_vertices(std::string_view bytes, const Header& header, const 
         if (layout.has_radius) columns.radii.reserve(vertex->count);
         if (layout.has_color) columns.colors.reserve(vertex->count);
         columns.unused_properties = unused_properties(*vertex, layout);
+        for (std::size_t i = 0; i < vertex->properties.size(); ++i) {
+            if (layout.roles[i] != Role::Property) continue;
+            SphereProperty property;
+            property.name = vertex->properties[i].name;
+            property.values.reserve(vertex->count);
+            columns.properties.push_back(std::move(property));
+        }
     }
 
     DataCursor cursor(data, header.encoding);

@@ -16,8 +16,12 @@ struct VertexColumns {
     std::vector<Vec3> centers;
     std::vector<double> radii;  // empty: the vertices have no radius (or scale)
     std::vector<Vec3> colors;   // empty: no colour; else each component in [0, 1] as stored (sRGB-encoded)
+    // Every other single-valued vertex property (normals, intensity, a second
+    // colour set, ...), in file order, as numbers (float, as the scene keeps
+    // them): the spheres' named properties.
+    std::vector<SphereProperty> properties;
     // What was read past, for the warnings: vertex properties that are not
-    // read (normals, a second colour set, ...), in file order, and the bytes
+    // read (lists), in file order, and the bytes
     // after the last element (white space after ASCII data not counted).
     std::vector<std::string> unused_properties;
     std::size_t trailing_bytes = 0;

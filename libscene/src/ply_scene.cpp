@@ -3,9 +3,7 @@
 #include "ply_scene.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <unordered_map>
 
@@ -25,21 +23,6 @@ struct Bounds {
 // PLY colours are display values (what point-cloud viewers show as is), so
 // they are sRGB-encoded; the scene holds linear Rec.709 reflectance.
 using detail::srgb_to_linear;
-
-struct ColorHash {
-    std::size_t operator()(const Vec3& c) const {
-        std::uint64_t h = 1469598103934665603ull;
-        for (double v : c) h = (h ^ std::bit_cast<std::uint64_t>(v)) * 1099511628211ull;
-        return static_cast<std::size_t>(h ^ (h >> 29));
-    }
-};
-
-std::string color_name(const Vec3& encoded) {
-    char name[32];
-    std::snprintf(name, sizeof name, "point #%02x%02x%02x", static_cast<int>(std::lround(encoded[0] * 255)),
-                  static_cast<int>(std::lround(encoded[1] * 255)), static_cast<int>(std::lround(encoded[2] * 255)));
-    return name;
-}
 
 Vec3 normalized(Vec3 v) {
     const double length = std::hypot(v[0], v[1], v[2]);
@@ -106,6 +89,24 @@ void add_default_lights(Scene& scene, const Vec3& center, double radius) {
 
 }  // namespace
 
+std::vector<std::string> keep_usable_properties(std::vector<SphereProperty>& properties, const std::string& source) {
+    std::vector<std::string> warnings;
+    std::vector<SphereProperty> kept;
+    for (SphereProperty& property : properties) {
+        std::size_t bad = property.values.size();
+        for (std::size_t i = 0; i < property.values.size() && bad == property.values.size(); ++i)
+            if (!std::isfinite(property.values[i])) bad = i;
+        if (bad < property.values.size())
+            warnings.push_back(source + ": ignored vertex property '" + property.name + "': vertex " +
+                               std::to_string(bad) + " holds " + detail::format_number(property.values[bad]) +
+                               " (a sphere property must be a finite 32-bit float)");
+        else
+            kept.push_back(std::move(property));
+    }
+    properties = std::move(kept);
+    return warnings;
+}
+
 double default_point_radius(const std::vector<Vec3>& centers) {
     if (centers.empty()) return 1.0;
     // The spacing of the cloud without its stray points (the framing's rule,
@@ -132,34 +133,46 @@ Scene cloud_scene(VertexColumns columns, const PlyImportOptions& options, const 
     const double radius = options.radius > 0 ? options.radius : default_point_radius(columns.centers);
     const std::size_t count = columns.centers.size();
 
-    std::unordered_map<Vec3, std::uint32_t, ColorHash> material_of_color;
-    if (columns.colors.empty()) {
-        Material grey;
-        grey.name = "point";
-        grey.color = {0.8, 0.8, 0.8};  // the scene format's default colour
-        scene.materials.push_back(grey);
-    }
+    // One material for every point; the points' colours, when the file has
+    // them, are the spheres' own (Scene::sphere_attributes), not a material
+    // per colour: a million colours read, hash and upload as arrays.
+    Material point;
+    point.name = "point";
+    point.color = {0.8, 0.8, 0.8};  // the scene format's default colour
+    scene.materials.push_back(point);
     scene.spheres.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         Sphere& sphere = scene.spheres[i];
         sphere.center = columns.centers[i];
         sphere.radius = columns.radii.empty() ? radius : columns.radii[i];
-        if (columns.colors.empty()) continue;
-        const Vec3& encoded = columns.colors[i];
-        auto [found, inserted] = material_of_color.try_emplace(encoded, static_cast<std::uint32_t>(scene.materials.size()));
-        if (inserted) {
-            Material material;
-            material.name = color_name(encoded);
-            material.color = {srgb_to_linear(encoded[0]), srgb_to_linear(encoded[1]), srgb_to_linear(encoded[2])};
-            scene.materials.push_back(std::move(material));
-        }
-        sphere.material = found->second;
     }
+    SphereAttributes& attributes = scene.sphere_attributes;
+    if (!columns.colors.empty()) {
+        // 256 levels per 8-bit channel: decode each level once.
+        std::unordered_map<double, float> linear_of;
+        auto linear = [&linear_of](double encoded) {
+            auto [found, inserted] = linear_of.try_emplace(encoded, 0.0f);
+            if (inserted) found->second = static_cast<float>(srgb_to_linear(encoded));
+            return found->second;
+        };
+        attributes.colors.resize(3 * count);
+        for (std::size_t i = 0; i < count; ++i)
+            for (int c = 0; c < 3; ++c) attributes.colors[3 * i + c] = linear(columns.colors[i][c]);
+    }
+    attributes.properties = std::move(columns.properties);
     columns = {};  // the sphere list is the only copy from here on
 
     // The lights go around the framed points: stray points would push them far away.
     const double framed_radius = frame_cloud(scene, radius, source);
     add_default_lights(scene, scene.camera.target, framed_radius);
+    // The lights' entries of the arrays: their material's colour (black), and
+    // 0 for every property (styling leaves emissive spheres alone).
+    for (std::size_t i = count; i < scene.spheres.size(); ++i) {
+        if (!attributes.colors.empty())
+            for (int c = 0; c < 3; ++c)
+                attributes.colors.push_back(static_cast<float>(scene.materials[scene.spheres[i].material].color[c]));
+        for (SphereProperty& property : attributes.properties) property.values.push_back(0.0f);
+    }
     return scene;
 }
 

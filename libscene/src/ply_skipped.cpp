@@ -55,13 +55,14 @@ std::string compact_names(const std::vector<std::string>& names) {
 std::vector<std::string> skipped_warnings(const Header& header, const VertexColumns& columns,
                                           const std::string& source) {
     std::vector<std::string> warnings;
-    if (!columns.unused_properties.empty()) {
-        std::string text = source + ": ignored vertex properties: " + compact_names(columns.unused_properties);
-        if (is_gaussian_splatting(columns.unused_properties))
-            text += " (a 3D Gaussian splatting file: Orb reads neither its spherical-harmonic colours nor its "
-                    "log-scales, so its points are grey, sized by --radius or the derived radius)";
-        warnings.push_back(text);
-    }
+    if (!columns.unused_properties.empty())
+        warnings.push_back(source + ": ignored vertex properties (lists): " + compact_names(columns.unused_properties));
+    std::vector<std::string> kept;
+    for (const SphereProperty& property : columns.properties) kept.push_back(property.name);
+    if (is_gaussian_splatting(kept))
+        warnings.push_back(source + ": a 3D Gaussian splatting file: Orb renders neither its spherical-harmonic "
+                                    "colours nor its log-scales, so its points are grey, sized by --radius or the "
+                                    "derived radius (its fields are kept as sphere properties)");
     std::string elements;
     for (const Element& element : header.elements)
         if (element.name != "vertex" && element.count > 0)

@@ -44,20 +44,50 @@ bool is_valid_utf8(std::string_view text) {
 struct BinaryHeader {
     std::uint64_t sphere_count = 0;
     bool sphere_names = false;
-    Scene scene;  // no spheres yet
+    bool sphere_colors = false;
+    Scene scene;  // no spheres yet; sphere_attributes.properties named, without values
 };
 
-BinaryHeader read_header(std::string_view text, const std::string& source) {
+// Version 2's "sphere_colors" and "sphere_properties": which attribute arrays follow the names.
+void read_attribute_keys(const json& header, const std::string& source, BinaryHeader& result) {
+    const json colors = header.value("sphere_colors", json());
+    if (!colors.is_boolean()) fail(source, "header: sphere_colors: expected true or false");
+    result.sphere_colors = colors.get<bool>();
+    const json properties = header.value("sphere_properties", json());
+    if (!properties.is_array()) fail(source, "header: sphere_properties: expected an array");
+    for (std::size_t p = 0; p < properties.size(); ++p) {
+        const std::string path = "header: sphere_properties[" + std::to_string(p) + "]";
+        const json& entry = properties[p];
+        if (!entry.is_object()) fail(source, path + ": expected an object");
+        for (const auto& [key, value] : entry.items())
+            if (key != "name" && key != "labels") fail(source, path + ": unknown key \"" + key + "\"");
+        SphereProperty property;
+        if (!entry.contains("name") || !entry["name"].is_string()) fail(source, path + ".name: expected a string");
+        property.name = entry["name"].get<std::string>();
+        if (entry.contains("labels")) {
+            const json& labels = entry["labels"];
+            if (!labels.is_array() || labels.empty()) fail(source, path + ".labels: expected a non-empty array of strings");
+            for (const json& label : labels) {
+                if (!label.is_string()) fail(source, path + ".labels: expected a non-empty array of strings");
+                property.labels.push_back(label.get<std::string>());
+            }
+        }
+        result.scene.sphere_attributes.properties.push_back(std::move(property));
+    }
+}
+
+BinaryHeader read_header(std::string_view text, std::uint32_t version, const std::string& source) {
     const json header = json::parse(text.begin(), text.end(), nullptr, false);
     if (header.is_discarded() || !header.is_object()) fail(source, "header: expected a JSON object (the file is corrupt)");
     for (const auto& [key, value] : header.items())
         if (key != "format" && key != "version" && key != "sphere_count" && key != "sphere_names" && key != "scene" &&
-            key != "animation")
-            fail(source, "header: unknown key \"" + key + "\"");
+            key != "animation" && !(version >= 2 && (key == "sphere_colors" || key == "sphere_properties")))
+            fail(source, "header: unknown key \"" + key + "\"" +
+                             (version < 2 && key.starts_with("sphere_") ? " (a version 2 key in a version 1 file)" : ""));
     if (header.value("format", json()) != "orb-scene-binary")
         fail(source, "header: format: expected \"orb-scene-binary\"");
-    if (header.value("version", json()) != kSceneBinaryVersion)
-        fail(source, "header: version: must repeat the container version " + std::to_string(kSceneBinaryVersion));
+    if (header.value("version", json()) != version)
+        fail(source, "header: version: must repeat the container version " + std::to_string(version));
     const json count = header.value("sphere_count", json());
     if (!count.is_number_unsigned()) fail(source, "header: sphere_count: expected a non-negative integer");
     const json names = header.value("sphere_names", json());
@@ -67,10 +97,14 @@ BinaryHeader read_header(std::string_view text, const std::string& source) {
     BinaryHeader result;
     result.sphere_count = count.get<std::uint64_t>();
     result.sphere_names = names.get<bool>();
+    if (version >= 2) read_attribute_keys(header, source, result);
     // The scene part is the JSON form without spheres: the JSON reader checks it.
+    SphereAttributes attributes = std::move(result.scene.sphere_attributes);
     result.scene = load_scene_json(header["scene"].dump(), source);
-    if (!result.scene.spheres.empty() || !result.scene.animation.empty())
-        fail(source, "header: scene: spheres and animation belong in the arrays and the \"animation\" key");
+    if (!result.scene.spheres.empty() || !result.scene.animation.empty() || !result.scene.sphere_attributes.empty())
+        fail(source,
+             "header: scene: spheres, their attributes and animation belong in the arrays and the \"animation\" key");
+    result.scene.sphere_attributes = std::move(attributes);
     if (header.contains("animation"))
         result.scene.animation = detail::animation_from_json(header["animation"], "animation", source);
     return result;
@@ -89,7 +123,7 @@ Scene load_scene_binary(std::string_view bytes, const std::string& source) {
     if (header_size > bytes.size() - detail::kBinaryPreambleSize)
         fail(source, "truncated: the header says it is " + std::to_string(header_size) + " bytes, the file has " +
                          std::to_string(bytes.size() - detail::kBinaryPreambleSize) + " after the preamble");
-    BinaryHeader header = read_header(bytes.substr(detail::kBinaryPreambleSize, header_size), source);
+    BinaryHeader header = read_header(bytes.substr(detail::kBinaryPreambleSize, header_size), version, source);
 
     std::size_t offset = detail::kBinaryPreambleSize + header_size;
     offset += detail::binary_padding(offset);
@@ -124,6 +158,23 @@ Scene load_scene_binary(std::string_view bytes, const std::string& source) {
             scene.spheres[i].name = std::string(name);
             end += length;
         }
+    }
+    SphereAttributes& attributes = scene.sphere_attributes;
+    const std::uint64_t attribute_floats = (header.sphere_colors ? 3 : 0) + attributes.properties.size();
+    if (attribute_floats > 0) {
+        end += detail::binary_padding(end);
+        const std::uint64_t left = bytes.size() > end ? bytes.size() - end : 0;
+        if (n > 0 && attribute_floats > left / 4 / n)
+            fail(source, "truncated: the header says " + std::to_string(n) + " spheres with " +
+                             std::to_string(attribute_floats) + " attribute floats each, but only " +
+                             std::to_string(left) + " bytes follow the sphere arrays");
+        auto read_floats = [&](std::vector<float>& into, std::size_t count) {
+            into.resize(count);
+            for (std::size_t i = 0; i < count; ++i) into[i] = detail::from_little_endian<float>(bytes.data() + end + 4 * i);
+            end += 4 * count;
+        };
+        if (header.sphere_colors) read_floats(attributes.colors, 3 * n);
+        for (SphereProperty& property : attributes.properties) read_floats(property.values, n);
     }
     if (end != bytes.size())
         fail(source, std::to_string(bytes.size() - end) + " bytes after the end of the sphere arrays (the file is corrupt)");

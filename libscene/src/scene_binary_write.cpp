@@ -17,7 +17,7 @@ bool any_sphere_named(const Scene& scene) {
 
 // Everything but the spheres, as JSON; the scene part is the canonical JSON
 // form of the scene without its spheres, so the two forms share one reader.
-std::string header_json(const Scene& scene, bool names) {
+std::string header_json(const Scene& scene, bool names, std::uint32_t version) {
     Scene without_spheres;
     without_spheres.camera = scene.camera;
     without_spheres.render = scene.render;
@@ -25,9 +25,22 @@ std::string header_json(const Scene& scene, bool names) {
     without_spheres.materials = scene.materials;
     nlohmann::ordered_json header;
     header["format"] = "orb-scene-binary";
-    header["version"] = kSceneBinaryVersion;
+    header["version"] = version;
     header["sphere_count"] = scene.spheres.size();
     header["sphere_names"] = names;
+    const SphereAttributes& attributes = scene.sphere_attributes;
+    if (!attributes.empty()) {
+        // What the attribute arrays after the names hold: their values stay binary.
+        header["sphere_colors"] = !attributes.colors.empty();
+        nlohmann::ordered_json properties = nlohmann::ordered_json::array();
+        for (const SphereProperty& property : attributes.properties) {
+            nlohmann::ordered_json entry;
+            entry["name"] = property.name;
+            if (property.categorical()) entry["labels"] = property.labels;
+            properties.push_back(std::move(entry));
+        }
+        header["sphere_properties"] = std::move(properties);
+    }
     header["scene"] = nlohmann::ordered_json::parse(write_scene_json(without_spheres));
     nlohmann::ordered_json animation = detail::animation_to_json(scene.animation);
     if (!animation.is_null()) header["animation"] = std::move(animation);
@@ -40,13 +53,17 @@ bool has_scene_binary_magic(std::string_view bytes) { return bytes.starts_with(k
 
 std::string write_scene_binary(const Scene& scene) {
     const bool names = any_sphere_named(scene);
-    const std::string header = header_json(scene, names);
+    const SphereAttributes& attributes = scene.sphere_attributes;
+    // Version 1 for a scene without per-sphere attributes: such files stay
+    // the same bytes, readable by an Orb that knows only version 1.
+    const std::uint32_t version = attributes.empty() ? 1 : kSceneBinaryVersion;
+    const std::string header = header_json(scene, names, version);
     const std::size_t count = scene.spheres.size();
 
     std::string out;
     out.reserve(detail::kBinaryPreambleSize + header.size() + 8 + count * (names ? 40 : 36));
     out.append(kSceneBinaryMagic);
-    detail::append_little_endian<std::uint32_t>(out, kSceneBinaryVersion);
+    detail::append_little_endian<std::uint32_t>(out, version);
     detail::append_little_endian<std::uint32_t>(out, static_cast<std::uint32_t>(header.size()));
     out += header;
     out.append(detail::binary_padding(out.size()), '\0');
@@ -58,6 +75,12 @@ std::string write_scene_binary(const Scene& scene) {
         for (const Sphere& s : scene.spheres)
             detail::append_little_endian<std::uint32_t>(out, static_cast<std::uint32_t>(s.name.size()));
         for (const Sphere& s : scene.spheres) out += s.name;
+    }
+    if (!attributes.empty()) {
+        out.append(detail::binary_padding(out.size()), '\0');
+        for (float c : attributes.colors) detail::append_little_endian<float>(out, c);
+        for (const SphereProperty& property : attributes.properties)
+            for (float value : property.values) detail::append_little_endian<float>(out, value);
     }
     return out;
 }

@@ -19,6 +19,7 @@
 #include "json_text.h"
 #include "material_types.h"
 #include "orb/scene/error.h"
+#include "scene_json_attributes.h"
 #include "scene_json_environment.h"
 #include "scene_json_spheres.h"
 
@@ -290,6 +291,7 @@ void validate_scene(const Scene& scene, const std::string& source) {
               "index " + std::to_string(s.material) + " is out of range (there are " +
                   std::to_string(scene.materials.size()) + " materials)");
     }
+    detail::validate_sphere_attributes(scene.sphere_attributes, scene.spheres.size(), source);
     detail::validate_animation(scene.animation, scene.spheres.size(), source);
     detail::validate_environment(scene.environment, source);
 }
@@ -311,7 +313,8 @@ Scene load_scene_json(std::string_view text, const std::string& source) {
     const Reader r(source);
     if (!document.is_object()) r.fail("(root)", "expected an object with \"format\": \"orb-scene\"");
     r.only_keys(document, "",
-                {"format", "version", "camera", "render", "environment", "materials", "spheres", "animation"});
+                {"format", "version", "camera", "render", "environment", "materials", "spheres", "sphere_colors",
+                 "sphere_properties", "animation"});
     const json& format = r.member(document, "(root)", "format");
     if (!format.is_string() || format.get<std::string>() != "orb-scene")
         r.fail("format", "expected \"orb-scene\", got " + format.dump());
@@ -327,6 +330,9 @@ Scene load_scene_json(std::string_view text, const std::string& source) {
         scene.environment = detail::environment_from_json(r, document["environment"]);
     scene.materials = read_materials(r, r.member(document, "(root)", "materials"));
     scene.spheres = read_spheres(r, r.member(document, "(root)", "spheres"), scene.materials);
+    scene.sphere_attributes = detail::sphere_attributes_from_json(
+        r, document.contains("sphere_colors") ? &document["sphere_colors"] : nullptr,
+        document.contains("sphere_properties") ? &document["sphere_properties"] : nullptr);
     if (document.contains("animation"))
         scene.animation = detail::animation_from_json(document["animation"], "animation", source);
     validate_scene(scene, source);
@@ -337,8 +343,9 @@ namespace {
 
 // The canonical JSON text of `scene`, handed to `sink` in order: what
 // write_scene_json returns and scene_content_hash hashes, without the whole
-// text in memory for the hash.
-void write_scene_json_to(const Scene& scene, const detail::JsonSink& sink) {
+// text in memory for the hash. Without `with_attributes`, the per-sphere
+// arrays are left out (the hash reads their bits instead).
+void write_scene_json_to(const Scene& scene, const detail::JsonSink& sink, bool with_attributes) {
     ordered_json document;
     document["format"] = "orb-scene";
     document["version"] = kSceneFormatVersion;
@@ -386,6 +393,7 @@ void write_scene_json_to(const Scene& scene, const detail::JsonSink& sink) {
     const std::string head = detail::format_json(document);
     sink(std::string_view(head).substr(0, head.size() - 4));
     detail::write_spheres_json(scene.spheres, sink);
+    if (with_attributes) detail::write_sphere_attributes_json(scene.sphere_attributes, sink);
 
     ordered_json animation = detail::animation_to_json(scene.animation);
     if (!animation.is_null()) {
@@ -403,13 +411,14 @@ void write_scene_json_to(const Scene& scene, const detail::JsonSink& sink) {
 std::string write_scene_json(const Scene& scene) {
     std::string text;
     text.reserve(4096 + scene.spheres.size() * detail::kSphereLineBytes);
-    write_scene_json_to(scene, [&text](std::string_view piece) { text += piece; });
+    write_scene_json_to(scene, [&text](std::string_view piece) { text += piece; }, true);
     return text;
 }
 
 std::string scene_content_hash(const Scene& scene) {
     ContentHash hash;
-    write_scene_json_to(scene, [&hash](std::string_view piece) { hash.add(piece); });
+    write_scene_json_to(scene, [&hash](std::string_view piece) { hash.add(piece); }, false);
+    detail::hash_sphere_attributes(scene.sphere_attributes, hash);
     if (const auto& image = scene.environment.image) {
         hash.add_uint32(static_cast<std::uint32_t>(image->width));
         hash.add_uint32(static_cast<std::uint32_t>(image->height));

@@ -124,6 +124,10 @@ ScnWriteResult write_scn(const Scene& scene) {
     list_render_losses(scene.render, result.lossy);
     list_material_losses(scene.materials, result.lossy);
     if (!scene.animation.empty()) result.lossy.push_back("the animation is dropped; .scn scenes are static");
+    if (!scene.sphere_attributes.properties.empty())
+        result.lossy.push_back("the " + std::to_string(scene.sphere_attributes.properties.size()) +
+                               " sphere properties are dropped; .scn has none (their colours and radii, once applied "
+                               "with --color-by or --radius-by, are kept)");
     if (scene.environment.kind != EnvironmentKind::None)
         result.lossy.push_back("the environment light is dropped; SmallptGPU has none (rays that leave a .scn scene "
                                "see black), so the scene will render darker");
@@ -148,7 +152,10 @@ ScnWriteResult write_scn(const Scene& scene) {
         out += ' ';
         append_numbers(out, material.emission);
         out += ' ';
-        append_numbers(out, material.color);
+        // .scn gives every sphere its own colour: a per-sphere colour is kept exactly.
+        const std::vector<float>& colors = scene.sphere_attributes.colors;
+        const bool own_color = colors.size() == 3 * scene.spheres.size();  // validate_scene's rule
+        append_numbers(out, own_color ? Vec3{colors[3 * i], colors[3 * i + 1], colors[3 * i + 2]} : material.color);
         out += "  " + std::to_string(material_code(material)) + "\n";
     }
     return result;

@@ -61,7 +61,7 @@ TEST_F(OrbImportBinaryCli, BrokenBinaryIsOneErrorAndNoOutput) {
     std::ofstream(dir_ / "new.orb", std::ios::binary) << bytes;
     const ProcessResult r = run({"new.orb", "-o", "out.json"});
     EXPECT_EQ(r.exit_code, 1);
-    EXPECT_EQ(r.err, "orb-import: error: new.orb: this is a version 1793 binary scene; this Orb reads up to version 1\n");
+    EXPECT_EQ(r.err, "orb-import: error: new.orb: this is a version 1793 binary scene; this Orb reads up to version 2\n");
     EXPECT_EQ(files(), std::vector<std::string>{"new.orb"});
     // A .orb name picks the binary reader even when the magic is gone.
     std::ofstream(dir_ / "text.orb", std::ios::binary) << "camera 0 0 0 0 0 1\n";

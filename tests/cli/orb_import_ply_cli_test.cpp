@@ -14,6 +14,7 @@
 
 #include "orb/scene/auto_framing.h"
 #include "orb/scene/ply.h"
+#include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "import_cli_fixture.h"
 #include "run_process.h"
@@ -41,8 +42,39 @@ TEST_F(OrbImportPlyCli, PlyFileToOrbJson) {
     const Scene scene = load_scene_json(r.out, "stdout");
     EXPECT_EQ(scene, import_ply(kCloud, "cloud.ply", {.radius = 0.25}).scene);
     EXPECT_EQ(scene.spheres.size(), 3u + 2u);
-    EXPECT_EQ(scene.materials.size(), 2u + 2u);  // red, green, two lights
+    EXPECT_EQ(scene.materials.size(), 1u + 2u);  // the points' (their colours are per sphere), two lights
+    EXPECT_EQ(scene.sphere_attributes.colors.size(), 3u * (3u + 2u));
     EXPECT_EQ(scene.spheres[0].radius, 0.25);
+}
+
+TEST_F(OrbImportPlyCli, ColourAndSizeByAVertexProperty) {
+    const std::string cloud =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "property float temperature\nend_header\n0 0 0 300\n1 0 0 350\n0 1 0 400\n";
+    write("md.ply", cloud);
+    const ProcessResult r = run({"md.ply", "--color-by", "temperature", "--colormap", "greys", "--radius-by",
+                                 "temperature", "--radius-range", "0.1,0.2", "--material", "plastic", "-o", "md.orb"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("orb-import: md.ply: --color-by temperature: greys from 300 to 400\n"));
+    std::ifstream in(dir_ / "md.orb", std::ios::binary);
+    const Scene scene = load_scene_binary(std::string(std::istreambuf_iterator<char>(in), {}), "md.orb");
+    ASSERT_EQ(scene.sphere_attributes.colors.size(), 3u * (3u + 2u));
+    EXPECT_EQ(scene.sphere_attributes.colors[0], 1.0f);  // greys: white at the minimum
+    EXPECT_EQ(scene.sphere_attributes.colors[6], 0.0f);  // black at the maximum
+    EXPECT_DOUBLE_EQ(scene.spheres[1].radius, 0.15);
+    EXPECT_EQ(scene.materials[0].type, MaterialType::Pbr);
+
+    // An unknown property: one error naming what the file has, and no output.
+    const ProcessResult unknown = run({"md.ply", "--color-by", "temp", "-o", "bad.orb"});
+    EXPECT_EQ(unknown.exit_code, 1);
+    EXPECT_THAT(unknown.err, HasSubstr("orb-import: error: md.ply: --color-by temp: no such sphere property (the scene "
+                                       "has: temperature)\n"));
+    EXPECT_FALSE(fs::exists(dir_ / "bad.orb"));
+    // Malformed options are usage errors, before anything is read.
+    EXPECT_EQ(run({"md.ply", "--color-by", "temperature", "--colormap", "jet"}).exit_code, 2);
+    EXPECT_EQ(run({"md.ply", "--color-by", "temperature", "--color-range", "5,1"}).exit_code, 2);
+    EXPECT_EQ(run({"md.ply", "--radius-by", "temperature"}).exit_code, 2);
+    EXPECT_EQ(run({"md.ply", "--material", "glass"}).exit_code, 2);
 }
 
 TEST_F(OrbImportPlyCli, StdinIsRecognisedByContentAndFromPlyWorks) {
@@ -78,9 +110,12 @@ TEST_F(OrbImportPlyCli, PropertiesAndElementsOrbDoesNotReadAreNamed) {
     const ProcessResult r = run({"plane.ply"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err,
-              "orb-import: warning: plane.ply: ignored vertex properties: nx, ny, nz, s, t\n"
-              "orb-import: warning: plane.ply: ignored elements: face (1 row)\n");
-    EXPECT_EQ(load_scene_json(r.out, "stdout").spheres.size(), 4u + 2u);
+              "orb-import: warning: plane.ply: ignored elements: face (1 row)\n"
+              "orb-import: warning: plane.ply: vertex properties kept as sphere properties (for --color-by, "
+              "--radius-by): nx, ny, nz, s, t\n");
+    const Scene plane = load_scene_json(r.out, "stdout");
+    EXPECT_EQ(plane.spheres.size(), 4u + 2u);
+    EXPECT_EQ(plane.sphere_attributes.properties.size(), 5u);
 
     write("lists.ply", data("ply-files/point-lists.ply"));  // an element of two list properties and a float
     const ProcessResult lists = run({"lists.ply"});
@@ -94,7 +129,6 @@ TEST_F(OrbImportPlyCli, StrictRefusesWhatWouldBeLost) {
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.err,
               "orb-import: error: plane.ply would lose information (--strict):\n"
-              "  plane.ply: ignored vertex properties: nx, ny, nz, s, t\n"
               "  plane.ply: ignored elements: face (1 row)\n");
     EXPECT_EQ(files(), std::vector<std::string>{"plane.ply"});
 }
@@ -108,15 +142,16 @@ TEST_F(OrbImportPlyCli, ABlender24HeaderLineWithoutKeywordIsReadAsAComment) {
         "property float32 ny\nproperty float32 nz\nelement face 0\nproperty list uint8 int32 vertex_indices\n"
         "end_header\n0 0 0 0 0 1\n1 0 0 0 0 1\n";
     write("lamp.ply", lamp);
-    const ProcessResult r = run({"lamp.ply", "--strict"});  // a comment loses nothing: not an error
-    ASSERT_EQ(r.exit_code, 1);  // the normals are lost, though
-    EXPECT_THAT(r.err, HasSubstr("lamp.ply: ignored vertex properties: nx, ny, nz"));
+    // A comment loses nothing, nor do the normals (kept as sphere properties): not an error.
+    const ProcessResult r = run({"lamp.ply", "--strict"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
     const ProcessResult relaxed = run({"lamp.ply"});
     ASSERT_EQ(relaxed.exit_code, 0) << relaxed.err;
     EXPECT_EQ(relaxed.err,
-              "orb-import: warning: lamp.ply: ignored vertex properties: nx, ny, nz\n"
               "orb-import: warning: lamp.ply: header line 3 (\"Created by Blender3D 249 - www.blender.org, source "
-              "file: lamp.blend\") has no PLY keyword and was read as a comment\n");
+              "file: lamp.blend\") has no PLY keyword and was read as a comment\n"
+              "orb-import: warning: lamp.ply: vertex properties kept as sphere properties (for --color-by, "
+              "--radius-by): nx, ny, nz\n");
     EXPECT_EQ(load_scene_json(relaxed.out, "stdout").spheres.size(), 2u + 2u);
 }
 

@@ -92,8 +92,10 @@ TEST(PlyRead, EveryScalarTypeAndAliasReadsItsValues) {
     }
 }
 
+// The point's own colour (Scene::sphere_attributes), as doubles.
 Vec3 point_color(const Scene& scene, std::size_t point) {
-    return scene.materials.at(scene.spheres.at(point).material).color;
+    const std::vector<float>& colors = scene.sphere_attributes.colors;
+    return {colors.at(3 * point), colors.at(3 * point + 1), colors.at(3 * point + 2)};
 }
 
 TEST(PlyRead, UcharAndFloatColoursMeanTheSame) {

@@ -18,6 +18,7 @@ namespace {
 
 using test::make_ply;
 using test::PlyTestElement;
+const std::vector<std::string> kEncodings{"ascii", "binary_little_endian", "binary_big_endian"};
 
 PlyTestElement xyz_cloud(const std::vector<Vec3>& points) {
     PlyTestElement vertex{"vertex", {{"double", "x", ""}, {"double", "y", ""}, {"double", "z", ""}}, {}};
@@ -32,18 +33,65 @@ std::size_t emissive_count(const Scene& scene) {
     return count;
 }
 
-TEST(PlyScene, EqualColoursShareOneMaterial) {
+TEST(PlyScene, ColoursAreArraysBesideOneSharedMaterial) {
     PlyTestElement vertex{"vertex",
                           {{"float", "x", ""}, {"float", "y", ""}, {"float", "z", ""},
                            {"uchar", "red", ""}, {"uchar", "green", ""}, {"uchar", "blue", ""}},
                           {}};
-    for (int i = 0; i < 5000; ++i) vertex.rows.push_back({double(i % 71), double(i % 13), double(i / 71), double(i % 256), 7, 9});
+    for (int i = 0; i < 5000; ++i) vertex.rows.push_back({double(i % 71), double(i % 13), double(i / 71), double(i % 256), 7, 255});
     const Scene scene = import_ply(make_ply("binary_little_endian", {vertex}), "c.ply").scene;
-    EXPECT_EQ(scene.materials.size(), 256u + 2u);  // 256 colours and the two lights
-    for (int i = 0; i < 5000; ++i) {
-        const Sphere& s = scene.spheres[static_cast<std::size_t>(i)];
-        EXPECT_EQ(s.material, scene.spheres[static_cast<std::size_t>(i % 256)].material);
+    EXPECT_EQ(scene.materials.size(), 1u + 2u);  // every point's material and the two lights'
+    const std::vector<float>& colors = scene.sphere_attributes.colors;
+    ASSERT_EQ(colors.size(), 3 * scene.spheres.size());
+    // sRGB-encoded 8-bit values, decoded (IEC 61966-2-1) to linear floats.
+    auto linear = [](double encoded) {
+        return static_cast<float>(encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4));
+    };
+    for (std::size_t i = 0; i < 5000; ++i) {
+        EXPECT_EQ(scene.spheres[i].material, 0u);
+        EXPECT_FLOAT_EQ(colors[3 * i], linear(double(i % 256) / 255)) << i;
+        EXPECT_FLOAT_EQ(colors[3 * i + 1], linear(7.0 / 255)) << i;
+        EXPECT_EQ(colors[3 * i + 2], 1.0f) << i;
     }
+    // The lights keep their material's (black) colour; their emission is untouched.
+    for (std::size_t i = 5000; i < 5002; ++i) {
+        EXPECT_EQ(colors[3 * i], 0.0f);
+        EXPECT_GT(scene.materials[scene.spheres[i].material].emission[0], 0.0);
+    }
+    EXPECT_TRUE(scene.sphere_attributes.properties.empty());
+}
+
+TEST(PlyScene, OtherVertexPropertiesBecomeSphereProperties) {
+    PlyTestElement vertex{"vertex",
+                          {{"float", "x", ""}, {"float", "y", ""}, {"float", "z", ""}, {"float", "intensity", ""},
+                           {"uchar", "label", ""}, {"double", "nx", ""}, {"uchar", "idx", "int"}},
+                          {{0, 0, 0, 0.5, 3, -1, 2, 7, 8}, {1, 2, 3, 1e3, 0, 0.25, 0}}};
+    for (const std::string& encoding : kEncodings) {
+        const PlyImportResult result = import_ply(make_ply(encoding, {vertex}), "p.ply");
+        const std::vector<SphereProperty>& properties = result.scene.sphere_attributes.properties;
+        ASSERT_EQ(properties.size(), 3u) << encoding;
+        EXPECT_EQ(properties[0], (SphereProperty{"intensity", {0.5f, 1e3f, 0, 0}, {}}));
+        EXPECT_EQ(properties[1], (SphereProperty{"label", {3, 0, 0, 0}, {}}));  // and 0 for each light
+        EXPECT_EQ(properties[2], (SphereProperty{"nx", {-1, 0.25f, 0, 0}, {}}));
+        EXPECT_TRUE(result.scene.sphere_attributes.colors.empty());
+        // The list is still read past and named.
+        ASSERT_EQ(result.warnings.size(), 1u) << encoding;
+        EXPECT_EQ(result.warnings[0], "p.ply: ignored vertex properties (lists): idx");
+        ASSERT_EQ(result.notices.size(), 1u);
+        EXPECT_EQ(result.notices[0],
+                  "p.ply: vertex properties kept as sphere properties (for --color-by, --radius-by): intensity, label, nx");
+    }
+}
+
+TEST(PlyScene, APropertyASceneCannotHoldIsDroppedWithAWarning) {
+    const std::string bytes =
+        "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+        "property double big\nproperty float t\nend_header\n0 0 0 1 1\n1 1 1 1e300 3\n";
+    const PlyImportResult result = import_ply(bytes, "d.ply");
+    ASSERT_EQ(result.scene.sphere_attributes.properties.size(), 1u);
+    EXPECT_EQ(result.scene.sphere_attributes.properties[0], (SphereProperty{"t", {1, 3, 0, 0}, {}}));
+    EXPECT_EQ(result.warnings, std::vector<std::string>{"d.ply: ignored vertex property 'big': vertex 1 holds inf (a "
+                                                        "sphere property must be a finite 32-bit float)"});
 }
 
 TEST(PlyScene, PointsWithoutColourAreTheDefaultGrey) {

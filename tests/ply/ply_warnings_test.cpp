@@ -32,10 +32,12 @@ TEST(PlyWarnings, EveryUnreadPropertyAndElementIsNamedInEveryEncoding) {
     const PlyTestElement face{"face", {{"int", "vertex_indices", "uchar"}}, {{3, 0, 1, 2}}};
     for (const std::string& encoding : kEncodings) {
         const PlyImportResult result = import_ply(make_ply(encoding, {vertex, face}), "bun.ply");
-        EXPECT_EQ(result.warnings, (std::vector<std::string>{"bun.ply: ignored vertex properties: confidence, intensity",
-                                                             "bun.ply: ignored elements: face (1 row)"}))
-            << encoding;
-        EXPECT_TRUE(result.notices.empty());
+        // The faces are lost; confidence and intensity are kept as the spheres' properties.
+        EXPECT_EQ(result.warnings, (std::vector<std::string>{"bun.ply: ignored elements: face (1 row)"})) << encoding;
+        EXPECT_EQ(result.notices, (std::vector<std::string>{"bun.ply: vertex properties kept as sphere properties (for "
+                                                            "--color-by, --radius-by): confidence, intensity"}));
+        ASSERT_EQ(result.scene.sphere_attributes.properties.size(), 2u);
+        EXPECT_EQ(result.scene.sphere_attributes.properties[1].values, (std::vector<float>{0.5f, 0.25f, 1, 0, 0}));
         EXPECT_EQ(result.scene.spheres.size(), 3u + 2u);
     }
 }
@@ -55,9 +57,13 @@ TEST(PlyWarnings, AGaussianSplattingFileIsRecognisedAndItsFieldsListedShortly) {
         import_ply(make_ply("binary_little_endian", {{"vertex", floats(names), {row, other}}}), "splats.ply");
     ASSERT_EQ(result.warnings.size(), 1u);
     EXPECT_EQ(result.warnings[0],
-              "splats.ply: ignored vertex properties: nx, ny, nz, f_dc_0..2, f_rest_0..44, opacity, scale_0..2, "
-              "rot_0..3 (a 3D Gaussian splatting file: Orb reads neither its spherical-harmonic colours nor its "
-              "log-scales, so its points are grey, sized by --radius or the derived radius)");
+              "splats.ply: a 3D Gaussian splatting file: Orb renders neither its spherical-harmonic colours nor its "
+              "log-scales, so its points are grey, sized by --radius or the derived radius (its fields are kept as "
+              "sphere properties)");
+    ASSERT_EQ(result.notices.size(), 1u);
+    EXPECT_EQ(result.notices[0],
+              "splats.ply: vertex properties kept as sphere properties (for --color-by, --radius-by): nx, ny, nz, "
+              "f_dc_0..2, f_rest_0..44, opacity, scale_0..2, rot_0..3");
     EXPECT_EQ(result.scene.spheres.size(), 2u + 2u);
 }
 

@@ -81,3 +81,19 @@ TEST_F(RenderCli, FramesPastTheAnimationsEndAreNamed) {
     const auto inside = render({scene, "--frames", "0-24", "--missing", "-o", path("b.%04d.exr")});
     EXPECT_EQ(inside.err.find("warning"), std::string::npos) << inside.err;
 }
+
+TEST_F(RenderCli, ColourByAPropertyOfTheSceneOrRefuseNamingTheOnesItHas) {
+    orb::Scene scene = small_scene();
+    std::vector<float> values;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) values.push_back(static_cast<float>(i));
+    scene.sphere_attributes.properties = {{"charge", values, {}}};
+    const std::string file = write_scene(scene);
+    const auto unknown = render({file, "--color-by", "mass", "--spp", "1", "-o", path("x.exr")});
+    EXPECT_EQ(unknown.exit_code, 1);
+    EXPECT_EQ(unknown.err, "orb-render: error: " + file + ": --color-by mass: no such sphere property (the scene has: charge)\n");
+    EXPECT_FALSE(fs::exists(path("x.exr")));
+    EXPECT_EQ(render({file, "--colormap", "rainbow", "--color-by", "charge", "-o", path("x.exr")}).exit_code, 2);
+    const auto styled = render({file, "--color-by", "charge", "--colormap", "cividis", "--spp", "1", "-o", path("x.exr")});
+    EXPECT_EQ(styled.exit_code, 0) << styled.err;
+    EXPECT_TRUE(fs::exists(path("x.exr")));
+}

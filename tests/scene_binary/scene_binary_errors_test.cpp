@@ -51,8 +51,8 @@ TEST(SceneBinaryErrors, WrongMagic) {
 
 TEST(SceneBinaryErrors, NewerVersion) {
     std::string bytes = write_scene_binary(unnamed_scene());
-    poke<std::uint32_t>(bytes, 8, 2);
-    EXPECT_EQ(error_of(bytes), "big.orb: this is a version 2 binary scene; this Orb reads up to version 1");
+    poke<std::uint32_t>(bytes, 8, 3);
+    EXPECT_EQ(error_of(bytes), "big.orb: this is a version 3 binary scene; this Orb reads up to version 2");
 }
 
 TEST(SceneBinaryErrors, TruncatedAnywhere) {

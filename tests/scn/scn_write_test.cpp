@@ -35,6 +35,18 @@ TEST(ScnWrite, WritesTheBucciarelliLayout) {
     EXPECT_TRUE(result.lossy.empty());
 }
 
+TEST(ScnWrite, PerSphereColoursAreWrittenAndPropertiesNamedAsLost) {
+    Scene scene = simple_scene();
+    scene.sphere_attributes.colors = {0.5f, 0.25f, 1, 0, 0, 0, 1, 0.75f, 1};
+    ScnWriteResult result = write_scn(scene);
+    EXPECT_THAT(result.text, HasSubstr("sphere 1000  0 -1000 0  0 0 0  0.5 0.25 1  0\n"));
+    EXPECT_THAT(result.text, HasSubstr("sphere 1  1 1 1  0 0 0  1 0.75 1  2\n"));
+    EXPECT_TRUE(result.lossy.empty());
+    scene.sphere_attributes.properties = {{"t", {1, 2, 3}, {}}};
+    result = write_scn(scene);
+    EXPECT_THAT(result.lossy, ElementsAre(HasSubstr("the 1 sphere properties are dropped")));
+}
+
 TEST(ScnWrite, FovWithinAHundredthOfADegreeIsSmallptGpus) {
     Scene scene = simple_scene();
     scene.camera.vfov_deg = 42.8711;  // Camera's default, within 0.01 degrees

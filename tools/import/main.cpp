@@ -15,6 +15,7 @@
 #include "orb/cli/messages.h"
 #include "orb/cli/output_file.h"
 #include "orb/cli/output_overlap.h"
+#include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
 #include "orb/cli/texture_decoder_loader.h"
 #include "orb/scene/error.h"
@@ -39,6 +40,7 @@ constexpr const char* kExamples = R"(Examples:
   orb-import cloud.ply --radius 0.01 -o cloud.json   PLY point cloud -> spheres, camera, lights
   orb-import cloud.ply -o cloud.orb                  ... -> the binary scene (fast to load)
   orb-import cloud.orb -o cloud.json                 binary scene -> Orb JSON, exactly
+  orb-import md.ply --color-by temperature --colormap inferno -o md.orb   colour by a vertex property
   orb-import model.glb --environment sky.exr -o m.json  lit by an HDR map (or --environment R,G,B)
   orb-import cornell.json --to scn -o cornell.scn    Orb JSON -> .scn (warns about losses)
   orb-import scan.orb --look-at 0,0.1,0 --vfov 30 -o scan-closer.orb   move the camera of a binary scene
@@ -64,6 +66,7 @@ struct Arguments {
     orb::ImportOptions import_options;
     orb::import_tool::EnvironmentChoice environment;
     orb::cli::CameraOptions camera;
+    orb::cli::SphereStyleArguments style;
 };
 
 // Where relative references (glTF buffers and images, environment maps) are
@@ -98,6 +101,7 @@ int run(Arguments& args, const CLI::App& app) {
     using orb::import_tool::rebase_environment_map;
     if (args.list_formats) return orb::cli::print_to_stdout(orb::import_tool::format_list());
     if (args.input.empty()) throw orb::cli::UsageError("missing INPUT (a scene file, or - for stdin)");
+    const orb::SphereStyleOptions style = orb::cli::sphere_style_options(args.style);
     const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
     // Without --from, the content (and the name's extension) says the format (orb::import_scene).
     args.import_options.format = args.from;
@@ -122,6 +126,8 @@ int run(Arguments& args, const CLI::App& app) {
     for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
     if (environment) imported.scene.environment = std::move(*environment);
+    // Styling sizes spheres, which the automatic camera may then frame.
+    orb::cli::apply_sphere_style(imported.scene, style, source);
     // The command line's camera wins over the file's (or the automatic one).
     orb::cli::apply_camera_options(args.camera, imported.scene, imported.scene.render.width,
                                    imported.scene.render.height, source);
@@ -181,6 +187,7 @@ int main(int argc, char** argv) {
             orb::import_tool::add_ply_options(app, args.import_options.ply);
             orb::import_tool::add_environment_options(app, args.environment);
             orb::cli::add_camera_options(app, args.camera);
+            orb::cli::add_sphere_style_options(app, args.style);
             app.footer(kExamples);
         },
         [&] { return run(args, *parsed); });

@@ -71,6 +71,7 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
                    "Stop once the image's estimated relMSE (as orb-diff's relmse) is below E")
         ->check(positive)
         ->option_text("E");
+    cli::add_sphere_style_options(app, o.style);
     app.add_option("--time", o.time_limit, "Stop after this many seconds of rendering")->check(seconds);
     app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")->check(seconds);
     app.add_option("--resume", o.resume, "Continue the render stored in this orb-render EXR")->option_text("FILE");

@@ -126,7 +126,10 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 
 RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
     RenderPlan plan;
+    const SphereStyleOptions style = cli::sphere_style_options(o.style);  // usage errors before the scene is read
     Scene imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty);
+    // Before the hash: a styled scene is another scene (its outputs say so, and --resume checks it).
+    cli::apply_sphere_style(imported, style, plan.scene_label);
 
     plan.config.device = o.device;
     plan.config.development = knobs;

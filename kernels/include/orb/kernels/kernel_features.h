@@ -51,6 +51,8 @@
             "bit k: MaterialKind k's code is in the program (material_kinds.h)")                                      \
     FEATURE(ORB_ROUGH_DIELECTRIC, rough_dielectric, Bool, 1, "rough glass's code; 0 when every glass is smooth")      \
     FEATURE(ORB_ENVIRONMENT, environment, Bool, 1, "the environment map's code; 0 for a scene without one")           \
+    FEATURE(ORB_SPHERE_COLORS, sphere_colors, Bool, 0,                                                                \
+            "1: every sphere's colour is its own (SphereRecord::color), not its material's; 0: the material's")      \
     FEATURE(ORB_CASTER_SHARE, caster_share, Float, 0.25f,                                                             \
             "share of continuations aimed at caustic casters; 0 leaves the aiming code out")                         \
     FEATURE(ORB_SAMPLER_SOBOL, sampler_sobol, Bool, 1, "1: scrambled Sobol points (sampler.cl); 0: independent numbers") \

@@ -12,7 +12,10 @@
 
 namespace orb {
 
-inline constexpr std::uint32_t kSceneBinaryVersion = 1;
+// Version 2 added the per-sphere attribute arrays (colours, properties) after
+// the names; the writer uses it only for a scene that has them and writes
+// version 1 otherwise. The reader reads both.
+inline constexpr std::uint32_t kSceneBinaryVersion = 2;
 // PNG-style: a non-ASCII first byte, then CR LF, ^Z and LF, so that text-mode
 // transfers and truncation to 7 bits are caught at the first bytes.
 inline constexpr std::string_view kSceneBinaryMagic{"\x89ORB\r\n\x1a\n", 8};

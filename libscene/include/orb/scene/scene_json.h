@@ -48,7 +48,10 @@ void validate_scene(const Scene& scene, const std::string& source);
 // for resume and provenance. When the environment map's texels are attached
 // (Environment::image), the hash continues over them (width, height, then
 // every float's bits, little-endian), so an edited map that keeps its file
-// name is a different scene; tools attach them before hashing.
+// name is a different scene; tools attach them before hashing. The
+// per-sphere colours and properties (Scene::sphere_attributes) are hashed
+// as their float bits after the JSON without them (a scene without them
+// hashes as it did before they existed), then the texels.
 std::string scene_content_hash(const Scene& scene);
 
 }  // namespace orb

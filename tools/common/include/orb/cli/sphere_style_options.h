@@ -1,0 +1,29 @@
+// The options that colour and size spheres by their properties (--color-by,
+// --colormap, --color-range, --radius-by, --radius-range, --radius-scale,
+// --material), shared by orb-import and orb-render; the rules are libscene's
+// (orb/scene/sphere_styling.h, docs/orb-import.md "Colour and size by property").
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "orb/scene/sphere_styling.h"
+
+namespace orb::cli {
+
+struct SphereStyleArguments {
+    std::string color_by, colormap = "viridis", color_range, radius_by, radius_range, material;
+    double radius_scale = 1.0;
+};
+
+void add_sphere_style_options(CLI::App& app, SphereStyleArguments& arguments);
+
+// Throws UsageError for a malformed range or an unknown colour map or preset.
+SphereStyleOptions sphere_style_options(const SphereStyleArguments& arguments);
+
+// Applies them and says what the colours mean ("cloud.ply: --color-by
+// temperature: viridis over [300, 400]") on stderr.
+void apply_sphere_style(Scene& scene, const SphereStyleOptions& options, const std::string& source);
+
+}  // namespace orb::cli
