@@ -10,6 +10,8 @@ packages=(
   libtinygltf-dev libstb-dev nlohmann-json3-dev libcli11-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libopenexr-dev libdeflate-dev libopenimageio-dev libopencolorio-dev
+  # PDB and mmCIF (header-only; pegtl is its CIF parser's)
+  gemmi-dev tao-pegtl-dev
   # tests: GoogleTest, schema validation, reference image tools
   libgtest-dev python3-jsonschema openimageio-tools opencolorio-tools
   # tests: orb-farm on a one-node Slurm cluster started in a temporary folder
