@@ -9,6 +9,7 @@
 
 #include "atom_frame.h"
 #include "atoms_scene.h"
+#include "line_reader.h"
 #include "orb/scene/error.h"
 
 namespace orb::molecular {
@@ -85,6 +86,27 @@ AtomFrame model_frame(const gemmi::Structure& structure, const gemmi::Model& mod
     return frame;
 }
 
+// gemmi reads a coordinate it cannot parse as 0; each ATOM/HETATM record's
+// x, y and z (columns 31-38, 39-46, 47-54) must be numbers, or the file is refused.
+void check_pdb_coordinates(std::string_view bytes, const std::string& source) {
+    LineReader lines(bytes);
+    std::string_view line;
+    while (lines.next(line)) {
+        if (!line.starts_with("ATOM  ") && !line.starts_with("HETATM")) continue;
+        for (int k = 0; k < 3; ++k) {
+            const std::size_t first = 30 + 8 * static_cast<std::size_t>(k);
+            std::string_view text = line.substr(std::min(line.size(), first), 8);
+            const std::size_t start = text.find_first_not_of(' ');
+            text = start == std::string_view::npos ? std::string_view{} : text.substr(start, text.find_last_not_of(' ') - start + 1);
+            double value = 0;
+            if (!parse_double(text, value))
+                fail_at(source, lines.line_number(),
+                        std::string("expected the atom's ") + "xyz"[k] + " in columns " + std::to_string(first + 1) + "-" +
+                            std::to_string(first + 8) + ", got " + quoted(text));
+        }
+    }
+}
+
 class StructureSource final : public FrameSource {
 public:
     StructureSource(gemmi::Structure structure, std::string source, std::string_view format,
@@ -127,6 +149,7 @@ std::unique_ptr<FrameSource> open_structure(std::string_view bytes, const std::s
     gemmi::Structure structure;
     try {
         if (format == "pdb") {
+            check_pdb_coordinates(bytes, source);
             structure = gemmi::read_pdb_from_memory(bytes.data(), bytes.size(), source);
         } else {
             const gemmi::cif::Document document = gemmi::cif::read_memory(bytes.data(), bytes.size(), source.c_str());
