@@ -6,6 +6,7 @@
 
 #include "default_lights.h"
 #include "json_text.h"
+#include "line_reader.h"
 #include "orb/scene/auto_framing.h"
 #include "orb/scene/error.h"
 #include "ply_scene.h"
@@ -140,11 +141,20 @@ Scene atoms_scene(AtomFrame frame, const MolecularImportOptions& options, FrameV
     atom.color = {kPlainGrey, kPlainGrey, kPlainGrey};  // each atom's colour replaces it
     scene.materials.push_back(atom);
 
-    // Atoms without an element are coloured by their type, when the file has one.
+    // Atoms without an element are coloured by their type, when the file has
+    // one: type n (a whole number, as LAMMPS writes them) by colour n - 1, so a
+    // type keeps its colour in every frame whatever order its atoms come in.
     const SphereProperty* type = nullptr;
+    std::vector<Vec3> label_colors;
     if (frame.elements.empty())
         for (const SphereProperty& property : frame.properties)
             if (property.name == "type" && property.categorical()) type = &property;
+    if (type)
+        for (std::size_t k = 0; k < type->labels.size(); ++k) {
+            long long number = 0;
+            const bool numbered = parse_long(type->labels[k], number) && number >= 1;
+            label_colors.push_back(type_color(numbered ? static_cast<std::size_t>(number - 1) : k));
+        }
 
     scene.spheres.resize(atoms);
     std::vector<float>& colors = scene.sphere_attributes.colors;
@@ -154,7 +164,7 @@ Scene atoms_scene(AtomFrame frame, const MolecularImportOptions& options, FrameV
         sphere.center = frame.positions[i];
         sphere.radius = atom_radius(frame, i, options, view);
         const Vec3 color = !frame.elements.empty() ? element_color(*frame.elements[i])
-                           : type ? type_color(static_cast<std::size_t>(type->values[i]))
+                           : type ? label_colors[static_cast<std::size_t>(type->values[i])]
                                   : Vec3{kPlainGrey, kPlainGrey, kPlainGrey};
         for (double c : color) colors.push_back(static_cast<float>(c));
     }

@@ -103,6 +103,32 @@ TEST(MolecularFrames, LammpsTriclinicBoxRadiusColumnAndTypes) {
     EXPECT_EQ(scene.sphere_attributes.colors.back(), 0.0f);
 }
 
+// sRGB 8-bit -> linear, as the scene holds colours.
+float linear(int encoded) {
+    const double v = encoded / 255.0;
+    return static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+}
+
+TEST(MolecularFrames, TypeNKeepsOkabeItoColourNMinusOneInEveryFrame) {
+    // Type 3 comes first in frame 1 and last in frame 2: #009E73 (the third colour) both times.
+    const std::string dump =
+        "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n0 10\n0 10\n0 10\n"
+        "ITEM: ATOMS id type x y z\n1 3 1 1 1\n2 1 5 5 5\n"
+        "ITEM: TIMESTEP\n1\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n0 10\n0 10\n0 10\n"
+        "ITEM: ATOMS id type x y z\n2 1 5 5 5\n1 3 1 1 2\n";
+    const auto frames = open_molecular_bytes(dump, "t.lammpstrj", "lammps-dump", {});
+    const Scene first = frames->frame(0), second = frames->frame(1);
+    const std::vector<float> third{linear(0x00), linear(0x9E), linear(0x73)};
+    const std::vector<float> orange{linear(0xE6), linear(0x9F), linear(0x00)};  // type 1
+    const auto color = [](const Scene& scene, std::size_t i) {
+        return std::vector<float>(scene.sphere_attributes.colors.begin() + 3 * i, scene.sphere_attributes.colors.begin() + 3 * i + 3);
+    };
+    EXPECT_EQ(color(first, 0), third);
+    EXPECT_EQ(color(first, 1), orange);
+    EXPECT_EQ(color(second, 1), third);
+    EXPECT_EQ(color(second, 0), orange);
+}
+
 TEST(MolecularFrames, NumericPropertiesOfLightsDoNotWidenTheirRange) {
     const std::string dump =
         "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n0 10\n0 10\n0 10\n"
