@@ -31,6 +31,7 @@ struct MolecularImportOptions {
     // Which frame orb-import writes (1 = the file's first frame; a still
     // render takes frame 1). orb-render --frames reads them all.
     long frame = 1;
+    bool operator==(const MolecularImportOptions&) const = default;
 };
 
 // A file of one or more frames (a trajectory, the models of an NMR
