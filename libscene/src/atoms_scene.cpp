@@ -56,8 +56,10 @@ void add_cell(Scene& scene, const Cell& cell, double radius, std::uint32_t mater
     for (int axis = 0; axis < 3; ++axis) {
         const Vec3& edge = *axes[axis];
         const double length = std::hypot(edge[0], edge[1], edge[2]);
-        const std::size_t steps = std::min<std::size_t>(
-            kMaxCellSpheresPerEdge, static_cast<std::size_t>(std::ceil(length / (kCellSpacingRadii * radius))));
+        const double wanted = std::ceil(length / (kCellSpacingRadii * radius));  // inf or NaN for absurd cells
+        const std::size_t steps = wanted >= 0 && wanted < static_cast<double>(kMaxCellSpheresPerEdge)
+                                      ? static_cast<std::size_t>(wanted)
+                                      : (wanted >= 0 ? kMaxCellSpheresPerEdge : 0);
         for (int u = 0; u < 2; ++u)
             for (int v = 0; v < 2; ++v) {
                 // The edge's start: the corner with this axis at 0 and the other two at u, v.

@@ -109,6 +109,7 @@ ImporterOutput read_molecular(std::string_view format, std::string_view bytes, c
         throw InputError(source + ": has " + std::to_string(count) + (count == 1 ? " frame" : " frames") +
                          " (1-" + std::to_string(count) + "); there is no frame " + std::to_string(frame));
     ImporterOutput output = scene_only(frames->frame(static_cast<std::size_t>(frame - 1)));
+    validate_scene(output.imported.scene, source);  // the rules every scene obeys, whoever built it
     output.imported.warnings = frames->warnings();
     if (count > 1)
         output.imported.notices.push_back(source + ": holds " + std::to_string(count) + " frames; this is frame " +

@@ -35,7 +35,8 @@ TEST(DetectSceneFormat, MalformedJsonGoesToTheReaderThatExplainsIt) {
 
 TEST(SceneImporters, EveryWordFindsItsImporter) {
     const std::vector<std::string> words = orb::scene_format_words();
-    EXPECT_EQ(words, (std::vector<std::string>{"scn", "gltf", "glb", "ply", "orb", "json", "orb-binary"}));
+    EXPECT_EQ(words, (std::vector<std::string>{"scn", "gltf", "glb", "ply", "orb", "json", "orb-binary", "pdb", "ent",
+                                               "mmcif", "cif", "xyz", "extxyz", "lammps-dump", "lammpstrj", "gro"}));
     for (const std::string& word : words) EXPECT_NE(orb::find_scene_importer(word), nullptr) << word;
     EXPECT_EQ(orb::find_scene_importer("glb"), orb::find_scene_importer("gltf"));
     EXPECT_EQ(orb::find_scene_importer("json"), orb::find_scene_importer("orb"));

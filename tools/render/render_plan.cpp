@@ -149,6 +149,9 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
         // Posed lazily: a run that finds every frame finished poses none.
         return plan;
     }
+    if (plan.trajectory && o.time_at)
+        throw InputError(plan.scene_label + ": --time-at poses an animated scene at a time; a trajectory's frames "
+                         "are chosen by number: --frame N");
     if (plan.trajectory && plan.trajectory->frame_count() > 1)
         cli::info(plan.scene_label + ": rendering its first frame of " +
                   std::to_string(plan.trajectory->frame_count()) + " (--frame N or --frames 1-" +
