@@ -70,6 +70,29 @@ TEST(MolecularFiles, HaemoglobinPdbAtomsElementsChainsAndBFactors) {
     EXPECT_GT(scene.materials[1].emission[0], 0);
 }
 
+TEST(MolecularFiles, Cryst1IsTheCell) {
+    // CRYST1   63.150   83.590   53.800  90.00  99.34  90.00. 4HHB's SCALEn records place the cell in the
+    // atoms' own frame (not the standard one with a along x), so its edges are checked by length and angle.
+    const Scene scene = open("4hhb.pdb", "pdb", {.cell = true})->frame(0);
+    const auto first = std::find_if(scene.spheres.begin(), scene.spheres.end(), [](const Sphere& s) { return s.material == 1; });
+    ASSERT_NE(first, scene.spheres.end());
+    EXPECT_EQ(scene.materials[1].name, "cell");
+    // The 8 corners come first, in the order (i, j, k) of origin + i a + j b + k c.
+    const Vec3 origin = first[0].center, a = first[4].center, b = first[2].center, c = first[1].center;
+    const auto edge = [&origin](const Vec3& p) { return Vec3{p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]}; };
+    const auto length = [](const Vec3& v) { return std::hypot(v[0], v[1], v[2]); };
+    const auto angle = [&](const Vec3& u, const Vec3& v) {
+        return std::acos((u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / (length(u) * length(v))) * 180 / 3.14159265358979323846;
+    };
+    // SCALEn holds 6 decimals: lengths to 1e-3 relative, angles to 0.01 degree.
+    EXPECT_NEAR(length(edge(a)), 63.15, 0.06);
+    EXPECT_NEAR(length(edge(b)), 83.59, 0.08);
+    EXPECT_NEAR(length(edge(c)), 53.80, 0.05);
+    EXPECT_NEAR(angle(edge(a), edge(c)), 99.34, 0.01);
+    EXPECT_NEAR(angle(edge(a), edge(b)), 90.0, 0.01);
+    EXPECT_NEAR(angle(edge(b), edge(c)), 90.0, 0.01);
+}
+
 TEST(MolecularFiles, MmcifGivesTheSameAtomsAsPdb) {
     const Scene pdb = open("4hhb.pdb", "pdb")->frame(0);
     const Scene cif = open("4hhb.cif", "mmcif")->frame(0);
