@@ -114,7 +114,7 @@ AtomFrame read_gro_frame(LineReader& lines, const std::string& source) {
                 const std::string_view text = trimmed(line.substr(std::min(line.size(), 20 + (3 + k) * width), width));
                 if (!parse_double(text, v))
                     fail_at(source, number, "atom " + std::to_string(i + 1) + ": expected a velocity (as the first atom has), got " + quoted(text));
-                velocity[k].values.push_back(static_cast<float>(v));
+                velocity[k].values.push_back(property_value(v, source, number, velocity[k].name));
             }
         }
         long long residue = 0;

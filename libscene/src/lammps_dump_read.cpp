@@ -222,7 +222,7 @@ AtomFrame read_dump_frame(LineReader& lines, const std::string& source) {
             if (!parse_double(fields[column], value))
                 fail_at(source, lines.line_number(),
                         "expected a number in column " + quoted(names[column]) + ", got " + quoted(fields[column]));
-            property.values.push_back(static_cast<float>(value));
+            property.values.push_back(property_value(value, source, lines.line_number(), names[column]));
             if ((column == radius_column || column == diameter_column) && !(value > 0))
                 fail_at(source, lines.line_number(), "expected a " + std::string(names[column]) + " > 0, got " + quoted(fields[column]));
             if (column == radius_column) frame.radii[i] = value;

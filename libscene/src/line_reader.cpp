@@ -160,6 +160,17 @@ bool parse_long(std::string_view text, long long& value) {
     return ec == std::errc() && end == text.data() + text.size() && !text.empty();
 }
 
+float property_value(double value, const std::string& source, std::uint64_t line, std::string_view column) {
+    const float narrowed = static_cast<float>(value);
+    if (!std::isfinite(narrowed))
+    {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.6g", value);
+        fail_at(source, line, "column " + quoted(column) + ": " + text + " does not fit a 32-bit float (about 3.4e38 at most)");
+    }
+    return narrowed;
+}
+
 void fail_at(const std::string& source, std::uint64_t line, const std::string& message) {
     throw InputError(source + ":" + std::to_string(line) + ": " + message);
 }

@@ -59,6 +59,10 @@ void split_fields(std::string_view line, std::vector<std::string_view>& fields);
 bool parse_double(std::string_view text, double& value);
 bool parse_long(std::string_view text, long long& value);
 
+// A per-atom value as properties keep it (a 32-bit float); throws InputError
+// naming the line and the column when the number does not fit one.
+float property_value(double value, const std::string& source, std::uint64_t line, std::string_view column);
+
 // "file:line: message"
 [[noreturn]] void fail_at(const std::string& source, std::uint64_t line, const std::string& message);
 

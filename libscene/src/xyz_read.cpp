@@ -226,7 +226,7 @@ AtomFrame read_xyz_frame(LineReader& lines, const std::string& source) {
                 fail_at(source, lines.line_number(),
                         "atom " + std::to_string(i + 1) + ": column " + quoted(output.numeric.name) +
                             ": expected a number, got " + quoted(text));
-            output.numeric.values.push_back(static_cast<float>(value));
+            output.numeric.values.push_back(property_value(value, source, lines.line_number(), output.numeric.name));
         }
     }
     frame.properties.push_back(element_names.take());
