@@ -12,6 +12,8 @@ packages=(
   libtinygltf-dev libstb-dev nlohmann-json3-dev libcli11-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libopenexr-dev libdeflate-dev libopenimageio-dev libopencolorio-dev
+  # PDB and mmCIF (header-only; pegtl is its CIF parser's)
+  gemmi-dev tao-pegtl-dev
   # GoogleTest: the default build configures the test suite too
   libgtest-dev
 )

@@ -1,4 +1,4 @@
-// Magic numbers, first lines and extensions of the 3D, molecular, point-cloud,
+// Magic numbers, first lines and extensions of the 3D, point-cloud,
 // image and archive formats people most often hand to Orb by mistake. The
 // signatures are the formats' own (each noted beside it), as the file(1)
 // magic database also lists them.
@@ -86,16 +86,6 @@ std::vector<std::string_view> leading_lines(std::string_view text, std::size_t c
     return lines;
 }
 
-bool is_number(std::string_view word) {
-    if (word.empty()) return false;
-    bool digit = false;
-    for (char c : word) {
-        if (std::isdigit(static_cast<unsigned char>(c))) digit = true;
-        else if (c != '+' && c != '-' && c != '.' && c != 'e' && c != 'E') return false;
-    }
-    return digit;
-}
-
 bool is_count(std::string_view word) {
     return !word.empty() && std::all_of(word.begin(), word.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
@@ -116,30 +106,6 @@ const char* obj_kind(std::string_view text) {
         if (keyword == obj) return "Wavefront OBJ";
     if (keyword == "newmtl") return "Wavefront OBJ material library (.mtl)";
     return nullptr;
-}
-
-// The Protein Data Bank's fixed-column records (wwPDB format 3.3): a file
-// starts with one of these six-character record names.
-bool is_pdb(std::string_view line) {
-    for (std::string_view record : {"HEADER", "TITLE ", "COMPND", "REMARK", "CRYST1", "ATOM  ", "HETATM", "MODEL "})
-        if (line.starts_with(record)) return true;
-    return false;
-}
-
-// XYZ molecule files: an atom count, a comment line, then "Element x y z".
-bool is_xyz(std::string_view text) {
-    std::string_view lines[3];
-    for (std::string_view& line : lines) {
-        line = first_line(text);
-        const std::size_t next = text.find('\n');
-        if (next == std::string_view::npos) return false;
-        text.remove_prefix(next + 1);
-    }
-    const std::vector<std::string_view> count = words_of(lines[0]);
-    const std::vector<std::string_view> atom = words_of(lines[2]);
-    return count.size() == 1 && is_count(count[0]) && atom.size() >= 4 &&
-           std::isalpha(static_cast<unsigned char>(atom[0].front())) && is_number(atom[1]) && is_number(atom[2]) &&
-           is_number(atom[3]);
 }
 
 }  // namespace
@@ -171,10 +137,7 @@ std::string foreign_format_by_content(std::string_view bytes) {
     // OFF and its variants; some writers run the counts into the keyword ("OFF8 6 12").
     for (std::string_view off : {"OFF", "COFF", "NOFF", "CNOFF", "STOFF", "STCOFF", "4OFF", "nOFF"})
         if (word.starts_with(off) && (word.size() == off.size() || is_count(word.substr(off.size())))) return "OFF";
-    if (is_pdb(line)) return "Protein Data Bank (PDB)";
-    if (word.starts_with("data_")) return "CIF / mmCIF";
     if (line.starts_with("# .PCD") || word == "VERSION") return "PCD (Point Cloud Library)";
-    if (is_xyz(bytes)) return "XYZ (atom coordinates)";
     if (const char* obj = obj_kind(bytes)) return obj;
     return "";
 }
@@ -201,10 +164,6 @@ std::string foreign_format_by_extension(const std::string& path) {
         {".usdc", "USD (binary crate)"},
         {".usdz", "USD (zipped)"},
         {".abc", "Alembic"},
-        {".pdb", "Protein Data Bank (PDB)"},
-        {".cif", "CIF / mmCIF"},
-        {".mmcif", "CIF / mmCIF"},
-        {".xyz", "XYZ"},
         {".off", "OFF"},
         {".x3d", "X3D"},
         {".wrl", "VRML"},

@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <memory>
 
+#include "orb/scene/error.h"
 #include "orb/scene/gltf.h"
+#include "orb/scene/molecular.h"
 #include "orb/scene/ply.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
@@ -94,6 +97,45 @@ ImporterOutput read_orb_binary(std::string_view bytes, const std::string& source
     return scene_only(load_scene_binary(bytes, source));
 }
 
+// The molecular and particle formats (orb/scene/molecular.h): orb-import
+// writes one frame of them (--frame, the first by default); orb-render reads
+// them frame by frame from the file instead (orb/request/scene_input.h).
+ImporterOutput read_molecular(std::string_view format, std::string_view bytes, const std::string& source,
+                              const ImportOptions& options) {
+    const std::unique_ptr<FrameSource> frames = open_molecular_bytes(bytes, source, format, options.molecular);
+    const long frame = options.molecular.frame;
+    const std::size_t count = frames->frame_count();
+    if (frame < 1 || static_cast<std::size_t>(frame) > count)
+        throw InputError(source + ": has " + std::to_string(count) + (count == 1 ? " frame" : " frames") +
+                         " (1-" + std::to_string(count) + "); there is no frame " + std::to_string(frame));
+    ImporterOutput output = scene_only(frames->frame(static_cast<std::size_t>(frame - 1)));
+    validate_scene(output.imported.scene, source);  // the rules every scene obeys, whoever built it
+    output.imported.warnings = frames->warnings();
+    if (count > 1)
+        output.imported.notices.push_back(source + ": holds " + std::to_string(count) + " frames; this is frame " +
+                                          std::to_string(frame) + " (orb-render --frames 1-" + std::to_string(count) +
+                                          " renders them all from the file)");
+    return output;
+}
+
+template <std::size_t N>
+struct FormatName {
+    char text[N];
+    constexpr FormatName(const char (&name)[N]) { std::copy_n(name, N, text); }
+    constexpr std::string_view view() const { return {text, N - 1}; }
+};
+
+template <FormatName Name>
+ContentMatch recognise_molecular(std::string_view bytes) {
+    return recognise_molecular_file(bytes.substr(0, 65536), "") == Name.view() ? ContentMatch::Yes : ContentMatch::No;
+}
+
+template <FormatName Name>
+ImporterOutput read_molecular_as(std::string_view bytes, const std::string& source, const std::string&,
+                                 const ImportOptions& options) {
+    return read_molecular(Name.view(), bytes, source, options);
+}
+
 const std::vector<SceneImporter>& table() {
     static const std::vector<SceneImporter> importers{
         {.name = "scn",
@@ -130,6 +172,45 @@ const std::vector<SceneImporter>& table() {
          .extension_decides = true,
          .recognise = recognise_orb_binary,
          .read = read_orb_binary},
+        {.name = "pdb",
+         .aliases = {"ent"},
+         .description = "Protein Data Bank file, through gemmi: an atom per sphere, its models as frames",
+         .extensions = {".pdb", ".ent"},
+         .extension_decides = true,
+         .recognise = recognise_molecular<"pdb">,
+         .read = read_molecular_as<"pdb">,
+         .option_group = "Molecule input"},
+        {.name = "mmcif",
+         .aliases = {"cif"},
+         .description = "PDBx/mmCIF file, through gemmi: an atom per sphere, its models as frames",
+         .extensions = {".cif", ".mmcif"},
+         .extension_decides = true,
+         .recognise = recognise_molecular<"mmcif">,
+         .read = read_molecular_as<"mmcif">,
+         .option_group = "Molecule input"},
+        {.name = "xyz",
+         .aliases = {"extxyz"},
+         .description = "XYZ or extended XYZ: an atom per sphere, each frame of a trajectory a frame",
+         .extensions = {".xyz", ".extxyz"},
+         .extension_decides = true,
+         .recognise = recognise_molecular<"xyz">,
+         .read = read_molecular_as<"xyz">,
+         .option_group = "Molecule input"},
+        {.name = "lammps-dump",
+         .aliases = {"lammpstrj"},
+         .description = "LAMMPS text dump (atom or custom style): a particle per sphere, each timestep a frame",
+         .extensions = {".lammpstrj", ".dump"},
+         .extension_decides = true,
+         .recognise = recognise_molecular<"lammps-dump">,
+         .read = read_molecular_as<"lammps-dump">,
+         .option_group = "Molecule input"},
+        {.name = "gro",
+         .description = "GROMACS .gro: an atom per sphere, each frame a frame (nm become angstrom)",
+         .extensions = {".gro"},
+         .extension_decides = true,
+         .recognise = recognise_molecular<"gro">,
+         .read = read_molecular_as<"gro">,
+         .option_group = "Molecule input"},
     };
     return importers;
 }

@@ -2,6 +2,8 @@
 // docs/orb-import.md ("PLY point clouds"); change them together.
 #include "ply_scene.h"
 
+#include "default_lights.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -23,11 +25,6 @@ struct Bounds {
 // PLY colours are display values (what point-cloud viewers show as is), so
 // they are sRGB-encoded; the scene holds linear Rec.709 reflectance.
 using detail::srgb_to_linear;
-
-Vec3 normalized(Vec3 v) {
-    const double length = std::hypot(v[0], v[1], v[2]);
-    return {v[0] / length, v[1] / length, v[2] / length};
-}
 
 // Looks at the cloud from above the +z side (30 degrees up), framed by the
 // rule every importer shares (orb/scene/auto_framing.h: stray points left
@@ -56,35 +53,6 @@ double frame_cloud(Scene& scene, double point_radius, const std::string& source)
     scene.camera.up = {0, 1, 0};
     scene.camera.focus_distance = distance;
     return radius;
-}
-
-// Two emissive spheres of radius R (half the framed box's diagonal), 4R from its centre
-// (outside the camera's view): a key light from the upper left giving an
-// irradiance of 0.8·π at the centre and a fill light from the right giving
-// 0.3·π. A sphere of radiance L seen at sin θ = 1/4 gives E = π·L/16.
-// They are the last two spheres and materials.
-void add_default_lights(Scene& scene, const Vec3& center, double radius) {
-    struct Light {
-        const char* name;
-        Vec3 direction;
-        double radiance;
-    };
-    const Light lights[] = {{"key light", {-1, 2, 1}, 0.8 * 16}, {"fill light", {1, 0.5, 0.5}, 0.3 * 16}};
-    for (const Light& light : lights) {
-        Material material;
-        material.name = light.name;
-        material.color = {0, 0, 0};
-        material.emission = {light.radiance, light.radiance, light.radiance};
-        scene.materials.push_back(material);
-        // Unnamed like the points (the material names it): a cloud's binary
-        // form then needs no name section at all.
-        Sphere sphere;
-        const Vec3 d = normalized(light.direction);
-        for (int c = 0; c < 3; ++c) sphere.center[c] = center[c] + d[c] * 4 * radius;
-        sphere.radius = radius;
-        sphere.material = static_cast<std::uint32_t>(scene.materials.size() - 1);
-        scene.spheres.push_back(sphere);
-    }
 }
 
 }  // namespace
@@ -164,7 +132,7 @@ Scene cloud_scene(VertexColumns columns, const PlyImportOptions& options, const 
 
     // The lights go around the framed points: stray points would push them far away.
     const double framed_radius = frame_cloud(scene, radius, source);
-    add_default_lights(scene, scene.camera.target, framed_radius);
+    detail::add_default_lights(scene, scene.camera.target, framed_radius);
     // The lights' entries of the arrays: their material's colour (black), and
     // 0 for every property (styling leaves emissive spheres alone).
     for (std::size_t i = count; i < scene.spheres.size(); ++i) {

@@ -30,7 +30,7 @@ std::string data(const std::string& relative) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-const std::string kReads = "; Orb reads .scn, .gltf/.glb, .ply, .json, .orb\n";
+const std::string kReads = "; Orb reads .scn, .gltf/.glb, .ply, .json, .orb, .pdb/.ent, .cif/.mmcif, .xyz/.extxyz, .lammpstrj/.dump, .gro\n";
 const std::string kAllowEmpty = "; --allow-empty accepts a scene without spheres\n";
 
 class OrbImportFormatsCli : public test::ImportCliFixture {
@@ -71,9 +71,12 @@ TEST_F(OrbImportFormatsCli, StlAndOffAreNamedByContent) {
 }
 
 TEST_F(OrbImportFormatsCli, AFormatKnownOnlyByItsExtensionIsNamed) {
-    // A point list of bare numbers: nothing in it says XYZ, its name does.
+    // A point list of bare numbers: nothing in it says PCD, its name does.
+    expect_refused("points.pcd", "665187.52 5648349.89 241.76 117 73 49\n",
+                   "points.pcd: unsupported format (PCD (Point Cloud Library))" + kReads);
+    // A name an importer decides by gets that reader's error.
     expect_refused("points.xyz", "665187.52 5648349.89 241.76 117 73 49\n",
-                   "points.xyz: unsupported format (XYZ)" + kReads);
+                   "points.xyz:1: expected the number of atoms of an XYZ frame, got '665187.52 5648349.89 241.76 117 73 49'\n");
     expect_refused("shot.exr", "not really an image", "shot.exr: unsupported format (OpenEXR image)" + kReads);
 }
 

@@ -36,7 +36,7 @@ NOT_RUN = {
 # What the blocks of each document leave in its folder (at the scaled frame range).
 EXPECTED_FILES = {
     "README.md": ["cornell.png", "quick.png", "shots/beauty.0002.exr", "shots/beauty.0002.png", "shared/shots/beauty.0002.exr",
-                  "shared/shots/beauty.0002.png", "spheres.json", "spheres.png", "cloud.orb", "cloud.png"],
+                  "shared/shots/beauty.0002.png", "spheres.json", "spheres.png", "cloud.orb", "cloud.png", "4hhb.png", "polymer/f.0010.png", "polymer.mp4"],
     "docs/tutorial.md": ["bounce.json", "preview.png", "shots/beauty.0001.exr", "shots/beauty.0002.exr",
                          "shared/bounce/beauty.0002.exr", "shared/bounce/beauty.0002.png", "png/beauty.0002.png",
                          "reference/bounce.0024.exr", "diff.json", "diff.beauty.png", "diff.normal.png",
@@ -94,12 +94,17 @@ def make_folder(root, source, name):
 
 
 def prepare_readme_inputs(folder, source, env):
-    """The files README's glTF block names as its own: the Khronos asset from
-    tests/data and, for "any lat-long EXR", a small grey one."""
+    """The files README's glTF and molecule blocks name as their own: the Khronos
+    asset and two chemfiles test files from tests/data and, for "any lat-long
+    EXR", a small grey one."""
     shutil.copy(os.path.join(source, "tests/data/gltf-sample-assets/MetalRoughSpheresNoTextures",
                              "MetalRoughSpheresNoTextures.glb"), folder)
     subprocess.run(["oiiotool", "--create", "32x16", "3", "--fill:color=0.8,0.8,0.8", "0,0,32,16",
                     "-d", "float", "-o", "studio.exr"], cwd=folder, env=env, check=True)
+    # The molecule block's haemoglobin and LAMMPS trajectory, from tests/data/chemfiles-tests-data.
+    molecules = os.path.join(source, "tests/data/chemfiles-tests-data")
+    shutil.copy(os.path.join(molecules, "4hhb.pdb"), folder)
+    shutil.copy(os.path.join(molecules, "polymer-10-frames.lammpstrj"), os.path.join(folder, "polymer.lammpstrj"))
 
 
 class Cluster:

@@ -1,9 +1,13 @@
 #include "fuzz_checks.h"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "orb/scene/error.h"
+#include "orb/scene/molecular.h"
 #include "orb/scene/ply.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
@@ -65,6 +69,47 @@ void check_scene_binary_input(std::string_view bytes) {
         throw std::logic_error("load_scene_binary(write_scene_binary(scene)) != scene");
     if (load_scene_json(write_scene_json(scene), "rewritten.json") != scene)
         throw std::logic_error("a binary scene does not survive Orb JSON");
+}
+
+namespace {
+
+void check_attributes(const Scene& scene) {
+    const std::size_t spheres = scene.spheres.size();
+    const SphereAttributes& attributes = scene.sphere_attributes;
+    if (attributes.colors.size() != 3 * spheres) throw std::logic_error("molecular frame: not one colour per sphere");
+    for (float c : attributes.colors)
+        if (!(c >= 0 && c <= 1)) throw std::logic_error("molecular frame: a colour outside [0, 1]");
+    for (const SphereProperty& property : attributes.properties) {
+        if (property.values.size() != spheres)
+            throw std::logic_error("molecular frame: property " + property.name + " has not one value per sphere");
+        for (float v : property.values) {
+            if (!std::isfinite(v)) throw std::logic_error("molecular frame: property " + property.name + " not finite");
+            if (property.categorical() && !(v >= 0 && v < property.labels.size() && v == std::floor(v)))
+                throw std::logic_error("molecular frame: property " + property.name + " indexes no label");
+        }
+    }
+}
+
+}  // namespace
+
+void check_molecular_input(std::string_view bytes) {
+    constexpr std::size_t kMaxFramesChecked = 8;
+    for (std::string_view format : {"pdb", "mmcif", "xyz", "lammps-dump", "gro"}) {
+        try {
+            const auto frames = open_molecular_bytes(bytes, "fuzz", format, {.cell = true});
+            if (frames->frame_count() == 0) throw std::logic_error("a frame source without frames");
+            std::optional<Camera> first_camera;
+            for (std::size_t k = 0; k < std::min(frames->frame_count(), kMaxFramesChecked); ++k) {
+                const Scene scene = frames->frame(k);
+                validate_scene(scene, "fuzz");
+                check_attributes(scene);
+                if (first_camera && scene.camera != *first_camera)
+                    throw std::logic_error("a later frame's camera differs from the first frame's");
+                first_camera = scene.camera;
+            }
+        } catch (const InputError&) {
+        }
+    }
 }
 
 }  // namespace orb::fuzz

@@ -28,4 +28,10 @@ void check_ply_input(std::string_view bytes);
 // back to the same scene through both the binary and the JSON form.
 void check_scene_binary_input(std::string_view bytes);
 
+// Each molecular reader (PDB, mmCIF, XYZ, LAMMPS dump, .gro) either rejects
+// the bytes or gives frames that are valid scenes whose per-sphere colours
+// and properties have one entry per sphere (categorical ones indexing their
+// labels), every camera the first frame's.
+void check_molecular_input(std::string_view bytes);
+
 }  // namespace orb::fuzz

@@ -42,7 +42,7 @@ TEST_F(RenderCli, AFormatOrbDoesNotReadIsNamed) {
     const auto run = render({path("tri.obj"), "-o", path("tri.exr")});
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_EQ(run.err, "orb-render: error: " + path("tri.obj") +
-                           ": unsupported format (Wavefront OBJ); Orb reads .scn, .gltf/.glb, .ply, .json, .orb\n");
+                           ": unsupported format (Wavefront OBJ); Orb reads .scn, .gltf/.glb, .ply, .json, .orb, .pdb/.ent, .cif/.mmcif, .xyz/.extxyz, .lammpstrj/.dump, .gro\n");
     EXPECT_FALSE(fs::exists(path("tri.exr")));
 }
 

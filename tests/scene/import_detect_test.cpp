@@ -35,7 +35,8 @@ TEST(DetectSceneFormat, MalformedJsonGoesToTheReaderThatExplainsIt) {
 
 TEST(SceneImporters, EveryWordFindsItsImporter) {
     const std::vector<std::string> words = orb::scene_format_words();
-    EXPECT_EQ(words, (std::vector<std::string>{"scn", "gltf", "glb", "ply", "orb", "json", "orb-binary"}));
+    EXPECT_EQ(words, (std::vector<std::string>{"scn", "gltf", "glb", "ply", "orb", "json", "orb-binary", "pdb", "ent",
+                                               "mmcif", "cif", "xyz", "extxyz", "lammps-dump", "lammpstrj", "gro"}));
     for (const std::string& word : words) EXPECT_NE(orb::find_scene_importer(word), nullptr) << word;
     EXPECT_EQ(orb::find_scene_importer("glb"), orb::find_scene_importer("gltf"));
     EXPECT_EQ(orb::find_scene_importer("json"), orb::find_scene_importer("orb"));
@@ -60,7 +61,7 @@ TEST(SceneImporters, EveryEntryIsComplete) {
         for (std::string_view alias : importer.aliases)
             EXPECT_TRUE(seen.insert(std::string(alias)).second) << alias << " named twice";
     }
-    EXPECT_EQ(orb::readable_file_names(), ".scn, .gltf/.glb, .ply, .json, .orb");
+    EXPECT_EQ(orb::readable_file_names(), ".scn, .gltf/.glb, .ply, .json, .orb, .pdb/.ent, .cif/.mmcif, .xyz/.extxyz, .lammpstrj/.dump, .gro");
 }
 
 TEST(SceneImporters, TheExtensionDecidesOnlyForItsImporters) {
@@ -92,7 +93,7 @@ TEST(ImportScene, AnUnknownFormatNamesTheKnownOnes) {
         orb::import_scene("v 0 0 0\n", "tri.obj", ".", options);
         FAIL() << "expected an error";
     } catch (const orb::InputError& e) {
-        EXPECT_STREQ(e.what(), "unknown scene format \"obj\"; the formats are scn, gltf, glb, ply, orb, json, orb-binary");
+        EXPECT_STREQ(e.what(), "unknown scene format \"obj\"; the formats are scn, gltf, glb, ply, orb, json, orb-binary, pdb, ent, mmcif, cif, xyz, extxyz, lammps-dump, lammpstrj, gro");
     }
 }
 
@@ -113,11 +114,6 @@ struct Foreign {
 
 // First bytes or lines as each format's writers produce them.
 const std::vector<Foreign> kForeign{
-    {"1abc.txt", "HEADER    PLANT PROTEIN                           01-JAN-00   1ABC\nATOM      1  N   MET A   1\n",
-     "Protein Data Bank (PDB)"},
-    {"water.txt", "3\nwater\nO 0.000 0.000 0.117\nH 0.000 0.757 -0.467\nH 0.000 -0.757 -0.467\n",
-     "XYZ (atom coordinates)"},
-    {"mmcif", "data_1ABC\n#\n_entry.id 1ABC\n", "CIF / mmCIF"},
     {"model.bin", std::string("Kaydara FBX Binary  \0\x1a\0\xe8\x1c\0\0", 27), "FBX (binary)"},
     {"model.txt", "; FBX 7.4.0 project file\n; Copyright (C) 1997-2010 Autodesk Inc.\n", "FBX (text)"},
     {"cube.txt", "solid cube\n  facet normal 0 0 1\n    outer loop\n", "STL (text)"},
@@ -142,7 +138,7 @@ TEST(ImportScene, FormatsOrbDoesNotReadAreNamedByContent) {
             ADD_FAILURE() << f.format << ": accepted";
         } catch (const orb::InputError& e) {
             EXPECT_EQ(std::string(e.what()), f.source + ": unsupported format (" + f.format +
-                                                 "); Orb reads .scn, .gltf/.glb, .ply, .json, .orb");
+                                                 "); Orb reads .scn, .gltf/.glb, .ply, .json, .orb, .pdb/.ent, .cif/.mmcif, .xyz/.extxyz, .lammpstrj/.dump, .gro");
         }
     }
 }

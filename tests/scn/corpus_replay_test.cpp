@@ -46,6 +46,10 @@ TEST(FuzzCorpus, SceneBinaryInputsAreAcceptedOrCleanlyRejected) {
     replay("fuzz_scene_binary", fuzz::check_scene_binary_input);
 }
 
+TEST(FuzzCorpus, MolecularInputsAreAcceptedOrCleanlyRejected) {
+    replay("fuzz_molecular", fuzz::check_molecular_input);
+}
+
 // The shared scenes are part of the seed corpus too; they must pass the same checks.
 TEST(FuzzCorpus, SharedScenesPassTheFuzzChecks) {
     for (const auto& entry : fs::directory_iterator(ORB_SCENES_DIR)) {

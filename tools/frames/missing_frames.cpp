@@ -6,21 +6,30 @@
 namespace orb::frames {
 
 MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options,
-                             const std::string& frames, bool allow_empty) {
+                             const std::string& frames, bool allow_empty, const MolecularImportOptions& molecule) {
     // The orbit is checked before a scene of millions of spheres is read.
     settings_ = request::resolve_request(options, nullptr, &frames, true);
     if (scene_path.empty()) return;
-    scene_ = request::read_scene(scene_path, label_, allow_empty);
+    trajectory_ = request::open_trajectory(scene_path, molecule);
+    if (trajectory_) {
+        label_ = scene_path;
+        scene_ = request::trajectory_frame(*trajectory_, 1, label_);
+    } else {
+        scene_ = request::read_scene(scene_path, label_, allow_empty, molecule);
+    }
     settings_ = request::resolve_request(options, &scene_->render, &frames, true);
 }
 
 exr::SceneIdentity MissingFrames::identity_at(long frame) {
     if (still_identity_) return *still_identity_;
-    Scene posed = request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
+    // A frame past a trajectory's end is an error, as in orb-render.
+    Scene posed = trajectory_ ? request::trajectory_frame(*trajectory_, frame, label_)
+                              : request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
     request::apply_camera_request(posed, settings_, frame, label_);
     exr::SceneIdentity identity =
         request::scene_identity(posed, scene_content_hash(posed), *settings_.width, *settings_.height);
-    if (scene_->animation.empty() && !request::camera_moves(settings_)) still_identity_ = identity;
+    const bool frames_differ = trajectory_ && trajectory_->frame_count() > 1;
+    if (scene_->animation.empty() && !frames_differ && !request::camera_moves(settings_)) still_identity_ = identity;
     return identity;
 }
 

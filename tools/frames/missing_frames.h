@@ -3,12 +3,14 @@
 // definition orb-render --skip-existing uses), reading headers only.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "orb/exr/render_request.h"
 #include "orb/request/request_options.h"
 #include "orb/request/request_settings.h"
+#include "orb/scene/molecular.h"
 #include "orb/scene/scene.h"
 
 namespace orb::frames {
@@ -19,9 +21,10 @@ public:
     // orb::InputError for a bad scene, and for one without spheres unless
     // `allow_empty`); without it the scene, its camera and what its render
     // block would fill in are not compared. `frames` is the frame list
-    // judged: the range of --orbit unless --orbit-frames gives it.
+    // judged: the range of --orbit unless --orbit-frames gives it. A
+    // molecular trajectory is read frame by frame, as orb-render reads it.
     MissingFrames(const std::string& scene_path, const request::RequestOptions& options, const std::string& frames,
-                  bool allow_empty);
+                  bool allow_empty, const MolecularImportOptions& molecule = {});
 
     exr::OutputJudgement judge(const std::string& path, long frame);
 
@@ -29,6 +32,7 @@ private:
     exr::SceneIdentity identity_at(long frame);
 
     std::optional<Scene> scene_;
+    std::shared_ptr<const FrameSource> trajectory_;
     std::string label_;
     request::RequestSettings settings_;
     std::optional<exr::SceneIdentity> still_identity_;  // a scene without animation or orbit is the same at every frame

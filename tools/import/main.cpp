@@ -13,6 +13,7 @@
 #include "orb/cli/camera_options.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
+#include "orb/cli/molecule_options.h"
 #include "orb/cli/output_file.h"
 #include "orb/cli/output_overlap.h"
 #include "orb/cli/sphere_style_options.h"
@@ -30,7 +31,8 @@
 namespace {
 
 constexpr const char* kDescription =
-    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb, PLY point cloud: --list-formats) to the\n"
+    "Convert a scene (Orb JSON, SmallptGPU .scn, glTF 2.0 .gltf/.glb, PLY point cloud, PDB/mmCIF, XYZ, LAMMPS\n"
+    "dump, GROMACS .gro: --list-formats) to the\n"
     "canonical Orb JSON scene, the binary Orb scene (.orb, for millions of spheres), or back to SmallptGPU .scn.\n"
     "The input format is recognised by content.";
 
@@ -41,6 +43,8 @@ constexpr const char* kExamples = R"(Examples:
   orb-import cloud.ply -o cloud.orb                  ... -> the binary scene (fast to load)
   orb-import cloud.orb -o cloud.json                 binary scene -> Orb JSON, exactly
   orb-import md.ply --color-by temperature --colormap inferno -o md.orb   colour by a vertex property
+  orb-import 4hhb.pdb -o 4hhb.json                   protein: an atom per sphere, coloured by element
+  orb-import traj.lammpstrj --frame 10 --cell -o f10.orb   frame 10 of a LAMMPS dump, with its box
   orb-import model.glb --environment sky.exr -o m.json  lit by an HDR map (or --environment R,G,B)
   orb-import cornell.json --to scn -o cornell.scn    Orb JSON -> .scn (warns about losses)
   orb-import scan.orb --look-at 0,0.1,0 --vfov 30 -o scan-closer.orb   move the camera of a binary scene
@@ -49,7 +53,7 @@ constexpr const char* kExamples = R"(Examples:
   orb-import cornell.scn | orb-render - -o - | orb-tonemap - -o cornell.png
   orb-import --list-formats                          the formats Orb reads, their files and options
 
-Orb reads no other format: an OBJ, STL, FBX, PDB, ... input is refused as such.
+Orb reads no other format: an OBJ, STL, FBX, ... input is refused as such.
 A scene that ends with no sphere (a glTF asset of triangle meshes) is an error
 naming what was left out and why, unless --allow-empty.
 
@@ -185,6 +189,7 @@ int main(int argc, char** argv) {
                          "Write a scene without spheres instead of failing (a glTF asset of triangle meshes)");
             orb::import_tool::add_gltf_options(app, args.import_options.gltf);
             orb::import_tool::add_ply_options(app, args.import_options.ply);
+            orb::cli::add_molecule_options(app, args.import_options.molecular, true);
             orb::import_tool::add_environment_options(app, args.environment);
             orb::cli::add_camera_options(app, args.camera);
             orb::cli::add_sphere_style_options(app, args.style);

@@ -1,5 +1,7 @@
 #include "render_options.h"
 
+#include "orb/cli/molecule_options.h"
+
 #include <cctype>
 #include <charconv>
 #include <climits>
@@ -72,6 +74,7 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
         ->check(positive)
         ->option_text("E");
     cli::add_sphere_style_options(app, o.style);
+    cli::add_molecule_options(app, o.molecule, false);
     app.add_option("--time", o.time_limit, "Stop after this many seconds of rendering")->check(seconds);
     app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")->check(seconds);
     app.add_option("--resume", o.resume, "Continue the render stored in this orb-render EXR")->option_text("FILE");

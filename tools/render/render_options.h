@@ -11,6 +11,7 @@
 
 #include "orb/cli/sphere_style_options.h"
 #include "orb/request/request_options.h"
+#include "orb/scene/molecular.h"
 
 namespace orb::render_cli {
 
@@ -19,6 +20,7 @@ namespace orb::render_cli {
 struct RenderOptions : request::RequestOptions {
     std::string scene;   // path or "-"
     bool allow_empty = false;  // --allow-empty: render a scene without spheres
+    MolecularImportOptions molecule;  // --atom-radius, --cell, ...: how a molecular or particle file becomes spheres
     std::string output;  // path or "-"
     bool list_devices = false;
     std::string device;

@@ -126,10 +126,18 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 
 RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
     RenderPlan plan;
-    const SphereStyleOptions style = cli::sphere_style_options(o.style);  // usage errors before the scene is read
-    Scene imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty);
+    // Usage errors before the scene is read; kept for the frames a trajectory reads later.
+    plan.style = cli::sphere_style_options(o.style);
+    plan.trajectory = request::open_trajectory(o.scene, o.molecule);
+    Scene imported;
+    if (plan.trajectory) {
+        plan.scene_label = o.scene;
+        imported = request::trajectory_frame(*plan.trajectory, 1, plan.scene_label);
+    } else {
+        imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty, o.molecule);
+    }
     // Before the hash: a styled scene is another scene (its outputs say so, and --resume checks it).
-    cli::apply_sphere_style(imported, style, plan.scene_label);
+    cli::apply_sphere_style(imported, plan.style, plan.scene_label);
 
     plan.config.device = o.device;
     plan.config.development = knobs;
@@ -159,6 +167,13 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     apply_adaptive(o, plan);
     if (renders_frames(o)) {
         plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
+        if (plan.trajectory) {
+            // Frame f is the file's frame f: one past the end is an error before anything renders.
+            request::require_trajectory_frames(*plan.trajectory, plan.frames, plan.scene_label);
+            if (plan.trajectory->frame_count() == 1 && plan.frames.size() > 1 && !request::camera_moves(s))
+                cli::warning(plan.scene_label + ": holds one frame: every frame renders the same image");
+            return plan;  // each frame is read from the file when it is posed
+        }
         for (const std::string& warning :
              frame_warnings(imported, plan.frames, s.fps, request::camera_moves(s), plan.scene_label))
             cli::warning(warning);
@@ -166,6 +181,13 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
         // Posed lazily: a run that finds every frame finished poses none.
         return plan;
     }
+    if (plan.trajectory && o.time_at)
+        throw InputError(plan.scene_label + ": --time-at poses an animated scene at a time; a trajectory's frames "
+                         "are chosen by number: --frame N");
+    if (plan.trajectory && plan.trajectory->frame_count() > 1)
+        cli::info(plan.scene_label + ": rendering its first frame of " +
+                  std::to_string(plan.trajectory->frame_count()) + " (--frame N or --frames 1-" +
+                  std::to_string(plan.trajectory->frame_count()) + " renders the others)");
     plan.scene_time = o.time_at.value_or(0.0);
     plan.scene = request::pose_scene(std::move(imported), plan.scene_time, plan.scene_label);
     request::apply_camera_request(plan.scene, s, std::nullopt, plan.scene_label);
@@ -182,7 +204,13 @@ PosedFrame pose_at(const RenderPlan& plan, long frame) {
     // scene and the settings are read, which nothing changes while frames
     // render: safe on another thread.)
     if (!changes_per_frame(plan) && plan.frame) return posed;
-    posed.scene = request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
+    if (plan.trajectory) {
+        posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
+        cli::apply_sphere_style(*posed.scene, plan.style, plan.scene_label);
+    } else {
+        posed.scene =
+            request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
+    }
     request::apply_camera_request(*posed.scene, plan.settings, frame, plan.scene_label);
     posed.hash = scene_content_hash(*posed.scene);
     return posed;
@@ -203,7 +231,8 @@ void install(RenderPlan& plan, PosedFrame&& posed) {
 }
 
 bool changes_per_frame(const RenderPlan& plan) {
-    return !plan.imported.animation.empty() || request::camera_moves(plan.settings);
+    return !plan.imported.animation.empty() || (plan.trajectory && plan.trajectory->frame_count() > 1) ||
+           request::camera_moves(plan.settings);
 }
 
 void pose_frame(RenderPlan& plan, long frame) { install(plan, pose_at(plan, frame)); }

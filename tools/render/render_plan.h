@@ -15,6 +15,7 @@
 #include "orb/render/renderer.h"
 #include "orb/request/request_settings.h"
 #include "orb/scene/scene.h"
+#include "orb/scene/sphere_styling.h"
 #include "render_options.h"
 
 namespace orb::render_cli {
@@ -48,6 +49,12 @@ struct RenderPlan {
     // read, posed anew for each frame by pose_frame.
     std::vector<long> frames;
     Scene imported;
+    // A molecular or particle trajectory (orb/request/scene_input.h): each
+    // frame is read from the file when it is posed, and `imported` stays empty.
+    std::shared_ptr<const FrameSource> trajectory;
+    // --color-by, --radius-by, ...: applied to the imported scene, and to
+    // each trajectory frame as it is read.
+    SphereStyleOptions style;
     std::optional<exr::FrameInfo> frame;  // the frame `scene` is posed at
     // The scene differs from the one last handed to the renderer: false
     // from frame to frame of a scene without animation, whose spheres then
@@ -75,8 +82,8 @@ void install(RenderPlan& plan, PosedFrame&& posed);
 // resume that would not continue the same render.
 RenderPlan make_render_plan(const RenderOptions& options, const render::DevelopmentKnobs& knobs);
 
-// Whether each frame's scene differs from the last: an animated scene, or
-// one whose camera --orbit turns.
+// Whether each frame's scene differs from the last: an animated scene, a
+// trajectory of more than one frame, or one whose camera --orbit turns.
 bool changes_per_frame(const RenderPlan& plan);
 
 // Poses the plan at `frame`: the scene at frame / fps (checked against the

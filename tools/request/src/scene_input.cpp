@@ -1,5 +1,6 @@
 #include "orb/request/scene_input.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -10,19 +11,22 @@
 #include "orb/cli/texture_decoder_loader.h"
 #include "orb/scene/animation.h"
 #include "orb/scene/import.h"
+#include "orb/scene/importers.h"
+#include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::request {
 
 namespace fs = std::filesystem;
 
-Scene read_scene(const std::string& path, std::string& label, bool allow_empty) {
+Scene read_scene(const std::string& path, std::string& label, bool allow_empty, const MolecularImportOptions& molecule) {
     label = cli::is_stdio(path) ? "<stdin>" : path;
     const std::string bytes = cli::read_input(path);
     const std::string base_dir =
         cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
     ImportOptions options;
     options.allow_empty = allow_empty;
+    options.molecular = molecule;
     options.gltf.image_decoder = cli::texture_decoder();  // glTF textures, through OpenImageIO, loaded when needed
     ImportResult imported = import_scene(bytes, label, base_dir, options);
     for (const std::string& message : imported.warnings) cli::warning(message);
@@ -32,6 +36,45 @@ Scene read_scene(const std::string& path, std::string& label, bool allow_empty) 
     if (!scene_has_light(imported.scene))
         cli::warning(label + ": the scene has no light (no sphere emits and there is no environment); it renders black");
     return std::move(imported.scene);
+}
+
+std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const MolecularImportOptions& options) {
+    if (cli::is_stdio(path)) return nullptr;
+    // The start of the file tells (a few kilobytes), else its name (.gro has no signature to speak of).
+    std::string head(65536, '\0');
+    {
+        std::FILE* file = std::fopen(path.c_str(), "rb");
+        if (!file) return nullptr;  // read_scene gives the error
+        head.resize(std::fread(head.data(), 1, head.size(), file));
+        std::fclose(file);
+    }
+    std::string_view format = recognise_molecular_file(head, path);
+    if (format.empty()) {
+        const SceneImporter* named = scene_importer_for_path(path);
+        if (!named || named->option_group != "Molecule input") return nullptr;
+        // A name that decides, unless the content is another importer's.
+        if (const SceneImporter* recognised = recognise_scene(head); recognised && recognised != named) return nullptr;
+        format = named->name;
+    }
+    std::shared_ptr<const FrameSource> frames = open_molecular_file(path, format, options);
+    for (const std::string& message : frames->warnings()) cli::warning(message);
+    return frames;
+}
+
+Scene trajectory_frame(const FrameSource& frames, long frame, const std::string& label) {
+    require_trajectory_frames(frames, {frame}, label);
+    Scene scene = frames.frame(static_cast<std::size_t>(frame - 1));
+    validate_scene(scene, label + " frame " + std::to_string(frame));
+    return scene;
+}
+
+void require_trajectory_frames(const FrameSource& source, const std::vector<long>& frames, const std::string& label) {
+    const std::size_t count = source.frame_count();
+    for (long frame : frames)
+        if (frame < 1 || static_cast<std::size_t>(frame) > count)
+            throw InputError(label + ": has " + std::to_string(count) + (count == 1 ? " frame" : " frames") + " (1-" +
+                             std::to_string(count) + "); there is no frame " + std::to_string(frame) +
+                             " (frame 1 is the file's first)");
 }
 
 Scene pose_scene(const Scene& imported, double seconds, const std::string& label) {

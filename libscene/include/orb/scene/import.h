@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "orb/scene/gltf.h"
+#include "orb/scene/molecular.h"
 #include "orb/scene/ply.h"
 #include "orb/scene/scene.h"
 
@@ -21,6 +22,7 @@ struct ImportOptions {
     bool allow_empty = false;
     GltfImportOptions gltf;
     PlyImportOptions ply;
+    MolecularImportOptions molecular;
 };
 
 struct ImportResult {

@@ -4,11 +4,13 @@
 // the same way, so both hash the same scene.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "orb/exr/render_request.h"
 #include "orb/request/request_settings.h"
+#include "orb/scene/molecular.h"
 #include "orb/scene/scene.h"
 
 namespace orb::request {
@@ -16,7 +18,23 @@ namespace orb::request {
 // Reads and imports `path` ("-" for stdin); `label` becomes the path, or
 // <stdin>. Throws orb::InputError for bad input, and for a scene without
 // spheres unless `allow_empty` (--allow-empty).
-Scene read_scene(const std::string& path, std::string& label, bool allow_empty);
+Scene read_scene(const std::string& path, std::string& label, bool allow_empty,
+                 const MolecularImportOptions& molecule = {});
+
+// A molecular or particle file (PDB, mmCIF, XYZ, LAMMPS dump, .gro: its
+// content or name says so) opened frame by frame: frame f of --frames is
+// frame f of the file, counted from 1, read from the file when it is
+// rendered. Null for any other scene, and for stdin (read whole by
+// read_scene, which takes its first frame). Prints the reader's warnings.
+// Throws orb::InputError.
+std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const MolecularImportOptions& options);
+
+// Frame `frame` (1-based) of a trajectory, checked against the scene limits.
+// Throws orb::InputError naming the frames there are for one past the end.
+Scene trajectory_frame(const FrameSource& frames, long frame, const std::string& label);
+
+// Throws orb::InputError when a frame of `frames` is not one of the file's 1..N.
+void require_trajectory_frames(const FrameSource& source, const std::vector<long>& frames, const std::string& label);
 
 // The scene at `seconds`, checked against the scene limits again when it is
 // animated (posing multiplies scales and adds offsets). Throws orb::InputError.

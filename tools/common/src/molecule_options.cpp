@@ -1,0 +1,54 @@
+#include "orb/cli/molecule_options.h"
+
+#include <charconv>
+#include <cmath>
+#include <string>
+
+namespace orb::cli {
+
+void add_molecule_options(CLI::App& app, MolecularImportOptions& options, bool with_frame) {
+    const char* group = "Molecule input";
+    app.add_option_function<std::string>(
+           "--atom-radius",
+           [&options](const std::string& value) {
+               if (value == "vdw") {
+                   options.radius = AtomRadius::VanDerWaals;
+                   return;
+               }
+               if (value == "covalent") {
+                   options.radius = AtomRadius::Covalent;
+                   return;
+               }
+               double radius = 0;
+               const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), radius);
+               if (ec != std::errc() || end != value.data() + value.size() || !(radius > 0) || !std::isfinite(radius))
+                   throw CLI::ValidationError("--atom-radius", "expected vdw, covalent or a radius > 0, got '" + value + "'");
+               options.radius = AtomRadius::Fixed;
+               options.fixed_radius = radius;
+           },
+           "Atom radius: vdw (van der Waals, the default), covalent, or one radius R for every atom "
+           "(angstrom; the element table: docs/orb-import.md)")
+        ->option_text("vdw|covalent|R")
+        ->group(group);
+    app.add_option("--radius-scale", options.radius_scale,
+                   "Multiply the element table's radii by S (0.3 gives ball-and-stick-sized atoms; default 1)")
+        ->check(CLI::PositiveNumber)
+        ->option_text("S")
+        ->group(group);
+    app.add_flag("--cell", options.cell,
+                  "Draw the simulation cell (LAMMPS box, extended XYZ Lattice, .gro box, PDB CRYST1) as rows of "
+                  "small spheres along its 12 edges")
+        ->group(group);
+    app.add_flag("--no-hydrogens", options.drop_hydrogens, "PDB/mmCIF: leave out hydrogen atoms")->group(group);
+    app.add_flag("--all-altlocs", options.all_altlocs,
+                 "PDB/mmCIF: keep every alternate location (default: per residue the most occupied, the first on a tie)")
+        ->group(group);
+    if (with_frame)
+        app.add_option("--frame", options.frame,
+                       "Which frame of a trajectory or model of an ensemble to write (1 = the first, the default)")
+            ->check(CLI::PositiveNumber)
+            ->option_text("N")
+            ->group(group);
+}
+
+}  // namespace orb::cli
