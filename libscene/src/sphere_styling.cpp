@@ -1,5 +1,7 @@
 #include "orb/scene/sphere_styling.h"
 
+#include "orb/scene/elements.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -133,8 +135,12 @@ std::optional<MaterialPreset> material_preset_from_name(std::string_view name) {
     return std::nullopt;
 }
 
-std::array<float, 3> category_display_color(std::string_view /*property*/, std::size_t index,
-                                            std::string_view /*label*/) {
+std::array<float, 3> category_display_color(std::string_view property, std::size_t index, std::string_view label) {
+    // Elements keep the colours chemists know (Jmol's CPK colours, the
+    // element table's); a symbol the table lacks falls back to the palette.
+    if (property == "element")
+        if (const Element* element = find_element(label))
+            return {element->jmol_srgb[0] / 255.0f, element->jmol_srgb[1] / 255.0f, element->jmol_srgb[2] / 255.0f};
     return qualitative_display_color(index);
 }
 

@@ -12,6 +12,7 @@
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/molecule_options.h"
+#include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
 
 using orb::cli::UsageError;
@@ -26,13 +27,14 @@ struct Settings {
     std::string scene;
     bool allow_empty = false;  // --scene may have no spheres
     orb::MolecularImportOptions molecule;  // --atom-radius, --cell, ...: a molecular --scene as orb-render builds it
+    orb::cli::SphereStyleArguments style;  // --color-by, --radius-scale, ...: the --scene styled as orb-render styles it
     orb::request::RequestOptions render;  // the render the frames are asked to hold
 };
 
 // Whether any option of the render asked for was given.
 bool any_render_option(const Settings& s) {
     return !s.scene.empty() || s.allow_empty || s.render != orb::request::RequestOptions{} ||
-           s.molecule != orb::MolecularImportOptions{};
+           s.molecule != orb::MolecularImportOptions{} || !orb::cli::sphere_style_options(s.style).empty();
 }
 
 // "-" reads the list from stdin, where newlines and spaces separate items as
@@ -92,6 +94,7 @@ int main(int argc, char** argv) {
                 ->option_text("SCENE");
             app.add_flag("--allow-empty", s.allow_empty, "With --scene: accept a scene without spheres, as orb-render does");
             orb::cli::add_molecule_options(app, s.molecule, false);
+            orb::cli::add_sphere_style_options(app, s.style);
             orb::request::add_request_options(app, s.render);
             app.add_option("--samples", samples, "Older name of --sample-range")->option_text("START:COUNT");
             app.footer(
@@ -122,7 +125,8 @@ int main(int argc, char** argv) {
             const std::string frames = list_text(s.list);
             const orb::cli::FrameSpec spec = orb::cli::parse_frame_spec(frames);
             std::optional<orb::frames::MissingFrames> judge;
-            if (s.missing) judge.emplace(s.scene, s.render, frames, s.allow_empty, s.molecule);
+            if (s.missing) judge.emplace(s.scene, s.render, frames, s.allow_empty, s.molecule,
+                                        orb::cli::sphere_style_options(s.style));
             std::string out;
             for (int frame : spec) {
                 const std::string path = s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, frame);

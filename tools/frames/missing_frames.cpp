@@ -6,7 +6,9 @@
 namespace orb::frames {
 
 MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options,
-                             const std::string& frames, bool allow_empty, const MolecularImportOptions& molecule) {
+                             const std::string& frames, bool allow_empty, const MolecularImportOptions& molecule,
+                             const SphereStyleOptions& style)
+    : style_(style) {
     // The orbit is checked before a scene of millions of spheres is read.
     settings_ = request::resolve_request(options, nullptr, &frames, true);
     if (scene_path.empty()) return;
@@ -17,6 +19,7 @@ MissingFrames::MissingFrames(const std::string& scene_path, const request::Reque
     } else {
         scene_ = request::read_scene(scene_path, label_, allow_empty, molecule);
     }
+    apply_sphere_styling(*scene_, style_, label_);
     settings_ = request::resolve_request(options, &scene_->render, &frames, true);
 }
 
@@ -25,6 +28,7 @@ exr::SceneIdentity MissingFrames::identity_at(long frame) {
     // A frame past a trajectory's end is an error, as in orb-render.
     Scene posed = trajectory_ ? request::trajectory_frame(*trajectory_, frame, label_)
                               : request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
+    if (trajectory_) apply_sphere_styling(posed, style_, label_);
     request::apply_camera_request(posed, settings_, frame, label_);
     exr::SceneIdentity identity =
         request::scene_identity(posed, scene_content_hash(posed), *settings_.width, *settings_.height);

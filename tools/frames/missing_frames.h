@@ -12,6 +12,7 @@
 #include "orb/request/request_settings.h"
 #include "orb/scene/molecular.h"
 #include "orb/scene/scene.h"
+#include "orb/scene/sphere_styling.h"
 
 namespace orb::frames {
 
@@ -22,9 +23,11 @@ public:
     // `allow_empty`); without it the scene, its camera and what its render
     // block would fill in are not compared. `frames` is the frame list
     // judged: the range of --orbit unless --orbit-frames gives it. A
-    // molecular trajectory is read frame by frame, as orb-render reads it.
+    // molecular trajectory is read frame by frame, as orb-render reads it,
+    // and each scene is styled (--color-by, ...) as orb-render styles it.
     MissingFrames(const std::string& scene_path, const request::RequestOptions& options, const std::string& frames,
-                  bool allow_empty, const MolecularImportOptions& molecule = {});
+                  bool allow_empty, const MolecularImportOptions& molecule = {},
+                  const SphereStyleOptions& style = {});
 
     exr::OutputJudgement judge(const std::string& path, long frame);
 
@@ -34,6 +37,7 @@ private:
     std::optional<Scene> scene_;
     std::shared_ptr<const FrameSource> trajectory_;
     std::string label_;
+    SphereStyleOptions style_;
     request::RequestSettings settings_;
     std::optional<exr::SceneIdentity> still_identity_;  // a scene without animation or orbit is the same at every frame
 };

@@ -30,11 +30,6 @@ void add_molecule_options(CLI::App& app, MolecularImportOptions& options, bool w
            "(angstrom; the element table: docs/orb-import.md)")
         ->option_text("vdw|covalent|R")
         ->group(group);
-    app.add_option("--radius-scale", options.radius_scale,
-                   "Multiply the element table's radii by S (0.3 gives ball-and-stick-sized atoms; default 1)")
-        ->check(CLI::PositiveNumber)
-        ->option_text("S")
-        ->group(group);
     app.add_flag("--cell", options.cell,
                   "Draw the simulation cell (LAMMPS box, extended XYZ Lattice, .gro box, PDB CRYST1) as rows of "
                   "small spheres along its 12 edges")

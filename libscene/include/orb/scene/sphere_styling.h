@@ -60,9 +60,9 @@ struct SphereStyleResult {
 // The display (sRGB-encoded) colour of category `index`, labelled `label`,
 // of the categorical property `property`. Every categorical colouring goes
 // through this one function, so that a property with a colour convention of
-// its own gets it here: for "element", the CPK colours of the elements table
-// belong in this function once that table exists (until then, and for every
-// other property, Tableau 10 by index).
+// its own gets it here: "element" takes the element table's Jmol (CPK)
+// colours (orb/scene/elements.h); every other property, and a symbol the
+// table lacks, Tableau 10 by index.
 std::array<float, 3> category_display_color(std::string_view property, std::size_t index, std::string_view label);
 
 // Applies `options` to `scene`; throws InputError naming `source` for a
