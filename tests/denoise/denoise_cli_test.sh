@@ -76,8 +76,12 @@ grep -q 'denoised.R, denoised.G, denoised.B' <<<"$info" || problem "no denoised.
 "$bin/orb-tonemap" denoised.exr --pass denoised -q -o denoised.png || problem "orb-tonemap --pass denoised failed"
 "$bin/orb-tonemap" denoised.exr -q -o beauty.png || problem "orb-tonemap of the beauty failed"
 cmp -s denoised.png beauty.png && problem "orb-tonemap --pass denoised shows the beauty"
+# --layer is --pass under the name the film's layer table uses.
+"$bin/orb-tonemap" denoised.exr --layer denoised -q -o layer.png || problem "orb-tonemap --layer denoised failed"
+cmp -s layer.png denoised.png || problem "orb-tonemap --layer denoised differs from --pass denoised"
 expect_status 1 "no 'denoised' pass" "$bin/orb-tonemap" noisy.exr --pass denoised -o x.png
 "$bin/orb-diff" denoised.exr denoised.exr --pass denoised --fail-rmse 0 -q || problem "orb-diff --pass denoised failed"
+"$bin/orb-diff" denoised.exr denoised.exr --layer denoised --test-layer denoised --fail-rmse 0 -q || problem "orb-diff --layer/--test-layer denoised failed"
 expect_status 2 "no 'denoised' pass" "$bin/orb-diff" reference.exr noisy.exr --test-pass denoised
 
 # Denoising a denoised file replaces the layer; standard input and output

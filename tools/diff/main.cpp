@@ -216,10 +216,10 @@ int main(int argc, char** argv) {
         [&](CLI::App& app) {
             app.add_option("reference", s.reference, "Reference image A ('-' = stdin)");
             app.add_option("test", s.test, "Test image B ('-' = stdin)");
-            app.add_option("--pass", s.pass,
+            app.add_option("--pass,--layer", s.pass,
                            "Pass to compare (default beauty): direct, indirect, albedo, normal, depth, denoised, ...")
                 ->option_text("NAME");
-            app.add_option("--test-pass", s.test_pass,
+            app.add_option("--test-pass,--test-layer", s.test_pass,
                            "Compare this pass of the test image with --pass of the reference (e.g. denoised)")
                 ->option_text("NAME");
             app.add_flag("--all-passes", s.all_passes, "Compare every pass the two images have in common");

@@ -413,7 +413,7 @@ int main(int argc, char** argv) {
             app.add_option("inputs", s.inputs, "Input image(s), '-' for stdin, or a %04d pattern with --frames");
             app.add_option("-o,--output", s.output, "Output file ('-' = stdout, needs --format), or a directory for several inputs")
                 ->option_text("OUT");
-            app.add_option("--pass", s.pass,
+            app.add_option("--pass,--layer", s.pass,
                            "Pass to show: beauty, direct, indirect, emission, albedo, normal, depth, variance, id, background, denoised, or any layer name")
                 ->option_text("NAME");
             // +-100 stops keeps the gain 2^STOPS a normal float (7.9e-31 ... 1.3e30).
