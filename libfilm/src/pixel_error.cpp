@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 #include <vector>
+
+#include "parallel_blocks.h"
 
 namespace orb::film {
 
@@ -66,21 +67,10 @@ std::vector<double> pixel_relmse(const Film& film)
     check_channels(film);
     const std::size_t pixels = film.pixel_count();
     std::vector<double> errors(pixels);
-    // Every pixel on its own, so the cores share the image in blocks: a
-    // decision of adaptive sampling estimates every pixel of the film, and at
-    // 1920x1080 on one core that took as long as 30 of an H100's passes.
-    constexpr std::size_t kBlock = 1 << 16;
-    const std::size_t blocks = (pixels + kBlock - 1) / kBlock;
-    const auto estimate = [&](std::size_t first_block, std::size_t step) {
-        for (std::size_t b = first_block; b < blocks; b += step)
-            for (std::size_t i = b * kBlock, end = std::min(pixels, i + kBlock); i < end; ++i)
-                errors[i] = pixel_relmse(film, i);
-    };
-    const std::size_t workers = std::min<std::size_t>(blocks, std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> threads;
-    for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(estimate, w, workers);
-    estimate(0, std::max<std::size_t>(1, workers));
-    for (std::thread& t : threads) t.join();
+    // Every pixel on its own, so the cores share the image in blocks.
+    detail::for_each_block(pixels, [&](std::size_t, std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) errors[i] = pixel_relmse(film, i);
+    });
     return errors;
 }
 

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 #include <vector>
+
+#include "parallel_blocks.h"
 
 namespace orb::film {
 
@@ -39,18 +40,10 @@ std::vector<std::uint32_t> pixels_still_sampling(const std::vector<double>& pixe
     };
     for (std::uint32_t pixel : candidates)
         if (pixel >= pixels) throw std::invalid_argument("pixels_still_sampling: a candidate outside the image");
-    constexpr std::size_t kBlock = 1 << 16;
-    const std::size_t blocks = (candidates.size() + kBlock - 1) / kBlock;
-    std::vector<std::vector<std::uint32_t>> kept_by_block(blocks);
-    const std::size_t workers = std::min<std::size_t>(blocks, std::max(1u, std::thread::hardware_concurrency()));
-    const auto work = [&](std::size_t first_block, std::size_t step) {
-        for (std::size_t b = first_block; b < blocks; b += step)
-            keep_of(b * kBlock, std::min(candidates.size(), (b + 1) * kBlock), kept_by_block[b]);
-    };
-    std::vector<std::thread> threads;
-    for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work, w, workers);
-    work(0, std::max<std::size_t>(1, workers));
-    for (std::thread& t : threads) t.join();
+    std::vector<std::vector<std::uint32_t>> kept_by_block(detail::block_count(candidates.size()));
+    detail::for_each_block(candidates.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
+        keep_of(first, end, kept_by_block[block]);
+    });
     std::vector<std::uint32_t> kept;
     for (const std::vector<std::uint32_t>& block : kept_by_block) kept.insert(kept.end(), block.begin(), block.end());
     return kept;
