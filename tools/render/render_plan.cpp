@@ -206,7 +206,9 @@ PosedFrame pose_at(const RenderPlan& plan, long frame) {
     if (!changes_per_frame(plan) && plan.frame) return posed;
     if (plan.trajectory) {
         posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
-        cli::apply_sphere_style(*posed.scene, plan.style, plan.scene_label);
+        // Quietly: this runs on the thread that reads the next frame while
+        // one renders, and the range of frame 1 was said when the plan was made.
+        apply_sphere_styling(*posed.scene, plan.style, plan.scene_label);
     } else {
         posed.scene =
             request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
