@@ -19,7 +19,7 @@ MissingFrames::MissingFrames(const std::string& scene_path, const request::Reque
     } else {
         scene_ = request::read_scene(scene_path, label_, allow_empty, molecule);
     }
-    apply_sphere_styling(*scene_, style_, label_);
+    styled_ = apply_sphere_styling(*scene_, style_, label_);
     settings_ = request::resolve_request(options, &scene_->render, &frames, true);
 }
 

@@ -15,6 +15,7 @@
 #include "orb/cli/messages.h"
 #include "orb/cli/molecule_options.h"
 #include "orb/cli/output_file.h"
+#include "orb/cli/legend_output.h"
 #include "orb/cli/output_overlap.h"
 #include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
@@ -117,6 +118,8 @@ int run(Arguments& args, const CLI::App& app) {
     // The output is checked and prepared before anything is read or converted.
     orb::cli::refuse_overlapping_paths({{"INPUT", args.input}}, {{"-o", args.output}});
     orb::cli::OutputFile output(args.output, "-o");
+    std::optional<orb::cli::LegendOutput> legend =
+        orb::cli::LegendOutput::prepare(args.style, {{"INPUT", args.input}, {"-o", args.output}});
     // Checked before the input is read, which may be millions of spheres.
     std::optional<orb::Environment> environment =
         orb::import_tool::chosen_environment(args.environment, base_directory(args.output));
@@ -131,7 +134,7 @@ int run(Arguments& args, const CLI::App& app) {
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
     if (environment) imported.scene.environment = std::move(*environment);
     // Styling sizes spheres, which the automatic camera may then frame.
-    orb::cli::apply_sphere_style(imported.scene, style, source);
+    const orb::SphereStyleResult styled = orb::cli::apply_sphere_style(imported.scene, style, source);
     // The command line's camera wins over the file's (or the automatic one).
     orb::cli::apply_camera_options(args.camera, imported.scene, imported.scene.render.width,
                                    imported.scene.render.height, source);
@@ -152,6 +155,7 @@ int run(Arguments& args, const CLI::App& app) {
         text = orb::write_scene_json(imported.scene);
     }
     output.write(text);
+    if (legend) legend->write(styled, source);
     return orb::cli::kSuccess;
 }
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "orb/cli/camera_options.h"
+#include "orb/cli/legend_output.h"
 #include "frame_warnings.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
@@ -128,6 +129,7 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     RenderPlan plan;
     // Usage errors before the scene is read; kept for the frames a trajectory reads later.
     plan.style = cli::sphere_style_options(o.style);
+    std::optional<cli::LegendOutput> legend = cli::LegendOutput::prepare(o.style, {{"SCENE", o.scene}});
     plan.trajectory = request::open_trajectory(o.scene, o.molecule);
     Scene imported;
     if (plan.trajectory) {
@@ -137,7 +139,10 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
         imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty, o.molecule);
     }
     // Before the hash: a styled scene is another scene (its outputs say so, and --resume checks it).
-    cli::apply_sphere_style(imported, plan.style, plan.scene_label);
+    const SphereStyleResult styled = cli::apply_sphere_style(imported, plan.style, plan.scene_label);
+    if (legend)
+        legend->write(styled, plan.scene_label,
+                      plan.trajectory && plan.trajectory->frame_count() > 1 && !plan.style.color_range);
 
     plan.config.device = o.device;
     plan.config.development = knobs;
