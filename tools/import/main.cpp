@@ -23,6 +23,7 @@
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
 #include "orb/scene/importers.h"
+#include "orb/scene/numbered_series.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
@@ -125,9 +126,12 @@ int run(Arguments& args, const CLI::App& app) {
         orb::import_tool::chosen_environment(args.environment, base_directory(args.output));
 
     const std::string source = orb::cli::is_stdio(args.input) ? "<stdin>" : args.input;
-    const std::string bytes = orb::cli::read_input(args.input);
+    // A numbered series ("frame.*.xyz") is one trajectory of its files' frames.
+    const bool series = !orb::cli::is_stdio(args.input) && orb::is_series_pattern(args.input);
+    const std::string bytes = series ? std::string() : orb::cli::read_input(args.input);
     orb::ImportResult imported =
-        orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
+        series ? orb::import_molecular_series(args.input, args.import_options)
+               : orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
     warn_about_other_formats_options(app, imported.format, source);
     report_losses(imported.warnings, args.strict, source);
     for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
