@@ -177,7 +177,9 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
             request::require_trajectory_frames(*plan.trajectory, plan.frames, plan.scene_label);
             if (plan.trajectory->frame_count() == 1 && plan.frames.size() > 1 && !request::camera_moves(s))
                 cli::warning(plan.scene_label + ": holds one frame: every frame renders the same image");
-            return plan;  // each frame is read from the file when it is posed
+            // Each frame is read from the file when it is posed; frame 1, read and styled already, is kept for its pose.
+            plan.trajectory_first = std::make_shared<HeldFrame>(std::move(imported));
+            return plan;
         }
         for (const std::string& warning :
              frame_warnings(imported, plan.frames, s.fps, request::camera_moves(s), plan.scene_label))
@@ -210,10 +212,14 @@ PosedFrame pose_at(const RenderPlan& plan, long frame) {
     // render: safe on another thread.)
     if (!changes_per_frame(plan) && plan.frame) return posed;
     if (plan.trajectory) {
-        posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
-        // Quietly: this runs on the thread that reads the next frame while
-        // one renders, and the range of frame 1 was said when the plan was made.
-        apply_sphere_styling(*posed.scene, plan.style, plan.scene_label);
+        // Frame 1 as the plan read and styled it, the first time it is posed.
+        if (frame == 1 && plan.trajectory_first) posed.scene = plan.trajectory_first->take();
+        if (!posed.scene) {
+            posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
+            // Quietly: this runs on the thread that reads the next frame while
+            // one renders, and the range of frame 1 was said when the plan was made.
+            apply_sphere_styling(*posed.scene, plan.style, plan.scene_label);
+        }
     } else {
         posed.scene =
             request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
