@@ -1,5 +1,6 @@
 #include "render_plan.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -177,8 +178,10 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
             request::require_trajectory_frames(*plan.trajectory, plan.frames, plan.scene_label);
             if (plan.trajectory->frame_count() == 1 && plan.frames.size() > 1 && !request::camera_moves(s))
                 cli::warning(plan.scene_label + ": holds one frame: every frame renders the same image");
-            // Each frame is read from the file when it is posed; frame 1, read and styled already, is kept for its pose.
-            plan.trajectory_first = std::make_shared<HeldFrame>(std::move(imported));
+            // Each frame is read from the file when it is posed; frame 1, read and styled already, is kept
+            // for its pose (when it is one of the frames: else it would only hold memory).
+            if (std::find(plan.frames.begin(), plan.frames.end(), 1L) != plan.frames.end())
+                plan.trajectory_first = std::make_shared<HeldFrame>(std::move(imported));
             return plan;
         }
         for (const std::string& warning :
