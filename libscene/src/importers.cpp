@@ -290,9 +290,12 @@ std::string readable_file_names() {
 
 ImportResult import_molecular_series(const std::string& pattern, const ImportOptions& options) {
     const std::unique_ptr<FrameSource> frames = open_molecular_series(pattern, options.molecular);
-    if (!options.format.empty() && options.format != frames->format())
-        throw InputError(pattern + ": --from " + options.format + ", but the series is " +
-                         std::string(frames->format()));
+    if (!options.format.empty()) {  // --from: the importer's name or an alias ("lammpstrj")
+        const SceneImporter* chosen = find_scene_importer(options.format);
+        if (!chosen || chosen->name != frames->format())
+            throw InputError(pattern + ": --from " + options.format + ", but the series is " +
+                             std::string(frames->format()));
+    }
     ImportResult result = molecular_frame(*frames, pattern, options.molecular.frame).imported;
     result.format = frames->format();
     return result;

@@ -122,6 +122,12 @@ TEST_F(NumberedSeries, ADumpCutIntoAFilePerTimestepIsTheSameTrajectory) {
     const ImportResult imported = import_molecular_series(path("dump.*.lammpstrj"), options);
     EXPECT_EQ(imported.format, "lammps-dump");
     EXPECT_EQ(imported.scene, whole->frame(9));
+    // --from names the series' format, by its name or an alias, or it is an error.
+    options.format = "lammpstrj";
+    EXPECT_EQ(import_molecular_series(path("dump.*.lammpstrj"), options).scene, whole->frame(9));
+    options.format = "xyz";
+    EXPECT_EQ(error_of([&] { import_molecular_series(path("dump.*.lammpstrj"), options); }),
+              path("dump.*.lammpstrj") + ": --from xyz, but the series is lammps-dump");
 }
 
 TEST_F(NumberedSeries, ZeroPaddedNumbersAndAMissingFileNamedAsTheSeriesNamesThem) {
