@@ -55,10 +55,14 @@ const Glyph& glyph_for(char c) {
 // The first of these that OIIO can open wins.
 constexpr const char* kFonts[] = {"DejaVuSans", "DejaVuSans.ttf", "LiberationSans-Regular", "FreeSans", "DroidSans"};
 
+int bitmap_scale(int height) { return std::max(1, height / 9); }
+int font_size_for(int height) { return std::max(8, height * 3 / 4); }
+
 }  // namespace
 
-void draw_bitmap_label(Image& image, int x, int y, int height, const std::string& text) {
-    const int scale = std::max(1, height / 9);
+void draw_bitmap_label(Image& image, int x, int y, int height, const std::string& text,
+                       const std::array<float, 3>& color) {
+    const int scale = bitmap_scale(height);
     const int n = image.channels();
     int pen = x;
     for (char c : text) {
@@ -70,7 +74,7 @@ void draw_bitmap_label(Image& image, int x, int y, int height, const std::string
                     for (int sx = 0; sx < scale; ++sx) {
                         const int px = pen + col * scale + sx, py = y + scale + row * scale + sy;
                         if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
-                        for (int ch = 0; ch < std::min(n, 3); ++ch) image.at(px, py, ch) = 1.0f;
+                        for (int ch = 0; ch < std::min(n, 3); ++ch) image.at(px, py, ch) = color[ch];
                         if (n >= 4) image.at(px, py, 3) = 1.0f;
                     }
             }
@@ -78,19 +82,29 @@ void draw_bitmap_label(Image& image, int x, int y, int height, const std::string
     }
 }
 
-void draw_label(Image& image, int x, int y, int height, const std::string& text) {
+void draw_label(Image& image, int x, int y, int height, const std::string& text, const std::array<float, 3>& color) {
     OIIO::ImageSpec spec(image.width, image.height, image.channels(), OIIO::TypeDesc::FLOAT);
     OIIO::ImageBuf wrapped(spec, image.pixels.data());  // draws straight into our pixels
-    const int font_size = std::max(8, height * 3 / 4);
-    const float white[4] = {1, 1, 1, 1};
+    const int font_size = font_size_for(height);
+    const float rgba[4] = {color[0], color[1], color[2], 1};
     const int baseline = y + height - std::max(2, height / 5);
     for (const char* font : kFonts) {
         if (OIIO::ImageBufAlgo::render_text(wrapped, x, baseline, text, font_size, font,
-                                            OIIO::cspan<float>(white, std::min(4, image.channels()))))
+                                            OIIO::cspan<float>(rgba, std::min(4, image.channels()))))
             return;
         (void)wrapped.geterror();  // clear before trying the next font
     }
-    draw_bitmap_label(image, x, y, height, text);
+    draw_bitmap_label(image, x, y, height, text, color);
+}
+
+int label_width(int height, const std::string& text) {
+    if (text.empty()) return 0;
+    // The font draw_label takes: the first that OIIO can open.
+    for (const char* font : kFonts) {
+        const OIIO::ROI box = OIIO::ImageBufAlgo::text_size(text, font_size_for(height), font);
+        if (box.defined()) return box.xend;
+    }
+    return 6 * bitmap_scale(height) * static_cast<int>(text.size());
 }
 
 }  // namespace orb::image

@@ -100,10 +100,17 @@ ImporterOutput read_orb_binary(std::string_view bytes, const std::string& source
 // The molecular and particle formats (orb/scene/molecular.h): orb-import
 // writes one frame of them (--frame, the first by default); orb-render reads
 // them frame by frame from the file instead (orb/request/scene_input.h).
+ImporterOutput molecular_frame(const FrameSource& source_frames, const std::string& source, long frame);
+
 ImporterOutput read_molecular(std::string_view format, std::string_view bytes, const std::string& source,
                               const ImportOptions& options) {
     const std::unique_ptr<FrameSource> frames = open_molecular_bytes(bytes, source, format, options.molecular);
-    const long frame = options.molecular.frame;
+    return molecular_frame(*frames, source, options.molecular.frame);
+}
+
+// Frame `frame` (from 1) of a molecular file or series, with what reading it lost and how many frames there are.
+ImporterOutput molecular_frame(const FrameSource& source_frames, const std::string& source, long frame) {
+    const FrameSource* frames = &source_frames;
     const std::size_t count = frames->frame_count();
     if (frame < 1 || static_cast<std::size_t>(frame) > count)
         throw InputError(source + ": has " + std::to_string(count) + (count == 1 ? " frame" : " frames") +
@@ -279,6 +286,19 @@ std::string readable_file_names() {
         names += joined;
     }
     return names;
+}
+
+ImportResult import_molecular_series(const std::string& pattern, const ImportOptions& options) {
+    const std::unique_ptr<FrameSource> frames = open_molecular_series(pattern, options.molecular);
+    if (!options.format.empty()) {  // --from: the importer's name or an alias ("lammpstrj")
+        const SceneImporter* chosen = find_scene_importer(options.format);
+        if (!chosen || chosen->name != frames->format())
+            throw InputError(pattern + ": --from " + options.format + ", but the series is " +
+                             std::string(frames->format()));
+    }
+    ImportResult result = molecular_frame(*frames, pattern, options.molecular.frame).imported;
+    result.format = frames->format();
+    return result;
 }
 
 }  // namespace orb

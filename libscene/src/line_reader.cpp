@@ -124,6 +124,17 @@ std::string read_file_range(const std::string& path, std::uint64_t begin, std::u
     return bytes;
 }
 
+std::string read_file_head(const std::string& path, std::size_t count) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) throw InputError(path + ": cannot read: " + std::strerror(errno));
+    std::string head(count, '\0');
+    head.resize(std::fread(head.data(), 1, head.size(), file));
+    const bool failed = std::ferror(file);
+    std::fclose(file);
+    if (failed) throw InputError(path + ": cannot read: " + std::strerror(errno));
+    return head;
+}
+
 void split_fields(std::string_view line, std::vector<std::string_view>& fields) {
     fields.clear();
     std::size_t i = 0;

@@ -50,6 +50,8 @@ bool next_nonblank(LineReader& lines, std::string_view& line);
 
 // The bytes [begin, end) of a file (end = 0: to its end). Throws InputError.
 std::string read_file_range(const std::string& path, std::uint64_t begin, std::uint64_t end);
+// Up to `count` bytes from the start of the file (all of a shorter one).
+std::string read_file_head(const std::string& path, std::size_t count);
 
 // White-space separated fields of a line.
 std::vector<std::string_view> split_fields(std::string_view line);

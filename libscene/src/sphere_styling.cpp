@@ -83,12 +83,23 @@ void color_by(Scene& scene, const SphereStyleOptions& options, const std::vector
         std::vector<std::array<float, 3>> palette;
         for (std::size_t k = 0; k < property.labels.size(); ++k)
             palette.push_back(category_display_color(property.name, k, property.labels[k]));
-        for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-            if (particles[i]) set(i, palette.at(static_cast<std::size_t>(property.values[i])));
+        std::vector<bool> present(palette.size());
+        for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+            if (!particles[i]) continue;
+            const std::size_t category = static_cast<std::size_t>(property.values[i]);
+            set(i, palette.at(category));
+            present[category] = true;
+        }
+        ColorLegend& legend = result.legend.emplace();
+        legend.property = property.name;
+        legend.categorical = true;
+        for (std::size_t k = 0; k < palette.size(); ++k)
+            if (present[k]) legend.categories.push_back({property.labels[k], palette[k]});
         return;
     }
     const std::pair<double, double> range = options.color_range.value_or(particle_range(property, particles));
     result.color_range = range;
+    result.legend = ColorLegend{property.name, false, options.colormap, range, {}};
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         if (particles[i]) set(i, colormap_display_color(options.colormap, fraction_in(property.values[i], range)));
 }

@@ -4,6 +4,7 @@
 #include <gemmi/pdb.hpp>
 #include <gemmi/cif.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <map>
 
@@ -120,6 +121,7 @@ public:
                              (options_.drop_hydrogens ? std::string(" (with hydrogens dropped)") : std::string()));
         warnings_ = std::move(first.warnings);
         atoms_scene(std::move(first), options_, view_, source_);
+        ++built_;
     }
 
     std::size_t frame_count() const override { return structure_.models.size(); }
@@ -128,10 +130,12 @@ public:
             throw InputError(source_ + ": has " + std::to_string(structure_.models.size()) + " models; no frame " +
                              std::to_string(index + 1));
         FrameView view = view_;
+        ++built_;
         return atoms_scene(model_frame(structure_, structure_.models[index], options_), options_, view, source_);
     }
     const std::vector<std::string>& warnings() const override { return warnings_; }
     std::string_view format() const override { return format_; }
+    std::size_t frames_built() const override { return built_.load(); }
 
 private:
     gemmi::Structure structure_;
@@ -140,6 +144,7 @@ private:
     MolecularImportOptions options_;
     FrameView view_;
     std::vector<std::string> warnings_;
+    mutable std::atomic<std::size_t> built_{0};
 };
 
 }  // namespace

@@ -294,3 +294,41 @@ TEST_F(FramesCli, MissingComparesTheCameraOptionsAndTheOrbit) {
     EXPECT_EQ(no_scene.exit_code, 2);
     EXPECT_NE(no_scene.err.find("give --scene SCENE"), std::string::npos) << no_scene.err;
 }
+
+namespace {
+
+// A numbered series of a styled trajectory: orb-frames --missing --scene judges each frame (frame 1
+// the scene it read and styled for the plan, as orb-render does) against orb-render's outputs, and
+// writes the same legend.
+TEST_F(FramesCli, MissingJudgesAStyledSeriesAsOrbRenderRendersIt) {
+    const char* frames_text[] = {"3\nframe 1\nO 0 0 0\nH 0.76 0.59 0\nH -0.76 0.59 0\n",
+                                 "3\nframe 2\nO 0 0.3 0\nH 0.76 0.89 0\nH -0.76 0.89 0\n",
+                                 "2\nframe 3\nO 0 0.6 0\nH 0.76 1.19 0\n"};
+    for (int k = 0; k < 3; ++k) std::ofstream(path("water." + std::to_string(k + 1) + ".xyz")) << frames_text[k];
+    const std::string series = path("water.*.xyz");
+    const std::vector<std::string> style{"--radius-scale", "0.5", "--color-by", "element", "--width", "8",
+                                         "--height", "6", "--spp", "1"};
+    std::vector<std::string> render_args{ORB_RENDER_EXE, series, "--frames", "1-3", "-q", "--legend",
+                                         path("render-legend.png"), "-o", path("w.%04d.exr")};
+    render_args.insert(render_args.end(), style.begin(), style.end());
+    const ProcessResult rendered = run_process(render_args);
+    ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+
+    std::vector<std::string> judged{"1-3", path("w.%04d.exr"), "--missing", "--scene", series, "--legend",
+                                    path("frames-legend.png")};
+    judged.insert(judged.end(), style.begin(), style.end());
+    const ProcessResult finished = frames(judged);
+    EXPECT_EQ(finished.exit_code, 0) << finished.err;
+    EXPECT_EQ(finished.out, "");
+    std::ifstream a(path("render-legend.png"), std::ios::binary), b(path("frames-legend.png"), std::ios::binary);
+    const std::string legend_a{std::istreambuf_iterator<char>(a), {}}, legend_b{std::istreambuf_iterator<char>(b), {}};
+    EXPECT_FALSE(legend_a.empty());
+    EXPECT_EQ(legend_a, legend_b);
+    // Another styling is another render of every frame, frame 1 included.
+    const ProcessResult unstyled =
+        frames({"1-3", path("w.%04d.exr"), "--missing", "--scene", series, "--width", "8", "--height", "6", "--spp", "1"});
+    EXPECT_EQ(unstyled.exit_code, 0) << unstyled.err;
+    EXPECT_EQ(unstyled.out, "1\n2\n3\n");
+}
+
+}  // namespace

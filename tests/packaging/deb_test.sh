@@ -67,7 +67,7 @@ for tool in "${programs[@]}"; do
     expect_file "usr/share/bash-completion/completions/$tool"
 done
 for file in usr/share/orb/ocio/config.ocio usr/share/orb/kernels/integrator.cl usr/share/orb/scenes/cornell.scn \
-    usr/lib/orb/orb_texture_decoder.so usr/share/doc/orb/copyright usr/share/doc/orb/changelog.Debian.gz \
+    usr/lib/orb/orb_texture_decoder.so usr/lib/orb/orb_legend.so usr/share/doc/orb/copyright usr/share/doc/orb/changelog.Debian.gz \
     usr/share/doc/orb/README.md usr/share/doc/orb/docs/orb-render.md; do
     expect_file "$file"
 done

@@ -12,6 +12,7 @@
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/molecule_options.h"
+#include "orb/cli/legend_output.h"
 #include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
 
@@ -124,9 +125,14 @@ int main(int argc, char** argv) {
                 throw UsageError("'" + s.pattern + "' has no frame number: write %04d or #### where it goes");
             const std::string frames = list_text(s.list);
             const orb::cli::FrameSpec spec = orb::cli::parse_frame_spec(frames);
+            if (!s.style.legend.empty() && s.scene.empty())
+                throw UsageError("--legend needs --scene SCENE: the legend is of the scene's colours");
+            std::optional<orb::cli::LegendOutput> legend =
+                orb::cli::LegendOutput::prepare(s.style, {{"--scene", s.scene}});
             std::optional<orb::frames::MissingFrames> judge;
             if (s.missing) judge.emplace(s.scene, s.render, frames, s.allow_empty, s.molecule,
                                         orb::cli::sphere_style_options(s.style));
+            if (legend) legend->write(judge->styled(), s.scene, s.style.color_range.empty() && judge->frames_differ());
             std::string out;
             for (int frame : spec) {
                 const std::string path = s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, frame);

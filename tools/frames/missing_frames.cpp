@@ -19,16 +19,19 @@ MissingFrames::MissingFrames(const std::string& scene_path, const request::Reque
     } else {
         scene_ = request::read_scene(scene_path, label_, allow_empty, molecule);
     }
-    apply_sphere_styling(*scene_, style_, label_);
+    styled_ = apply_sphere_styling(*scene_, style_, label_);
     settings_ = request::resolve_request(options, &scene_->render, &frames, true);
 }
 
 exr::SceneIdentity MissingFrames::identity_at(long frame) {
     if (still_identity_) return *still_identity_;
     // A frame past a trajectory's end is an error, as in orb-render.
-    Scene posed = trajectory_ ? request::trajectory_frame(*trajectory_, frame, label_)
-                              : request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
-    if (trajectory_) apply_sphere_styling(posed, style_, label_);
+    // A trajectory's frame 1 is the scene read and styled already.
+    const bool read_frame = trajectory_ && frame != 1;
+    Scene posed = read_frame   ? request::trajectory_frame(*trajectory_, frame, label_)
+                  : trajectory_ ? *scene_
+                                : request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
+    if (read_frame) apply_sphere_styling(posed, style_, label_);
     request::apply_camera_request(posed, settings_, frame, label_);
     exr::SceneIdentity identity =
         request::scene_identity(posed, scene_content_hash(posed), *settings_.width, *settings_.height);

@@ -31,6 +31,11 @@ public:
 
     exr::OutputJudgement judge(const std::string& path, long frame);
 
+    // What styling the scene (a trajectory's frame 1) did, for --legend.
+    const SphereStyleResult& styled() const { return styled_; }
+    // A trajectory of several frames: each is styled by its own range.
+    bool frames_differ() const { return trajectory_ && trajectory_->frame_count() > 1; }
+
 private:
     exr::SceneIdentity identity_at(long frame);
 
@@ -38,6 +43,7 @@ private:
     std::shared_ptr<const FrameSource> trajectory_;
     std::string label_;
     SphereStyleOptions style_;
+    SphereStyleResult styled_;
     request::RequestSettings settings_;
     std::optional<exr::SceneIdentity> still_identity_;  // a scene without animation or orbit is the same at every frame
 };

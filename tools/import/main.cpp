@@ -15,6 +15,7 @@
 #include "orb/cli/messages.h"
 #include "orb/cli/molecule_options.h"
 #include "orb/cli/output_file.h"
+#include "orb/cli/legend_output.h"
 #include "orb/cli/output_overlap.h"
 #include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
@@ -22,6 +23,7 @@
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
 #include "orb/scene/importers.h"
+#include "orb/scene/numbered_series.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
@@ -117,21 +119,26 @@ int run(Arguments& args, const CLI::App& app) {
     // The output is checked and prepared before anything is read or converted.
     orb::cli::refuse_overlapping_paths({{"INPUT", args.input}}, {{"-o", args.output}});
     orb::cli::OutputFile output(args.output, "-o");
+    std::optional<orb::cli::LegendOutput> legend =
+        orb::cli::LegendOutput::prepare(args.style, {{"INPUT", args.input}, {"-o", args.output}});
     // Checked before the input is read, which may be millions of spheres.
     std::optional<orb::Environment> environment =
         orb::import_tool::chosen_environment(args.environment, base_directory(args.output));
 
     const std::string source = orb::cli::is_stdio(args.input) ? "<stdin>" : args.input;
-    const std::string bytes = orb::cli::read_input(args.input);
+    // A numbered series ("frame.*.xyz") is one trajectory of its files' frames.
+    const bool series = !orb::cli::is_stdio(args.input) && orb::is_series_pattern(args.input);
+    const std::string bytes = series ? std::string() : orb::cli::read_input(args.input);
     orb::ImportResult imported =
-        orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
+        series ? orb::import_molecular_series(args.input, args.import_options)
+               : orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
     warn_about_other_formats_options(app, imported.format, source);
     report_losses(imported.warnings, args.strict, source);
     for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
     if (environment) imported.scene.environment = std::move(*environment);
     // Styling sizes spheres, which the automatic camera may then frame.
-    orb::cli::apply_sphere_style(imported.scene, style, source);
+    const orb::SphereStyleResult styled = orb::cli::apply_sphere_style(imported.scene, style, source);
     // The command line's camera wins over the file's (or the automatic one).
     orb::cli::apply_camera_options(args.camera, imported.scene, imported.scene.render.width,
                                    imported.scene.render.height, source);
@@ -152,6 +159,7 @@ int run(Arguments& args, const CLI::App& app) {
         text = orb::write_scene_json(imported.scene);
     }
     output.write(text);
+    if (legend) legend->write(styled, source);
     return orb::cli::kSuccess;
 }
 

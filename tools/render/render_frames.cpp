@@ -194,7 +194,10 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
                   std::to_string(skipped.size()) + " finished already" +
                   (options.claim ? ", " + std::to_string(claimed_elsewhere) + " claimed elsewhere" : "") + " in " +
                   format_duration(seconds_since(start)) +
-                  (renderer ? " (" + kernel_builds_text(renderer->programs_built()) + ")" : ""));
+                  (renderer ? " (" + kernel_builds_text(renderer->programs_built()) + ")" : "") +
+                  (plan.trajectory ? "; " + std::to_string(plan.trajectory->frames_built()) + " frames read from " +
+                                         plan.scene_label
+                                   : ""));
     return cli::kSuccess;
 }
 

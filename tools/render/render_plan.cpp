@@ -1,9 +1,11 @@
 #include "render_plan.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
 #include "orb/cli/camera_options.h"
+#include "orb/cli/legend_output.h"
 #include "frame_warnings.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
@@ -128,6 +130,7 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     RenderPlan plan;
     // Usage errors before the scene is read; kept for the frames a trajectory reads later.
     plan.style = cli::sphere_style_options(o.style);
+    std::optional<cli::LegendOutput> legend = cli::LegendOutput::prepare(o.style, {{"SCENE", o.scene}});
     plan.trajectory = request::open_trajectory(o.scene, o.molecule);
     Scene imported;
     if (plan.trajectory) {
@@ -137,7 +140,10 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
         imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty, o.molecule);
     }
     // Before the hash: a styled scene is another scene (its outputs say so, and --resume checks it).
-    cli::apply_sphere_style(imported, plan.style, plan.scene_label);
+    const SphereStyleResult styled = cli::apply_sphere_style(imported, plan.style, plan.scene_label);
+    if (legend)
+        legend->write(styled, plan.scene_label,
+                      plan.trajectory && plan.trajectory->frame_count() > 1 && !plan.style.color_range);
 
     plan.config.device = o.device;
     plan.config.development = knobs;
@@ -172,7 +178,11 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
             request::require_trajectory_frames(*plan.trajectory, plan.frames, plan.scene_label);
             if (plan.trajectory->frame_count() == 1 && plan.frames.size() > 1 && !request::camera_moves(s))
                 cli::warning(plan.scene_label + ": holds one frame: every frame renders the same image");
-            return plan;  // each frame is read from the file when it is posed
+            // Each frame is read from the file when it is posed; frame 1, read and styled already, is kept
+            // for its pose (when it is one of the frames: else it would only hold memory).
+            if (std::find(plan.frames.begin(), plan.frames.end(), 1L) != plan.frames.end())
+                plan.trajectory_first = std::make_shared<HeldFrame>(std::move(imported));
+            return plan;
         }
         for (const std::string& warning :
              frame_warnings(imported, plan.frames, s.fps, request::camera_moves(s), plan.scene_label))
@@ -205,10 +215,14 @@ PosedFrame pose_at(const RenderPlan& plan, long frame) {
     // render: safe on another thread.)
     if (!changes_per_frame(plan) && plan.frame) return posed;
     if (plan.trajectory) {
-        posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
-        // Quietly: this runs on the thread that reads the next frame while
-        // one renders, and the range of frame 1 was said when the plan was made.
-        apply_sphere_styling(*posed.scene, plan.style, plan.scene_label);
+        // Frame 1 as the plan read and styled it, the first time it is posed.
+        if (frame == 1 && plan.trajectory_first) posed.scene = plan.trajectory_first->take();
+        if (!posed.scene) {
+            posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
+            // Quietly: this runs on the thread that reads the next frame while
+            // one renders, and the range of frame 1 was said when the plan was made.
+            apply_sphere_styling(*posed.scene, plan.style, plan.scene_label);
+        }
     } else {
         posed.scene =
             request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);

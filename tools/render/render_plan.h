@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,24 @@
 #include "render_options.h"
 
 namespace orb::render_cli {
+
+// Frame 1 of a trajectory as the plan read and styled it, handed to the
+// pose of frame 1 (on whichever thread poses it) instead of reading and
+// styling it again; once: a later pose of frame 1 reads it anew.
+class HeldFrame {
+public:
+    explicit HeldFrame(Scene scene) : scene_(std::move(scene)) {}
+    std::optional<Scene> take() {
+        std::lock_guard<std::mutex> lock(mutex_);
+        std::optional<Scene> taken = std::move(scene_);
+        scene_.reset();
+        return taken;
+    }
+
+private:
+    std::mutex mutex_;
+    std::optional<Scene> scene_;
+};
 
 struct RenderPlan {
     Scene scene;                // at scene_time
@@ -52,6 +71,7 @@ struct RenderPlan {
     // A molecular or particle trajectory (orb/request/scene_input.h): each
     // frame is read from the file when it is posed, and `imported` stays empty.
     std::shared_ptr<const FrameSource> trajectory;
+    std::shared_ptr<HeldFrame> trajectory_first;  // its frame 1, read and styled for the plan
     // --color-by, --radius-by, ...: applied to the imported scene, and to
     // each trajectory frame as it is read.
     SphereStyleOptions style;

@@ -1,5 +1,6 @@
 #include "orb/cli/sphere_style_options.h"
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -50,6 +51,15 @@ void add_sphere_style_options(CLI::App& app, SphereStyleArguments& a) {
         ->check(finite_number_where([](double v) { return v > 0; }, "a number > 0"))
         ->option_text("FACTOR")
         ->group(kGroup);
+    app.add_option("--legend", a.legend,
+                   "Write a legend of --color-by's colours to this PNG file: a colour bar with the property's name "
+                   "and values, or a swatch per category with its label")
+        ->option_text("FILE.png")
+        ->group(kGroup);
+    app.add_option("--legend-layout", a.legend_layout, "The legend's bar upright or lying down (default vertical)")
+        ->check(CLI::IsMember({"vertical", "horizontal"}))
+        ->option_text("vertical|horizontal")
+        ->group(kGroup);
     app.add_option("--material", a.material,
                    "Every particle's material, keeping its colour: matte (diffuse), plastic (glossy coat) or metal")
         ->option_text("PRESET")
@@ -80,10 +90,20 @@ SphereStyleOptions sphere_style_options(const SphereStyleArguments& a) {
         if (!options.material)
             throw UsageError("--material: expected matte, plastic or metal, got '" + a.material + "'");
     }
+    if (!a.legend.empty()) {
+        if (a.color_by.empty())
+            throw UsageError("--legend " + a.legend + " needs --color-by PROPERTY: the legend says what its colours mean");
+        const std::size_t dot = a.legend.rfind('.');
+        std::string extension = dot == std::string::npos ? "" : a.legend.substr(dot);
+        for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (extension != ".png") throw UsageError("--legend: expected a PNG file name (FILE.png), got '" + a.legend + "'");
+    } else if (a.legend_layout != "vertical") {
+        throw UsageError("--legend-layout needs --legend FILE.png");
+    }
     return options;
 }
 
-void apply_sphere_style(Scene& scene, const SphereStyleOptions& options, const std::string& source) {
+SphereStyleResult apply_sphere_style(Scene& scene, const SphereStyleOptions& options, const std::string& source) {
     const SphereStyleResult result = apply_sphere_styling(scene, options, source);
     if (result.color_range) {
         std::ostringstream text;
@@ -91,6 +111,7 @@ void apply_sphere_style(Scene& scene, const SphereStyleOptions& options, const s
              << result.color_range->first << " to " << result.color_range->second;
         info(text.str());
     }
+    return result;
 }
 
 }  // namespace orb::cli

@@ -13,6 +13,7 @@
 #include "orb/scene/import.h"
 #include "orb/scene/importers.h"
 #include "orb/scene/error.h"
+#include "orb/scene/numbered_series.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::request {
@@ -40,23 +41,16 @@ Scene read_scene(const std::string& path, std::string& label, bool allow_empty, 
 
 std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const MolecularImportOptions& options) {
     if (cli::is_stdio(path)) return nullptr;
-    // The start of the file tells (a few kilobytes), else its name (.gro has no signature to speak of).
-    std::string head(65536, '\0');
-    {
-        std::FILE* file = std::fopen(path.c_str(), "rb");
-        if (!file) return nullptr;  // read_scene gives the error
-        head.resize(std::fread(head.data(), 1, head.size(), file));
-        std::fclose(file);
+    std::shared_ptr<const FrameSource> frames;
+    if (is_series_pattern(path)) {
+        frames = open_molecular_series(path, options);  // "dump.*.lammpstrj": its files, one trajectory
+    } else {
+        std::error_code ec;
+        if (!fs::is_regular_file(path, ec)) return nullptr;  // read_scene gives the error (or reads the FIFO)
+        const std::string_view format = molecular_file_format(path);
+        if (format.empty()) return nullptr;
+        frames = open_molecular_file(path, format, options);
     }
-    std::string_view format = recognise_molecular_file(head, path);
-    if (format.empty()) {
-        const SceneImporter* named = scene_importer_for_path(path);
-        if (!named || named->option_group != "Molecule input") return nullptr;
-        // A name that decides, unless the content is another importer's.
-        if (const SceneImporter* recognised = recognise_scene(head); recognised && recognised != named) return nullptr;
-        format = named->name;
-    }
-    std::shared_ptr<const FrameSource> frames = open_molecular_file(path, format, options);
     for (const std::string& message : frames->warnings()) cli::warning(message);
     return frames;
 }

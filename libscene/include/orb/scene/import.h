@@ -41,4 +41,10 @@ struct ImportResult {
 ImportResult import_scene(std::string_view bytes, const std::string& source, const std::string& base_dir,
                           const ImportOptions& options = {});
 
+// Frame options.molecular.frame of a numbered series of molecular files
+// ("dump.*.lammpstrj", orb/scene/molecular.h open_molecular_series), as
+// import_scene reads one of a single file. Throws InputError, also when
+// options.format is given and the series is another format.
+ImportResult import_molecular_series(const std::string& pattern, const ImportOptions& options = {});
+
 }  // namespace orb

@@ -51,6 +51,10 @@ public:
     // What reading lost (unknown element names, ...), from the scan and frame 1.
     virtual const std::vector<std::string>& warnings() const = 0;
     virtual std::string_view format() const = 0;  // the importer's name: "lammps-dump"
+    // How many frame scenes the source has built so far, frame 1's for the
+    // camera included: what reading a trajectory cost (tests check that
+    // frame 1 is read once).
+    virtual std::size_t frames_built() const = 0;
 };
 
 // The molecular importer a file's first bytes (or, for .gro whose content
@@ -62,6 +66,20 @@ std::string_view recognise_molecular_file(std::string_view head, const std::stri
 // Throws InputError for a file that cannot be read or whose frames are malformed.
 std::unique_ptr<FrameSource> open_molecular_file(const std::string& path, std::string_view format,
                                                  const MolecularImportOptions& options);
+
+// The molecular format of the file at `path`, as orb-render tells it: its
+// first bytes, else its name (.gro), unless its content is another
+// importer's; empty when it is none. Throws InputError when it cannot be read.
+std::string_view molecular_file_format(const std::string& path);
+
+// A numbered series (orb/scene/numbered_series.h: "dump.*.lammpstrj") as one
+// trajectory: the frames of its files in the order of their numbers, each
+// file's frames one after another, every file scanned once for where its
+// frames start and read when a frame is asked for. Every file must be of one
+// text trajectory format (XYZ, LAMMPS dump, .gro). Throws InputError for the
+// series' errors, a file of another format than the first (naming both), a
+// PDB or mmCIF series, and a malformed file.
+std::unique_ptr<FrameSource> open_molecular_series(const std::string& pattern, const MolecularImportOptions& options);
 
 // The same over bytes already in memory (stdin, orb-import); `bytes` must outlive the source.
 std::unique_ptr<FrameSource> open_molecular_bytes(std::string_view bytes, const std::string& source,

@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "orb/scene/colormaps.h"
 #include "orb/scene/scene.h"
@@ -50,11 +51,30 @@ struct SphereStyleOptions {
     }
 };
 
+// What --color-by's colours mean: what a legend image shows
+// (orb/image/legend.h draws it). Colours are display (sRGB-encoded) values,
+// the ones the particles' linear colours were decoded from.
+struct ColorLegend {
+    struct Category {
+        std::string label;
+        std::array<float, 3> display_color{};
+    };
+    std::string property;  // --color-by's property
+    bool categorical = false;
+    // A numeric property: `colormap` over `range` (first -> the map's start).
+    Colormap colormap = Colormap::Viridis;
+    std::pair<double, double> range{0.0, 0.0};
+    // A categorical property: the categories the particles have, in the
+    // property's label order, each with its colour.
+    std::vector<Category> categories;
+};
+
 // What styling did, for the tools to say (and the legend to draw).
 struct SphereStyleResult {
     // --color-by of a numeric property: the range mapped onto the colour map's ends.
     std::optional<std::pair<double, double>> color_range;
     std::optional<std::pair<double, double>> radius_values;  // --radius-by: the property's range over the particles
+    std::optional<ColorLegend> legend;  // --color-by: what the colours mean
 };
 
 // The display (sRGB-encoded) colour of category `index`, labelled `label`,

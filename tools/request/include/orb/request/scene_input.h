@@ -24,8 +24,10 @@ Scene read_scene(const std::string& path, std::string& label, bool allow_empty,
 // A molecular or particle file (PDB, mmCIF, XYZ, LAMMPS dump, .gro: its
 // content or name says so) opened frame by frame: frame f of --frames is
 // frame f of the file, counted from 1, read from the file when it is
-// rendered. Null for any other scene, and for stdin (read whole by
-// read_scene, which takes its first frame). Prints the reader's warnings.
+// rendered. A numbered series ("dump.*.lammpstrj", orb/scene/numbered_series.h)
+// is one trajectory of its files' frames. Null for any other scene, and for
+// stdin (read whole by read_scene, which takes its first frame). Prints the
+// reader's warnings.
 // Throws orb::InputError.
 std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const MolecularImportOptions& options);
 
