@@ -100,11 +100,6 @@ LANE_FN void path_sample_clear(PathSample* s, lmask lanes)
 // Adds `contribution` to the channel of paths with that many non-delta vertices, for the lanes in `lanes`.
 LANE_FN void add_by_vertex_count(PathSample* s, lint nondelta_vertices, lv3 contribution, lmask lanes)
 {
-    // A program that builds none of the three channels keeps one sum.
-    if (!ORB_FILM_BUILT(emission) && !ORB_FILM_BUILT(direct) && !ORB_FILM_BUILT(indirect)) {
-        s->emission = lv3_add_where(s->emission, contribution, lanes);
-        return;
-    }
     s->emission = lv3_add_where(s->emission, contribution, mask_and(lanes, nondelta_vertices == 0));
     s->direct = lv3_add_where(s->direct, contribution, mask_and(lanes, nondelta_vertices == 1));
     s->indirect = lv3_add_where(s->indirect, contribution, mask_and(lanes, nondelta_vertices >= 2));
