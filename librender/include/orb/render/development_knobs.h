@@ -51,6 +51,10 @@ struct DevelopmentKnobs {
     // counts with -cl-nv-verbose) on stderr for every program built from
     // source; a program loaded from the binary cache has none.
     bool show_build_log = false;
+    // ORB_HOST_DECISIONS=1: adaptive sampling decides on the host, from the
+    // film read back (libfilm's reference), even where the device could
+    // (Renderer::decides_on_device), to compare the two.
+    bool host_decisions = false;
     // Not from the environment: development code called around each render
     // pass (dev/pass_capture). Null: none.
     std::shared_ptr<PassObserver> pass_observer;
