@@ -260,9 +260,13 @@ std::vector<std::uint32_t> Renderer::active_pixels() const
 bool Renderer::decides_on_device() const
 {
     // One device holds the whole film; several hold a slice of the samples
-    // each, which only the host adds.
+    // each, which only the host adds. A CPU's OpenCL (PoCL) holds the film
+    // in the host's memory, and the host's decision on its cores measured
+    // faster than the kernels there (docs/design/adaptive-sampling.md).
     const Impl& r = *impl_;
-    return r.devices.size() == 1 && !r.config.development.host_decisions && r.devices.front()->decides_on_device();
+    if (r.devices.size() != 1) return false;
+    const bool wanted = r.config.development.device_decisions.value_or(!r.infos.front().is_cpu);
+    return wanted && r.devices.front()->decides_on_device();
 }
 
 std::optional<Renderer::Decision> Renderer::decide_on_device(std::optional<double> noise_threshold)

@@ -26,6 +26,7 @@ RenderConfig decision_config(int width, int height, bool adaptive)
 {
     RenderConfig config = small_config(width, height, 5);
     config.adaptive = adaptive;
+    config.development.device_decisions = true;  // PoCL's too, which would decide on the host by default
     config.film_channels = film::channel_bit(film::Channel::radiance) |
                            film::channel_bit(film::Channel::radiance_sq) |
                            (adaptive ? film::channel_bit(film::Channel::sample_count) : 0u);
@@ -90,15 +91,18 @@ std::vector<std::uint32_t> expect_same_decision(Renderer& renderer, std::optiona
 
 }  // namespace
 
-TEST(DeviceDecision, PoclHasDoublePrecisionSoTheDecisionRunsOnTheDevice)
+TEST(DeviceDecision, PoclDecidesOnTheHostUnlessTheKnobSaysDevice)
 {
     Renderer renderer(ball_under_sky(), decision_config(8, 8, true));
-    EXPECT_TRUE(renderer.decides_on_device());
-    RenderConfig host = decision_config(8, 8, true);
-    host.development.host_decisions = true;
-    Renderer on_host(ball_under_sky(), host);
+    EXPECT_TRUE(renderer.decides_on_device());  // PoCL has double precision
+    RenderConfig config = decision_config(8, 8, true);
+    config.development.device_decisions = false;
+    Renderer on_host(ball_under_sky(), config);
     EXPECT_FALSE(on_host.decides_on_device());
     EXPECT_FALSE(on_host.decide_on_device(0.1));
+    config.development.device_decisions.reset();
+    Renderer by_default(ball_under_sky(), config);
+    EXPECT_EQ(by_default.decides_on_device(), !by_default.device().is_cpu);
 }
 
 // A rendered film, decided on three times as a render would (the candidates
@@ -187,7 +191,7 @@ TEST(DeviceDecision, AnAdaptiveRenderIsTheSameWithDecisionsOnEitherSide)
     std::vector<double> estimates;
     for (bool host : {false, true}) {
         RenderConfig config = decision_config(40, 30, true);
-        config.development.host_decisions = host;
+        config.development.device_decisions = !host;
         Renderer renderer(ball_under_sky(), config);
         renderer.clear();
         AdaptiveSampler sampler(renderer, settings, std::nullopt);

@@ -166,7 +166,8 @@ public:
 
     // Whether adaptive sampling's decisions run on the device, where the
     // film is (decide_on_device): with one device that has double
-    // precision, unless the development knob host_decisions says otherwise.
+    // precision and is not a CPU, or as the development knob
+    // device_decisions says.
     bool decides_on_device() const;
     // The decision on the device (docs/design/adaptive-sampling.md), the
     // same as libfilm's on the film read back: the frame's estimated relMSE
