@@ -15,7 +15,7 @@
 //   compact_still_sampling every candidate: those that keep sampling, written
 //                          to the new list in the candidates' order.
 // The list stays ascending and its order depends on nothing but the film,
-// so renders are reproducible.
+// so renders are reproducible. list_every_pixel starts a frame's list.
 
 // Exactly the host's arithmetic: no fused multiply-adds.
 #pragma OPENCL FP_CONTRACT OFF
@@ -181,4 +181,13 @@ __kernel __attribute__((reqd_work_group_size(ORB_DECISION_GROUP, 1, 1))) void co
     uint group_kept = 0;
     const uint rank = exclusive_scan(keep, scratch, &group_kept);
     if (keep) still_sampling[group_offsets[get_group_id(0)] + rank] = pixel;
+}
+
+// One work-item a pixel: the list of every pixel, 0, 1, ..., pixel_count - 1
+// (a frame's first list, made where it is read rather than uploaded).
+__kernel __attribute__((reqd_work_group_size(ORB_DECISION_GROUP, 1, 1))) void list_every_pixel(
+    __global uint* list, uint pixel_count)
+{
+    const uint pixel = (uint)get_global_id(0);
+    if (pixel < pixel_count) list[pixel] = pixel;
 }

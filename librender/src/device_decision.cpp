@@ -39,7 +39,8 @@ DeviceDecision::DeviceDecision(const cl::Context& context, const cl::Program& pr
       estimate_(program, "estimate_pixel_errors"),
       count_(program, "count_still_sampling"),
       sum_(program, "sum_decision"),
-      compact_(program, "compact_still_sampling")
+      compact_(program, "compact_still_sampling"),
+      every_(program, "list_every_pixel")
 {
     const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     const std::size_t groups = std::max<std::size_t>(1, groups_of(pixels));
@@ -48,6 +49,14 @@ DeviceDecision::DeviceDecision(const cl::Context& context, const cl::Program& pr
     group_counts_ = cl::Buffer(context, CL_MEM_READ_WRITE, groups * sizeof(cl_uint));
     group_offsets_ = cl::Buffer(context, CL_MEM_READ_WRITE, groups * sizeof(cl_uint));
     totals_ = cl::Buffer(context, CL_MEM_READ_WRITE, sizeof(device::DecisionTotals));
+}
+
+void DeviceDecision::list_every_pixel(cl::CommandQueue& queue, cl::Buffer& list)
+{
+    const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+    every_.setArg(0, list);
+    every_.setArg(1, static_cast<cl_uint>(pixels));
+    launch(queue, every_, pixels);
 }
 
 void DeviceDecision::prepare(cl::CommandQueue& queue, const DeviceFilm& film)
@@ -60,6 +69,10 @@ void DeviceDecision::prepare(cl::CommandQueue& queue, const DeviceFilm& film)
     nothing.candidates = &noisy_;
     nothing.still_sampling = &noisy_;
     run(queue, film, nothing, 0, true);
+    every_.setArg(0, noisy_);
+    every_.setArg(1, cl_uint{0});
+    launch(queue, every_, 0);
+    queue.finish();
 }
 
 DecisionOutput DeviceDecision::decide(cl::CommandQueue& queue, const DeviceFilm& film, const DecisionInput& input)

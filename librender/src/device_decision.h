@@ -51,6 +51,10 @@ public:
     // passes) and waits for its totals.
     DecisionOutput decide(cl::CommandQueue& queue, const DeviceFilm& film, const DecisionInput& input);
 
+    // Enqueues the list of every pixel, 0, 1, ..., into `list` (which holds
+    // that many entries).
+    void list_every_pixel(cl::CommandQueue& queue, cl::Buffer& list);
+
     // Launches each kernel once over nothing, so that a driver's work at a
     // kernel's first launch happens while the renderer is set up, not in
     // the first decision, whose seconds the render reports.
@@ -67,6 +71,7 @@ private:
     cl::Kernel count_;
     cl::Kernel sum_;
     cl::Kernel compact_;
+    cl::Kernel every_;
     cl::Buffer noisy_;             // a byte per pixel: 1 for a noisy one
     cl::Buffer group_error_sums_;  // a double per group of pixels
     cl::Buffer group_counts_;      // per group of candidates: how many keep sampling

@@ -290,8 +290,25 @@ void DeviceRenderer::set_active_pixels(const std::vector<std::uint32_t>& pixels)
     }
 }
 
-void DeviceRenderer::set_every_pixel_active()
+void DeviceRenderer::set_every_pixel_active(bool on_device)
 {
+    if (!config_.adaptive) throw std::logic_error("set_every_pixel_active needs a renderer made for adaptive sampling");
+    if (on_device && decides_on_device()) {
+        const std::size_t pixels = static_cast<std::size_t>(config_.width) * static_cast<std::size_t>(config_.height);
+        try {
+            reserve_list(session_->context(), session_->queue(), active_pixels_, pixels, 0);
+            decision_->list_every_pixel(session_->queue(), active_pixels_);
+            active_count_ = pixels;
+            every_pixel_active_ = true;
+            if (program_) {
+                pad_active_pixels();
+                kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
+            }
+        } catch (const cl::Error& error) {
+            fail(error, "listing every pixel");
+        }
+        return;
+    }
     std::vector<std::uint32_t> every(static_cast<std::size_t>(config_.width) * static_cast<std::size_t>(config_.height));
     std::iota(every.begin(), every.end(), std::uint32_t{0});
     set_active_pixels(every);

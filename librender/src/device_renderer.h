@@ -74,7 +74,9 @@ public:
     // ascending row-major indices; every pixel until this is called. Without
     // config.adaptive the program renders every pixel and this is an error.
     void set_active_pixels(const std::vector<std::uint32_t>& pixels);
-    void set_every_pixel_active();
+    // The same for every pixel; `on_device`: the list is made on the device
+    // (with decisions there), not uploaded.
+    void set_every_pixel_active(bool on_device = false);
     std::size_t active_pixel_count() const;
     // The list as the device holds it (read back: for tests).
     std::vector<std::uint32_t> active_pixels();

@@ -50,6 +50,15 @@ struct Renderer::Impl {
     std::vector<int> split(int count) const;
     void wait_all(const std::vector<std::size_t>& busy);
     void all_pixels_active();  // adaptive sampling: every pixel renders again
+    // Adaptive sampling decides on the device, where it can. One device
+    // holds the whole film; several hold a slice of the samples each, which
+    // only the host adds. A CPU's OpenCL (PoCL) holds the film in the host's
+    // memory, and the host's decision on its cores measured faster than the
+    // kernels there (docs/design/adaptive-sampling.md).
+    bool wants_device_decisions() const
+    {
+        return devices.size() == 1 && config.development.device_decisions.value_or(!infos.front().is_cpu);
+    }
 };
 
 std::vector<int> Renderer::Impl::split(int count) const
@@ -90,7 +99,8 @@ void Renderer::Impl::wait_all(const std::vector<std::size_t>& busy)
 
 void Renderer::Impl::all_pixels_active()
 {
-    for (auto& device : devices) device->set_every_pixel_active();
+    // Made on the device where it decides: a frame's list then never crosses the bus.
+    for (auto& device : devices) device->set_every_pixel_active(wants_device_decisions());
 }
 
 struct PreparedScene::Data {
@@ -259,14 +269,8 @@ std::vector<std::uint32_t> Renderer::active_pixels() const
 
 bool Renderer::decides_on_device() const
 {
-    // One device holds the whole film; several hold a slice of the samples
-    // each, which only the host adds. A CPU's OpenCL (PoCL) holds the film
-    // in the host's memory, and the host's decision on its cores measured
-    // faster than the kernels there (docs/design/adaptive-sampling.md).
     const Impl& r = *impl_;
-    if (r.devices.size() != 1) return false;
-    const bool wanted = r.config.development.device_decisions.value_or(!r.infos.front().is_cpu);
-    return wanted && r.devices.front()->decides_on_device();
+    return r.wants_device_decisions() && r.devices.front()->decides_on_device();
 }
 
 std::optional<Renderer::Decision> Renderer::decide_on_device(std::optional<double> noise_threshold)
