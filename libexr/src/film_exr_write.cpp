@@ -121,6 +121,14 @@ const char* compression_name(ExrCompression compression) {
     return "?";
 }
 
+const char* adaptive_stop_name(AdaptiveStop stop) { return stop == AdaptiveStop::Noise ? "noise" : "error"; }
+
+std::optional<AdaptiveStop> parse_adaptive_stop(const std::string& name) {
+    if (name == "noise") return AdaptiveStop::Noise;
+    if (name == "error") return AdaptiveStop::Error;
+    return std::nullopt;
+}
+
 ExrCompression parse_compression(const std::string& name) {
     for (const NamedCompression& c : kCompressions)
         if (name == c.name) return c.compression;

@@ -30,6 +30,11 @@ struct FrameInfo {
     bool operator==(const FrameInfo&) const = default;
 };
 
+// What ended an adaptive render before its target samples per pixel.
+enum class AdaptiveStop { Noise, Error };
+const char* adaptive_stop_name(AdaptiveStop stop);  // "noise", "error"
+std::optional<AdaptiveStop> parse_adaptive_stop(const std::string& name);
+
 // What a render was made from; stored as orb:* header attributes.
 // The sample count and the sample indices are the film's own (orb:spp,
 // orb:sampleRanges).
@@ -57,6 +62,11 @@ struct ExrMetadata {
     // the render stopped on, absent without it; what --resume continues with.
     std::optional<double> noise_threshold;  // orb:noiseThreshold
     std::optional<double> target_error;     // orb:targetError
+    // orb:adaptiveStop ("noise" or "error"): the render ended on its
+    // adaptive rule, every pixel below the noise threshold or the frame's
+    // estimate below the target error, before orb:targetSpp; it is
+    // finished (render_request.h). Absent: it did not (yet).
+    std::optional<AdaptiveStop> adaptive_stop;
 };
 
 // Only lossless compressions: a resumed or merged render rebuilds the
