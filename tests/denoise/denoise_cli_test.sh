@@ -11,8 +11,8 @@
 #    4: 4 spp 0.050-0.065, 32 spp 0.0091-0.0098, denoised 0.0023.);
 #  - every input channel kept bit for bit, the layer and orb:denoised added;
 #  - standard input and output, and one result for one input;
-#  - orb-render --denoise (one image, --half, PIZ, --frames) writes what
-#    orb-denoise adds to the same render without it;
+#  - orb-render --denoise (one image, --half, PIZ, --frames) and orb-merge
+#    --denoise write what orb-denoise adds to the same image without it;
 #  - bad input: no OIDN (ORB_OIDN_LIBRARY names nothing), not an EXR, no
 #    albedo or normal, output == input, a non-EXR output name, a bad option;
 #    each with one message, its exit code, and no output left behind.
@@ -136,6 +136,14 @@ done
     "$bin/orb-render" "$scene" "${small[@]}" --frames 1-3 --orbit 360 --passes beauty,albedo,normal -q -o "plain.%d.exr" ||
     problem "rendering --frames failed"
 for frame in 1 2 3; do same_as_orb_denoise "--frames, frame $frame" "frame.$frame.exr" "plain.$frame.exr"; done
+# orb-merge --denoise (orb-farm's collect job) likewise: the merge denoised in its one encode.
+for k in 0 1; do
+    "$bin/orb-render" "$scene" --width 40 --height 30 --seed 5 --sample-range $((3 * k)):3 --passes beauty,albedo,normal -q -o "slice$k.exr" ||
+        problem "rendering slice $k failed"
+done
+"$bin/orb-merge" slice0.exr slice1.exr --denoise -q -o merged-denoised.exr &&
+    "$bin/orb-merge" slice0.exr slice1.exr -q -o merged.exr || problem "orb-merge failed"
+same_as_orb_denoise "orb-merge --denoise" merged-denoised.exr merged.exr
 
 # ---- bad input ----
 ls -A >keep.txt
@@ -150,6 +158,8 @@ echo "not an image" >text.exr
 echo text.exr >>keep.txt
 expect_status 1 "text.exr: not an OpenEXR file" "$bin/orb-denoise" text.exr -o out.exr
 expect_status 1 "no albedo layer (albedo.R, albedo.G, albedo.B) and no normal layer" "$bin/orb-denoise" reference.exr -o out.exr
+expect_status 1 "the merged image: no albedo layer" "$bin/orb-merge" reference.exr --denoise -o out.exr
+expect_status 1 "ORB_OIDN_LIBRARY" env ORB_OIDN_LIBRARY="$work/nothing-here.so" "$bin/orb-merge" noisy.exr --denoise -o out.exr
 expect_status 1 "nothing.exr" "$bin/orb-denoise" nothing.exr -o out.exr
 expect_status 2 "refusing to overwrite an input" "$bin/orb-denoise" noisy.exr -o ./noisy.exr
 expect_status 2 "OpenEXR only" "$bin/orb-denoise" noisy.exr -o out.png
