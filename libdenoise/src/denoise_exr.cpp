@@ -18,12 +18,17 @@
 #include <thread>
 #include <vector>
 
+#include "denoise_inputs.h"
 #include "exr_memory_streams.h"
 #include "orb/kernels/film_channels.h"
 #include "orb/scene/error.h"
 
 namespace orb::denoise {
 namespace {
+
+using detail::denoised_names;
+using detail::Names;
+using detail::names_of;
 
 // Guards the allocations below against a hostile header, as libexr's reader does.
 constexpr long long kMaxPixels = 1LL << 28;
@@ -40,32 +45,13 @@ struct Plane {
     std::vector<char> bytes;
 };
 
-using Names = std::array<const char*, 3>;
-
-// The three shown channels of a film channel's layer, from the table.
-Names names_of(film::Channel channel) {
-    const film::ChannelInfo& info = film::info(channel);
-    return {info.exr_names[0], info.exr_names[1], info.exr_names[2]};
-}
-Names denoised_names() {
-    const film::PostLayerInfo& info = film::info(film::PostLayer::Denoised);
-    return {info.exr_names[0], info.exr_names[1], info.exr_names[2]};
-}
-
-std::string format(const Names& names) { return std::string(names[0]) + ", " + names[1] + ", " + names[2]; }
-
 const Plane* find(const std::vector<Plane>& planes, const char* name) {
     for (const Plane& plane : planes)
         if (plane.name == name) return &plane;
     return nullptr;
 }
 
-bool has_all(const std::vector<Plane>& planes, const Names& names) {
-    return std::all_of(names.begin(), names.end(), [&](const char* n) { return find(planes, n) != nullptr; });
-}
-
-// The three channels interleaved as floats; every value must be finite (the
-// filter spreads a NaN or an infinity over its whole neighbourhood).
+// The three channels interleaved as floats; every value must be finite.
 std::vector<float> interleave(const std::vector<Plane>& planes, const Names& names, int width,
                               const std::string& source, const char* layer) {
     const std::size_t pixels = static_cast<std::size_t>(width) * (planes.front().bytes.size() / 4 / width);
@@ -84,10 +70,7 @@ std::vector<float> interleave(const std::vector<Plane>& planes, const Names& nam
                 std::memcpy(&h, plane.bytes.data() + 4 * i, sizeof h);
                 value = h;
             }
-            if (!std::isfinite(value))
-                throw InputError(source + ": " + layer + " pixel (" + std::to_string(i % width) + ", " +
-                                 std::to_string(i / width) + ") channel " + plane.name + " is " +
-                                 std::to_string(value) + "; the denoiser needs finite values");
+            detail::require_finite(value, i, width, plane.name, layer, source);
             rgb[3 * i + c] = value;
         }
     }
@@ -150,22 +133,6 @@ DecodedImage decode(std::string_view exr, const std::string& source) {
     }
 }
 
-void require_layers(const std::vector<Plane>& planes, const std::string& source) {
-    const Names beauty = names_of(film::Channel::radiance);
-    if (!has_all(planes, beauty))
-        throw InputError(source + ": no beauty layer (" + format(beauty) + ") to denoise");
-    const Names albedo = names_of(film::Channel::albedo);
-    const Names normal = names_of(film::Channel::normal);
-    std::string missing;
-    if (!has_all(planes, albedo)) missing = "no albedo layer (" + format(albedo) + ")";
-    if (!has_all(planes, normal))
-        missing += (missing.empty() ? "no " : " and no ") + std::string("normal layer (") + format(normal) + ")";
-    if (!missing.empty())
-        throw InputError(source + ": " + missing +
-                         "; the denoiser needs both to keep edges and textures: render with --passes "
-                         "beauty,albedo,normal (orb-render --denoise adds them)");
-}
-
 std::string encode(DecodedImage& image, const std::vector<float>& denoised, const std::string& description) {
     const Names names = denoised_names();
     const Imf::PixelType type = find(image.planes, names_of(film::Channel::radiance)[0])->type;
@@ -211,7 +178,7 @@ std::string encode(DecodedImage& image, const std::vector<float>& denoised, cons
 
 std::string add_denoised_layer(std::string_view exr, const std::string& source, Denoiser& denoiser) {
     DecodedImage image = decode(exr, source);
-    require_layers(image.planes, source);
+    detail::require_layers([&](const char* name) { return find(image.planes, name) != nullptr; }, source);
     const std::vector<float> color = interleave(image.planes, names_of(film::Channel::radiance), image.width, source, "beauty");
     const std::vector<float> albedo = interleave(image.planes, names_of(film::Channel::albedo), image.width, source, "albedo");
     const std::vector<float> normal = interleave(image.planes, names_of(film::Channel::normal), image.width, source, "normal");

@@ -75,8 +75,9 @@ struct Denoiser::State {
     std::string device_name;
     std::string description;
 
-    // The filter and buffers for the last image size; rebuilt when it changes.
+    // The filters and buffers for the last image size; rebuilt when it changes.
     oidn::Filter filter = nullptr;
+    oidn::Filter albedo_filter = nullptr, normal_filter = nullptr;  // prefilter_aux only
     oidn::Buffer color = nullptr, albedo = nullptr, normal = nullptr, output = nullptr;
     int width = 0, height = 0;
     std::mutex mutex;
@@ -95,10 +96,10 @@ struct Denoiser::State {
     }
 
     void release_filter() {
-        if (filter) api.oidnReleaseFilter(filter);
+        for (oidn::Filter* f : {&filter, &albedo_filter, &normal_filter})
+            if (*f) api.oidnReleaseFilter(std::exchange(*f, nullptr));
         for (oidn::Buffer* b : {&color, &albedo, &normal, &output})
             if (*b) api.oidnReleaseBuffer(std::exchange(*b, nullptr));
-        filter = nullptr;
         width = height = 0;
     }
 
@@ -110,27 +111,53 @@ struct Denoiser::State {
             *b = api.oidnNewBuffer(device, bytes);
             check(device, "allocating an image of " + std::to_string(w) + "x" + std::to_string(h));
         }
-        filter = api.oidnNewFilter(device, "RT");
-        check(device, "creating the RT filter");
-        const auto image = [&](const char* name, oidn::Buffer buffer) {
-            api.oidnSetFilterImage(filter, name, buffer, oidn::kFormatFloat3, static_cast<std::size_t>(w),
+        const auto image = [&](oidn::Filter to, const char* name, oidn::Buffer buffer) {
+            api.oidnSetFilterImage(to, name, buffer, oidn::kFormatFloat3, static_cast<std::size_t>(w),
                                    static_cast<std::size_t>(h), 0, 0, 0);
         };
-        image("color", color);
-        image("albedo", albedo);
-        image("normal", normal);
-        image("output", output);
+        filter = new_filter();
+        image(filter, "color", color);
+        image(filter, "albedo", albedo);
+        image(filter, "normal", normal);
+        image(filter, "output", output);
         // Orb's beauty is linear radiance of any range.
         api.oidnSetFilterBool(filter, "hdr", true);
         // The albedo and normal are Monte Carlo means of as many samples as
-        // the beauty: noisy behind glass and at edges, so OIDN filters them
-        // too (cleanAux false, the default, said explicitly).
-        api.oidnSetFilterBool(filter, "cleanAux", false);
-        api.oidnSetFilterInt(filter, "quality", oidn_quality(settings.quality));
-        api.oidnCommitFilter(filter);
-        check(device, "setting up the RT filter");
+        // the beauty: noisy behind glass and at edges. Either OIDN filters
+        // them inside the beauty's filter (cleanAux false, the default, said
+        // explicitly), or, with prefilter_aux, each is denoised first by an
+        // RT filter of its own, in place, as OIDN's documentation describes,
+        // and the beauty's filter takes them as clean.
+        api.oidnSetFilterBool(filter, "cleanAux", settings.prefilter_aux);
+        commit(filter, "the RT filter");
+        if (settings.prefilter_aux) {
+            albedo_filter = new_filter();
+            image(albedo_filter, "albedo", albedo);
+            image(albedo_filter, "output", albedo);
+            commit(albedo_filter, "the albedo's prefilter");
+            normal_filter = new_filter();
+            image(normal_filter, "normal", normal);
+            image(normal_filter, "output", normal);
+            commit(normal_filter, "the normal's prefilter");
+        }
         width = w;
         height = h;
+    }
+
+    oidn::Filter new_filter() {
+        oidn::Filter made = api.oidnNewFilter(device, "RT");
+        check(device, "creating the RT filter");
+        return made;
+    }
+    void commit(oidn::Filter f, const std::string& what) {
+        api.oidnSetFilterInt(f, "quality", oidn_quality(settings.quality));
+        api.oidnCommitFilter(f);
+        check(device, "setting up " + what);
+    }
+
+    void execute(oidn::Filter f, const char* doing) {
+        api.oidnExecuteFilter(f);
+        check(device, doing);
     }
 
     ~State() {
@@ -156,7 +183,8 @@ Denoiser::Denoiser(DenoiseSettings settings) {
     s.version = std::to_string(version / 10000) + "." + std::to_string(version / 100 % 100) + "." +
                 std::to_string(version % 100);
     s.device_name = device_type_name(s.api.oidnGetDeviceInt(s.device, "type"));
-    s.description = "Intel Open Image Denoise " + s.version + ", RT filter, hdr, albedo and normal (not clean), quality " +
+    s.description = "Intel Open Image Denoise " + s.version + ", RT filter, hdr, albedo and normal " +
+                    (settings.prefilter_aux ? "(prefiltered, clean)" : "(not clean)") + ", quality " +
                     quality_name(settings.quality) + ", " + s.device_name;
 }
 
@@ -180,8 +208,9 @@ std::vector<float> Denoiser::denoise(const DenoiseImages& images) {
     s.api.oidnWriteBuffer(s.albedo, 0, bytes, images.albedo);
     s.api.oidnWriteBuffer(s.normal, 0, bytes, images.normal);
     s.check(s.device, "copying the image to the device");
-    s.api.oidnExecuteFilter(s.filter);
-    s.check(s.device, "denoising");
+    if (s.albedo_filter) s.execute(s.albedo_filter, "denoising the albedo");
+    if (s.normal_filter) s.execute(s.normal_filter, "denoising the normal");
+    s.execute(s.filter, "denoising");
     std::vector<float> result(floats);
     s.api.oidnReadBuffer(s.output, 0, bytes, result.data());
     s.check(s.device, "copying the result back");

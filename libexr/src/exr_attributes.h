@@ -23,5 +23,6 @@ inline constexpr const char* kFrame = "orb:frame";
 inline constexpr const char* kFps = "orb:fps";
 inline constexpr const char* kNoiseThreshold = "orb:noiseThreshold";
 inline constexpr const char* kTargetError = "orb:targetError";
+inline constexpr const char* kAdaptiveStop = "orb:adaptiveStop";
 
 }  // namespace orb::exr::attr

@@ -149,7 +149,7 @@ bool scanline_writer_handles(ExrCompression compression) {
 }
 
 void write_scanline_exr(const Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
-                        bool half, ExrCompression compression, const std::vector<HeaderAttribute>& attributes,
+                        bool filled, bool half, ExrCompression compression, const std::vector<HeaderAttribute>& attributes,
                         ScanlineBuffers& buffers, std::string& bytes, std::size_t& size) {
     size = 0;
     last_core_error.clear();
@@ -185,8 +185,9 @@ void write_scanline_exr(const Film& film, const std::vector<Pass>& passes, const
     for_each_block(blocks, [&](int block, ZipBlockCompressor& compressor, std::vector<std::uint8_t>& raw) {
         const int first_row = block * rows_per_block;
         const int rows = std::min(rows_per_block, film.height - first_row);
-        fill_planes(film, passes, planes, static_cast<std::size_t>(first_row) * width,
-                    static_cast<std::size_t>(first_row + rows) * width);
+        if (!filled)
+            fill_planes(film, passes, planes, static_cast<std::size_t>(first_row) * width,
+                        static_cast<std::size_t>(first_row + rows) * width);
         std::vector<std::uint8_t>& stored = buffers.blocks[static_cast<std::size_t>(block)];
         if (compression == ExrCompression::None) {
             pack_block(channels, film.width, first_row, rows, stored);

@@ -125,6 +125,11 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
                 fail(path, std::string(name) + " must be a positive number, got " + std::to_string(given->value()));
             *value = given->value();
         }
+    if (const auto* stop = header.findTypedAttribute<Imf::StringAttribute>(attr::kAdaptiveStop)) {
+        m.adaptive_stop = parse_adaptive_stop(stop->value());
+        if (!m.adaptive_stop)
+            fail(path, std::string(attr::kAdaptiveStop) + " must be noise or error, got '" + stop->value() + "'");
+    }
     if (const auto* frame = header.findTypedAttribute<Imf::IntAttribute>(attr::kFrame)) {
         const auto& fps = required<Imf::DoubleAttribute>(header, attr::kFps, path);
         m.frame = FrameInfo{frame->value(), fps.value()};

@@ -14,7 +14,9 @@
 #include <algorithm>
 #include <climits>
 #include <cstring>
+#include <exception>
 #include <fstream>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <variant>
@@ -104,7 +106,42 @@ void use_all_cores_for_compression() {
     (void)configured;
 }
 
+// Fills every pixel of `planes` on every core: a post layer is computed from
+// the whole image before any block is written.
+void fill_all_planes(const Film& film, const std::vector<Pass>& passes, const std::vector<detail::Plane>& planes) {
+    const auto width = static_cast<std::size_t>(film.width);
+    const auto rows = static_cast<std::size_t>(film.height);
+    const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, rows);
+    std::exception_ptr error;
+    std::mutex error_lock;
+    const auto work = [&](std::size_t worker) {
+        try {
+            detail::fill_planes(film, passes, planes, rows * worker / workers * width,
+                                rows * (worker + 1) / workers * width);
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(error_lock);
+            if (!error) error = std::current_exception();
+        }
+    };
+    std::vector<std::thread> threads;
+    for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work, w);
+    work(0);
+    for (std::thread& thread : threads) thread.join();
+    if (error) std::rethrow_exception(error);
+}
+
 }  // namespace
+
+const StoredImage::Channel* StoredImage::find(std::string_view name) const {
+    for (const Channel& channel : channels_)
+        if (channel.name == name) return &channel;
+    return nullptr;
+}
+
+float StoredImage::value(const Channel& channel, std::size_t i) {
+    const float v = channel.values[i];
+    return channel.half ? static_cast<float>(Imath::half(v)) : v;
+}
 
 const std::vector<std::string>& compression_names() {
     static const std::vector<std::string> names = [] {
@@ -121,6 +158,14 @@ const char* compression_name(ExrCompression compression) {
     return "?";
 }
 
+const char* adaptive_stop_name(AdaptiveStop stop) { return stop == AdaptiveStop::Noise ? "noise" : "error"; }
+
+std::optional<AdaptiveStop> parse_adaptive_stop(const std::string& name) {
+    if (name == "noise") return AdaptiveStop::Noise;
+    if (name == "error") return AdaptiveStop::Error;
+    return std::nullopt;
+}
+
 ExrCompression parse_compression(const std::string& name) {
     for (const NamedCompression& c : kCompressions)
         if (name == c.name) return c.compression;
@@ -131,6 +176,7 @@ ExrCompression parse_compression(const std::string& name) {
 
 struct ExrEncoding::Buffers {
     std::vector<float> planes;         // the stored values, one plane after another
+    std::vector<float> post_planes;    // the post layers' values, the same way
     std::vector<Imath::half> halfs;    // their HALF copies under --half (OpenEXR's C++ writer)
     detail::ScanlineBuffers scanlines;  // the blocks of the scanline writer
 };
@@ -144,28 +190,74 @@ ExrEncoding& ExrEncoding::operator=(ExrEncoding&&) noexcept = default;
 class ExrEncoder {
 public:
     static void encode(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
-                       ExrEncoding& into);
+                       ExrEncoding& into, std::span<const PostLayerPlanes> post);
+
+private:
+    static void add_post_layers(const Film& film, bool half, std::span<const PostLayerPlanes> post,
+                                std::vector<detail::Plane>& planes, std::vector<float>& storage,
+                                std::vector<detail::HeaderAttribute>& attributes);
 };
 
+// Computes the post layers from the filled planes and appends their planes
+// (laid out in `storage`) and attributes.
+void ExrEncoder::add_post_layers(const Film& film, bool half, std::span<const PostLayerPlanes> post,
+                                 std::vector<detail::Plane>& planes, std::vector<float>& storage,
+                                 std::vector<detail::HeaderAttribute>& attributes) {
+    const std::size_t pixels = static_cast<std::size_t>(film.width) * static_cast<std::size_t>(film.height);
+    std::size_t post_plane_count = 0;
+    for (const PostLayerPlanes& layer : post)
+        post_plane_count += static_cast<std::size_t>(film::info(layer.layer).exr_name_count);
+    if (storage.size() < post_plane_count * pixels) storage.resize(post_plane_count * pixels);
+
+    std::vector<StoredImage::Channel> channels;
+    for (const detail::Plane& plane : planes)
+        channels.push_back({plane.name, plane.values, half && !plane.always_float});
+    const StoredImage stored(film.width, film.height, std::move(channels));
+
+    std::size_t next = 0;
+    for (const PostLayerPlanes& layer : post) {
+        const film::PostLayerInfo& info = film::info(layer.layer);
+        const auto count = static_cast<std::size_t>(info.exr_name_count);
+        const std::vector<float> values = layer.compute(stored);
+        if (values.size() != pixels * count)
+            throw std::invalid_argument(std::string("the post layer ") + info.name + " has " +
+                                        std::to_string(values.size()) + " values, expected " +
+                                        std::to_string(pixels * count));
+        for (std::size_t c = 0; c < count; ++c, ++next) {
+            const std::span<float> plane(storage.data() + next * pixels, pixels);
+            for (std::size_t i = 0; i < pixels; ++i) plane[i] = values[i * count + c];
+            planes.push_back({info.exr_names[c], false, plane});
+        }
+        for (const auto& [name, value] : layer.attributes) attributes.push_back({name, value});
+    }
+}
+
 void ExrEncoder::encode(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
-                        ExrEncoding& into) {
+                        ExrEncoding& into, std::span<const PostLayerPlanes> post) {
     if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("cannot write an empty film");
     if (options.passes.empty()) throw std::invalid_argument("no passes to write");
     if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
     ExrEncoding::Buffers& buffers = *into.buffers_;
-    const std::vector<detail::HeaderAttribute> attributes = detail::header_attributes(film, metadata, options.passes);
-    const std::vector<detail::Plane> planes = detail::plane_layout(film, options.passes, buffers.planes);
+    std::vector<detail::HeaderAttribute> attributes = detail::header_attributes(film, metadata, options.passes);
+    std::vector<detail::Plane> planes = detail::plane_layout(film, options.passes, buffers.planes);
+    const auto width = static_cast<std::size_t>(film.width);
+    const std::size_t pixels = width * static_cast<std::size_t>(film.height);
+    // Post layers need the whole image first; without them the scanline
+    // writer fills each block as it packs it.
+    const bool filled = !post.empty();
+    if (filled) {
+        fill_all_planes(film, options.passes, planes);
+        add_post_layers(film, options.half, post, planes, buffers.post_planes, attributes);
+    }
     if (detail::scanline_writer_handles(options.compression)) {
-        detail::write_scanline_exr(film, options.passes, planes, options.half, options.compression, attributes,
-                                   buffers.scanlines, into.bytes_, into.size_);
+        detail::write_scanline_exr(film, options.passes, planes, filled, options.half, options.compression,
+                                   attributes, buffers.scanlines, into.bytes_, into.size_);
         return;
     }
 
     // RLE and PIZ through OpenEXR's C++ writer, which compresses blocks on its thread pool.
     use_all_cores_for_compression();
-    const auto width = static_cast<std::size_t>(film.width);
-    const std::size_t pixels = width * static_cast<std::size_t>(film.height);
-    detail::fill_planes(film, options.passes, planes, 0, pixels);
+    if (!filled) detail::fill_planes(film, options.passes, planes, 0, pixels);
     Imf::Header header(film.width, film.height);
     header.compression() = to_imf(options.compression);
     add_attributes(header, attributes);
@@ -200,13 +292,14 @@ void ExrEncoder::encode(const Film& film, const ExrMetadata& metadata, const Exr
 }
 
 void encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
-                     ExrEncoding& into) {
-    ExrEncoder::encode(film, metadata, options, into);
+                     ExrEncoding& into, std::span<const PostLayerPlanes> post) {
+    ExrEncoder::encode(film, metadata, options, into, post);
 }
 
-std::string encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options) {
+std::string encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+                            std::span<const PostLayerPlanes> post) {
     ExrEncoding encoding;
-    encode_film_exr(film, metadata, options, encoding);
+    encode_film_exr(film, metadata, options, encoding, post);
     return std::string(encoding.bytes());
 }
 

@@ -35,6 +35,15 @@ std::string mismatch(const ExrFilmSummary& file, const RenderRequest& r) {
         return "rendered with --max-depth " + text(m.max_depth) + ", " + text(*r.max_depth) + " asked";
     if (r.seed && *r.seed != m.seed)
         return "rendered with another seed (orb:seed " + text(m.seed) + ", " + text(*r.seed) + " asked)";
+    if (r.adaptive) {
+        const auto setting = [](const std::optional<double>& value) { return value ? text(*value) : std::string("none"); };
+        if (r.adaptive->noise_threshold != m.noise_threshold)
+            return "rendered with --noise-threshold " + setting(m.noise_threshold) + ", " +
+                   setting(r.adaptive->noise_threshold) + " asked";
+        if (r.adaptive->target_error != m.target_error)
+            return "rendered with --target-error " + setting(m.target_error) + ", " + setting(r.adaptive->target_error) +
+                   " asked";
+    }
     if (r.scene_time && *r.scene_time != m.scene_time)
         return "rendered at scene time " + text(m.scene_time) + " s, " + text(*r.scene_time) + " s asked";
     if (r.scene) {
@@ -62,10 +71,16 @@ OutputJudgement judge_samples(const ExrFilmSummary& file, const RenderRequest& r
         if (file.half) return different(reason + ", stored as HALF, which cannot be continued exactly", n);
         return OutputJudgement{OutputState::Continuable, std::move(reason), n};
     };
+    // An adaptive render that ended on its rule before the samples asked
+    // for holds what it needs (every pixel below the noise threshold, or the
+    // frame below the target error): continuing it would decide the same and stop.
+    const bool stopped_on_its_rule = file.metadata.adaptive_stop.has_value();
     if (r.slice) {
         const std::uint64_t count = r.spp.value_or(file.metadata.target_spp);
         const SampleRange asked{r.first_sample, count};
         if (one_range && held.ranges().front() == asked) return {OutputState::Finished, "", n};
+        if (one_range && held.first() == asked.first && held.end() < asked.end() && stopped_on_its_rule)
+            return {OutputState::Finished, "", n};
         if (one_range && held.first() == asked.first && held.end() < asked.end())
             return continuable("holds the samples " + held.format() + " of " + text(asked.first) + ":" + text(count));
         return different("holds the samples " + held.format() + ", " + text(asked.first) + ":" + text(count) + " asked",
@@ -74,7 +89,7 @@ OutputJudgement judge_samples(const ExrFilmSummary& file, const RenderRequest& r
     if (!one_range || held.first() != 0)
         return different("holds the samples " + held.format() + ", not a whole frame's from sample 0", n);
     const std::uint64_t target = r.spp.value_or(file.metadata.target_spp);
-    if (n >= target) return {OutputState::Finished, "", n};
+    if (n >= target || stopped_on_its_rule) return {OutputState::Finished, "", n};
     return continuable("holds " + text(n) + " of " + text(target) + " spp");
 }
 

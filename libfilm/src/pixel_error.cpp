@@ -1,6 +1,7 @@
 #include "orb/film/pixel_error.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -74,12 +75,40 @@ std::vector<double> pixel_relmse(const Film& film)
     return errors;
 }
 
+namespace {
+
+constexpr std::size_t kGroup = ORB_DECISION_GROUP;
+
+// values[0] = the sum of the group's values, added as the device's
+// sum_pairwise adds them (kernels/adaptive.cl).
+double sum_pairwise(std::array<double, kGroup>& values)
+{
+    for (std::size_t half = kGroup / 2; half > 0; half >>= 1)
+        for (std::size_t l = 0; l < half; ++l) values[l] += values[l + half];
+    return values[0];
+}
+
+}  // namespace
+
 double frame_relmse(const std::vector<double>& pixel_errors)
 {
     if (pixel_errors.empty()) return 0;
-    double sum = 0;
-    for (double e : pixel_errors) sum += e;
-    return sum / static_cast<double>(pixel_errors.size());
+    const std::size_t groups = (pixel_errors.size() + kGroup - 1) / kGroup;
+    std::vector<double> group_sums(groups);
+    detail::for_each_block(groups, [&](std::size_t, std::size_t first, std::size_t end) {
+        std::array<double, kGroup> values;
+        for (std::size_t g = first; g < end; ++g) {
+            for (std::size_t l = 0; l < kGroup; ++l) {
+                const std::size_t i = g * kGroup + l;
+                values[l] = i < pixel_errors.size() ? pixel_errors[i] : 0.0;  // past the image: adds nothing
+            }
+            group_sums[g] = sum_pairwise(values);
+        }
+    });
+    std::array<double, kGroup> running{};
+    for (std::size_t l = 0; l < kGroup; ++l)
+        for (std::size_t g = l; g < groups; g += kGroup) running[l] += group_sums[g];
+    return sum_pairwise(running) / static_cast<double>(pixel_errors.size());
 }
 
 }  // namespace orb::film

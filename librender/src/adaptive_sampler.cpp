@@ -43,7 +43,7 @@ void require_channels(const RenderConfig& config, const AdaptiveSettings& settin
 
 AdaptiveSampler::AdaptiveSampler(Renderer& renderer, const AdaptiveSettings& settings,
                                  std::optional<double> film_threshold)
-    : renderer_(renderer), settings_(settings)
+    : renderer_(renderer), settings_(settings), on_device_(renderer.decides_on_device())
 {
     require_channels(renderer.config(), settings);
     const std::uint64_t spp = renderer.samples_per_pixel();
@@ -52,35 +52,37 @@ AdaptiveSampler::AdaptiveSampler(Renderer& renderer, const AdaptiveSettings& set
         std::iota(all.begin(), all.end(), std::uint32_t{0});
         return all;
     };
+    // The renderer starts (after clear() or load_film()) with every pixel active.
+    const auto every_pixel_active = [&] {
+        if (!on_device_) active_ = every_pixel();  // the host's copy of the list, its decisions' candidates
+    };
     if (spp == 0) {  // a fresh film: every pixel samples until the first decision
-        if (settings_.noise_threshold) active_ = every_pixel();
+        if (settings_.noise_threshold) every_pixel_active();
         return;
     }
     const bool at_decision = is_decision(spp, settings_.min_samples);
     if (!settings_.noise_threshold) {
-        if (at_decision) decide_among({});
+        if (at_decision) decide_among(nullptr);
         return;
     }
     renderer_.read_film(film_);
-    std::vector<std::uint32_t> candidates;
     if (film_threshold == settings_.noise_threshold && !film_.sample_count.empty()) {
         // The pixels that held every sample were still sampling.
+        std::vector<std::uint32_t> candidates;
         for (std::size_t i = 0; i < film_.pixel_count(); ++i)
             if (static_cast<std::uint64_t>(film_.sample_count[i]) == spp) candidates.push_back(static_cast<std::uint32_t>(i));
-        if (!at_decision) {
-            active_ = std::move(candidates);
-            renderer_.set_active_pixels(active_);
-            if (active_.empty()) stop_ = StopReason::Converged;
-            return;
+        renderer_.set_active_pixels(candidates);
+        if (!on_device_) active_ = std::move(candidates);
+        if (at_decision) {
+            decide_among(&active_);
+        } else if (renderer_.active_pixel_count() == 0) {
+            stop_ = StopReason::Converged;
         }
-    } else {
-        candidates = every_pixel();
-        if (spp < settings_.min_samples) {
-            active_ = std::move(candidates);  // too few samples to decide on yet
-            return;
-        }
+        return;
     }
-    decide_among(candidates);
+    every_pixel_active();
+    if (spp < settings_.min_samples) return;  // too few samples to decide on yet
+    decide_among(&active_);
 }
 
 std::uint64_t AdaptiveSampler::next_decision(std::uint64_t spp) const
@@ -90,29 +92,31 @@ std::uint64_t AdaptiveSampler::next_decision(std::uint64_t spp) const
 
 std::size_t AdaptiveSampler::active_pixel_count() const
 {
-    return settings_.noise_threshold ? active_.size() : static_cast<std::size_t>(renderer_.pixel_count());
+    return settings_.noise_threshold ? renderer_.active_pixel_count() : static_cast<std::size_t>(renderer_.pixel_count());
 }
 
-void AdaptiveSampler::decide()
-{
-    if (!settings_.noise_threshold) {
-        decide_among({});
-        return;
-    }
-    const std::vector<std::uint32_t> candidates = active_;
-    decide_among(candidates);
-}
+void AdaptiveSampler::decide() { decide_among(&active_); }
 
-void AdaptiveSampler::decide_among(const std::vector<std::uint32_t>& candidates)
+void AdaptiveSampler::decide_among(const std::vector<std::uint32_t>* host_candidates)
 {
     const auto began = std::chrono::steady_clock::now();
-    renderer_.read_film(film_);
-    const std::vector<double> errors = film::pixel_relmse(film_);
-    estimated_relmse_ = film::frame_relmse(errors);
-    if (settings_.noise_threshold) {
-        active_ = film::pixels_still_sampling(errors, film_.width, film_.height, *settings_.noise_threshold, candidates);
-        renderer_.set_active_pixels(active_);
-        if (active_.empty()) stop_ = StopReason::Converged;
+    if (on_device_) {
+        // The candidates are the renderer's list, on the device.
+        const std::optional<Renderer::Decision> decision = renderer_.decide_on_device(settings_.noise_threshold);
+        if (!decision) throw std::logic_error("the renderer no longer decides on its device");
+        estimated_relmse_ = decision->estimated_relmse;
+        if (settings_.noise_threshold && decision->still_sampling == 0) stop_ = StopReason::Converged;
+    } else {
+        renderer_.read_film(film_);
+        const std::vector<double> errors = film::pixel_relmse(film_);
+        estimated_relmse_ = film::frame_relmse(errors);
+        if (settings_.noise_threshold) {
+            const std::vector<std::uint32_t> candidates = host_candidates ? *host_candidates : std::vector<std::uint32_t>{};
+            active_ =
+                film::pixels_still_sampling(errors, film_.width, film_.height, *settings_.noise_threshold, candidates);
+            renderer_.set_active_pixels(active_);
+            if (active_.empty()) stop_ = StopReason::Converged;
+        }
     }
     if (settings_.target_error && *estimated_relmse_ < *settings_.target_error) stop_ = StopReason::ReachedError;
     ++decisions_;

@@ -1,8 +1,10 @@
 #include "device_renderer.h"
 
+#include <algorithm>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "pass_observer.h"
 #include "program_build.h"
@@ -102,13 +104,15 @@ DeviceRenderer::DeviceRenderer(std::shared_ptr<DeviceSession> session, const Ren
     settings.max_depth = config_.max_depth;
     settings.mode = static_cast<int>(config_.mode);
     set_seed(config_.seed);
+    active_count_ = static_cast<std::size_t>(config_.width) * static_cast<std::size_t>(config_.height);
     try {
         const device::uint none = ORB_NO_PIXEL;
-        active_pixels_ = cl::Buffer(session_->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof none,
+        active_pixels_ = cl::Buffer(session_->context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, sizeof none,
                                     const_cast<device::uint*>(&none));
     } catch (const cl::Error& error) {
         fail(error, "allocating the list of active pixels");
     }
+    if (config_.adaptive) set_every_pixel_active();
     clear_film();
 }
 
@@ -179,7 +183,7 @@ void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraPar
         upload_scene(session_->context(), session_->queue(), scene.tables, scene_buffers_);
         scene_bytes_ = scene_table_bytes(scene.tables);
         bind_buffers(kernel_, film_, scene_buffers_, 1);
-        if (config_.adaptive) upload_active_pixels();
+        if (config_.adaptive) pad_active_pixels();
         kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
     } catch (const cl::Error& error) {
         fail(error, "uploading the scene");
@@ -246,11 +250,22 @@ void DeviceRenderer::choose_work_sizes()
                                round_up(static_cast<size_t>(config_.height), ly));
 }
 
-std::size_t DeviceRenderer::active_pixel_count() const
+std::size_t DeviceRenderer::active_pixel_count() const { return active_count_; }
+
+namespace {
+
+// `list` holding at least `entries` entries, its first `kept` as they were.
+void reserve_list(const cl::Context& context, cl::CommandQueue& queue, cl::Buffer& list, std::size_t entries,
+                  std::size_t kept)
 {
-    return active_list_ ? active_list_->size()
-                        : static_cast<std::size_t>(config_.width) * static_cast<std::size_t>(config_.height);
+    const std::size_t bytes = std::max<std::size_t>(1, entries) * sizeof(device::uint);
+    if (list() && list.getInfo<CL_MEM_SIZE>() >= bytes) return;
+    cl::Buffer larger(context, CL_MEM_READ_WRITE, bytes);
+    if (list() && kept > 0) queue.enqueueCopyBuffer(list, larger, 0, 0, kept * sizeof(device::uint));
+    list = larger;
 }
+
+}  // namespace
 
 void DeviceRenderer::set_active_pixels(const std::vector<std::uint32_t>& pixels)
 {
@@ -259,37 +274,125 @@ void DeviceRenderer::set_active_pixels(const std::vector<std::uint32_t>& pixels)
     for (std::size_t i = 0; i < pixels.size(); ++i)
         if (pixels[i] >= image || (i > 0 && pixels[i] <= pixels[i - 1]))
             throw std::invalid_argument("active pixels must be ascending indices into the image");
-    active_list_ = pixels;
-    if (program_) {
-        try {
-            upload_active_pixels();
+    try {
+        reserve_list(session_->context(), session_->queue(), active_pixels_, pixels.size(), 0);
+        if (!pixels.empty())
+            session_->queue().enqueueWriteBuffer(active_pixels_, CL_TRUE, 0, pixels.size() * sizeof(device::uint),
+                                                 pixels.data());
+        active_count_ = pixels.size();
+        every_pixel_active_ = pixels.size() == image;  // ascending and in the image: 0, 1, ... then
+        if (program_) {
+            pad_active_pixels();
             kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
-        } catch (const cl::Error& error) {
-            fail(error, "uploading the list of active pixels");
         }
+    } catch (const cl::Error& error) {
+        fail(error, "uploading the list of active pixels");
     }
+}
+
+void DeviceRenderer::set_every_pixel_active(bool on_device)
+{
+    if (!config_.adaptive) throw std::logic_error("set_every_pixel_active needs a renderer made for adaptive sampling");
+    if (on_device && decides_on_device()) {
+        const std::size_t pixels = static_cast<std::size_t>(config_.width) * static_cast<std::size_t>(config_.height);
+        try {
+            reserve_list(session_->context(), session_->queue(), active_pixels_, pixels, 0);
+            decision_->list_every_pixel(session_->queue(), active_pixels_);
+            active_count_ = pixels;
+            every_pixel_active_ = true;
+            if (program_) {
+                pad_active_pixels();
+                kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
+            }
+        } catch (const cl::Error& error) {
+            fail(error, "listing every pixel");
+        }
+        return;
+    }
+    std::vector<std::uint32_t> every(static_cast<std::size_t>(config_.width) * static_cast<std::size_t>(config_.height));
+    std::iota(every.begin(), every.end(), std::uint32_t{0});
+    set_active_pixels(every);
+}
+
+std::vector<std::uint32_t> DeviceRenderer::active_pixels()
+{
+    std::vector<std::uint32_t> pixels(active_count_);
+    try {
+        if (!pixels.empty())
+            session_->queue().enqueueReadBuffer(active_pixels_, CL_TRUE, 0, pixels.size() * sizeof(device::uint),
+                                                pixels.data());
+    } catch (const cl::Error& error) {
+        fail(error, "reading the list of active pixels");
+    }
+    return pixels;
 }
 
 // The list padded with ORB_NO_PIXEL to whole work-groups of ORB_LANES
 // entries per work-item, and the launch over it. At least one work-group,
-// which prepare_kernel launches.
-void DeviceRenderer::upload_active_pixels()
+// which prepare_kernel launches. The padding is filled on the device: the
+// list may have been made there (decide()).
+void DeviceRenderer::pad_active_pixels()
 {
     const std::size_t lanes = simd_lanes_ > 0 ? static_cast<std::size_t>(simd_lanes_) : 1;
     const std::size_t group = local_size_[0] * local_size_[1];
-    const std::size_t count = active_pixel_count();
+    const std::size_t count = active_count_;
     const std::size_t items = std::max<std::size_t>(group, (count + lanes - 1) / lanes);
     const std::size_t global = (items + group - 1) / group * group;
-    std::vector<device::uint> padded(global * lanes, ORB_NO_PIXEL);
-    if (active_list_)
-        std::copy(active_list_->begin(), active_list_->end(), padded.begin());
-    else
-        std::iota(padded.begin(), padded.begin() + static_cast<std::ptrdiff_t>(count), device::uint{0});
-    const std::size_t bytes = padded.size() * sizeof(device::uint);
-    if (active_pixels_.getInfo<CL_MEM_SIZE>() < bytes)
-        active_pixels_ = cl::Buffer(session_->context(), CL_MEM_READ_ONLY, bytes);
-    session_->queue().enqueueWriteBuffer(active_pixels_, CL_TRUE, 0, bytes, padded.data());
+    const std::size_t entries = global * lanes;
+    cl::CommandQueue& queue = session_->queue();
+    reserve_list(session_->context(), queue, active_pixels_, entries, count);
+    if (entries > count)
+        queue.enqueueFillBuffer(active_pixels_, device::uint{ORB_NO_PIXEL}, count * sizeof(device::uint),
+                                (entries - count) * sizeof(device::uint));
     global_size_ = cl::NDRange(global, 1);
+}
+
+bool DeviceRenderer::decides_on_device()
+{
+    if (!decision_checked_) {
+        try {
+            decision_ = DeviceDecision::make(*session_, config_.width, config_.height);
+            if (decision_) decision_->prepare(session_->queue(), film_);
+        } catch (const cl::Error& error) {
+            fail(error, "preparing adaptive sampling's decision");
+        }
+        decision_checked_ = true;
+    }
+    return decision_ != nullptr;
+}
+
+std::optional<DecisionOutput> DeviceRenderer::decide(std::uint64_t samples_per_pixel, std::optional<double> noisy_from)
+{
+    if (noisy_from && !config_.adaptive)
+        throw std::logic_error("a decision with a noise threshold needs a renderer made for adaptive sampling");
+    if (!decides_on_device()) return std::nullopt;
+    try {
+        cl::CommandQueue& queue = session_->queue();
+        DecisionInput input;
+        input.uniform_samples = static_cast<double>(samples_per_pixel);
+        input.noisy_from = noisy_from;
+        if (noisy_from) {
+            reserve_list(session_->context(), queue, next_active_pixels_, active_pixels_.getInfo<CL_MEM_SIZE>() /
+                                                                               sizeof(device::uint), 0);
+            input.candidates = &active_pixels_;
+            input.candidate_count = active_count_;
+            input.every_pixel = every_pixel_active_;
+            input.still_sampling = &next_active_pixels_;
+        }
+        const DecisionOutput output = decision_->decide(queue, film_, input);
+        if (noisy_from) {
+            std::swap(active_pixels_, next_active_pixels_);
+            every_pixel_active_ = every_pixel_active_ && output.still_sampling == active_count_;
+            active_count_ = output.still_sampling;
+            if (program_) {
+                pad_active_pixels();
+                kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
+            }
+        }
+        return output;
+    } catch (const cl::Error& error) {
+        fail(error, "adaptive sampling's decision");
+    }
 }
 
 void DeviceRenderer::clear_film()

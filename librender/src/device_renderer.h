@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "device_decision.h"
 #include "device_film.h"
 #include "device_session.h"
 #include "opencl.h"
@@ -73,7 +74,21 @@ public:
     // ascending row-major indices; every pixel until this is called. Without
     // config.adaptive the program renders every pixel and this is an error.
     void set_active_pixels(const std::vector<std::uint32_t>& pixels);
+    // The same for every pixel; `on_device`: the list is made on the device
+    // (with decisions there), not uploaded.
+    void set_every_pixel_active(bool on_device = false);
     std::size_t active_pixel_count() const;
+    // The list as the device holds it (read back: for tests).
+    std::vector<std::uint32_t> active_pixels();
+
+    // Adaptive sampling's decision on this device's film as it is, which
+    // holds `samples_per_pixel` (device_decision.h): the frame's summed
+    // relMSE estimate and, with `noisy_from` (the noise threshold squared;
+    // config.adaptive), the active pixels narrowed to those that keep
+    // sampling, on the device. None where the device has no double
+    // precision: the caller decides on the host.
+    std::optional<DecisionOutput> decide(std::uint64_t samples_per_pixel, std::optional<double> noisy_from);
+    bool decides_on_device();
 
     void read_film(Film& film);    // the sums, into `film` (its memory reused); samples and ranges are the caller's
     // The same while the device goes on (DeviceFilm::read_later).
@@ -92,7 +107,7 @@ public:
 private:
     std::string build_options(const SceneLayout& scene) const;
     void choose_work_sizes();
-    void upload_active_pixels();
+    void pad_active_pixels();
     void prepare_kernel();
     [[noreturn]] void fail(const cl::Error& error, const std::string& what) const;
 
@@ -109,9 +124,14 @@ private:
     cl::NDRange local_size_;
     cl::NDRange global_size_;
     // render_pass's argument after the list (device_types.h): the active
-    // pixels with adaptive sampling, padded to global_size_; else a placeholder.
+    // pixels with adaptive sampling, their first active_count_ entries,
+    // padded to global_size_; else a placeholder.
     cl::Buffer active_pixels_;
-    std::optional<std::vector<std::uint32_t>> active_list_;  // none: every pixel
+    std::size_t active_count_ = 0;
+    bool every_pixel_active_ = true;  // the list is 0, 1, ..., pixels - 1
+    cl::Buffer next_active_pixels_;   // where a decision on the device writes the next list
+    bool decision_checked_ = false;   // decision_ was made, or the device has none
+    std::unique_ptr<DeviceDecision> decision_;
     bool centre_ray_pending_ = true;  // the centre-ray channels are not yet on the film
     PassTuner tuner_;
     int pending_samples_ = 0;  // enqueued since the last wait()

@@ -56,6 +56,20 @@ cl::CommandQueue& DeviceSession::transfer_queue()
     return transfer_queue_;
 }
 
+const cl::Program* DeviceSession::decision_program()
+{
+    const std::lock_guard<std::mutex> lock(decision_mutex_);
+    if (!decision_tried_) {
+        if (device_.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos)
+            decision_program_ = build_program(context_, device_, decision_program_source(options_.kernel_dir),
+                                              kDecisionLanguageOptions, options_.use_binary_cache,
+                                              options_.show_build_log)
+                                    .program;
+        decision_tried_ = true;  // after the build: one that failed throws again
+    }
+    return decision_program_() ? &decision_program_ : nullptr;
+}
+
 int DeviceSession::programs_built() const
 {
     const std::lock_guard<std::mutex> lock(programs_mutex_);

@@ -59,6 +59,12 @@ public:
     // Programs built or loaded so far (one per distinct set of options).
     int programs_built() const;
 
+    // Adaptive sampling's decision program (kernels/adaptive.cl), built on
+    // the first request; null on a device without double precision
+    // (cl_khr_fp64), where the decisions stay on the host. Throws
+    // std::runtime_error with the build log when it does not build.
+    const cl::Program* decision_program();
+
 private:
     DeviceInfo info_;
     SessionOptions options_;
@@ -70,6 +76,9 @@ private:
     std::string source_;  // read once: the kernels do not change while the process runs
     mutable std::mutex programs_mutex_;
     std::map<std::string, cl::Program> programs_;
+    std::mutex decision_mutex_;
+    bool decision_tried_ = false;
+    cl::Program decision_program_;  // null until built, and where the device has no fp64
 };
 
 }  // namespace orb::render

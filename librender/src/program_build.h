@@ -14,6 +14,11 @@ namespace orb::render {
 inline constexpr const char* kKernelLanguageOptions =
     "-cl-std=CL1.2 -cl-mad-enable -cl-unsafe-math-optimizations";
 
+// Adaptive sampling's decision program (kernels/adaptive.cl) is built with
+// exact math: no contraction, no reassociation, correctly rounded division,
+// so that it decides as the host's reference does, bit for bit.
+inline constexpr const char* kDecisionLanguageOptions = "-cl-std=CL1.2";
+
 // What a program of the kernels is built with, typed: the kernel features
 // (orb/kernels/kernel_features.h) and NVIDIA's register cap, a compiler
 // option rather than a define.

@@ -11,4 +11,9 @@ namespace orb::render {
 // Throws std::runtime_error if a file of a kernel folder cannot be read.
 std::string program_source(const std::string& kernel_dir);
 
+// Adaptive sampling's decision program (kernels/adaptive.cl): its files
+// (ORB_DECISION_KERNEL_FILES) in order, from `kernel_dir` or embedded. It
+// reads no kernel feature.
+std::string decision_program_source(const std::string& kernel_dir);
+
 }  // namespace orb::render

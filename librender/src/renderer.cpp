@@ -50,6 +50,15 @@ struct Renderer::Impl {
     std::vector<int> split(int count) const;
     void wait_all(const std::vector<std::size_t>& busy);
     void all_pixels_active();  // adaptive sampling: every pixel renders again
+    // Adaptive sampling decides on the device, where it can. One device
+    // holds the whole film; several hold a slice of the samples each, which
+    // only the host adds. A CPU's OpenCL (PoCL) holds the film in the host's
+    // memory, and the host's decision on its cores measured faster than the
+    // kernels there (docs/design/adaptive-sampling.md).
+    bool wants_device_decisions() const
+    {
+        return devices.size() == 1 && config.development.device_decisions.value_or(!infos.front().is_cpu);
+    }
 };
 
 std::vector<int> Renderer::Impl::split(int count) const
@@ -90,9 +99,8 @@ void Renderer::Impl::wait_all(const std::vector<std::size_t>& busy)
 
 void Renderer::Impl::all_pixels_active()
 {
-    std::vector<std::uint32_t> every(static_cast<std::size_t>(config.width) * static_cast<std::size_t>(config.height));
-    for (std::size_t i = 0; i < every.size(); ++i) every[i] = static_cast<std::uint32_t>(i);
-    for (auto& device : devices) device->set_active_pixels(every);
+    // Made on the device where it decides: a frame's list then never crosses the bus.
+    for (auto& device : devices) device->set_every_pixel_active(wants_device_decisions());
 }
 
 struct PreparedScene::Data {
@@ -251,6 +259,32 @@ void Renderer::set_active_pixels(const std::vector<std::uint32_t>& pixels)
 std::size_t Renderer::active_pixel_count() const
 {
     return impl_->config.adaptive ? impl_->devices.front()->active_pixel_count() : pixel_count();
+}
+
+std::vector<std::uint32_t> Renderer::active_pixels() const
+{
+    if (!impl_->config.adaptive) throw std::logic_error("active_pixels needs RenderConfig::adaptive");
+    return impl_->devices.front()->active_pixels();
+}
+
+bool Renderer::decides_on_device() const
+{
+    const Impl& r = *impl_;
+    return r.wants_device_decisions() && r.devices.front()->decides_on_device();
+}
+
+std::optional<Renderer::Decision> Renderer::decide_on_device(std::optional<double> noise_threshold)
+{
+    if (!decides_on_device()) return std::nullopt;
+    if (noise_threshold && !impl_->config.adaptive)
+        throw std::logic_error("a noise threshold needs RenderConfig::adaptive");
+    // Compared as relMSE, as the host's rule does: sqrt(e) >= t is e >= t^2.
+    const std::optional<double> noisy_from =
+        noise_threshold ? std::optional<double>(*noise_threshold * *noise_threshold) : std::nullopt;
+    const std::optional<DecisionOutput> output =
+        impl_->devices.front()->decide(impl_->device_ranges.front().total(), noisy_from);
+    if (!output) return std::nullopt;
+    return Decision{output->error_sum / static_cast<double>(pixel_count()), output->still_sampling};
 }
 
 std::uint64_t Renderer::next_sample() const { return impl_->cursor; }

@@ -63,13 +63,15 @@ TEST(DevelopmentKnobsParser, ReadsEveryKnob)
                                           {"ORB_SIMD_LANES", "8"},
                                           {"ORB_LOCAL_SIZE", "32x4"},
                                           {"ORB_REFIT_COST_LIMIT", "1.5"},
-                                          {"ORB_SHOW_BUILD_LOG", "1"}});
+                                          {"ORB_SHOW_BUILD_LOG", "1"},
+                                          {"ORB_DEVICE_DECISIONS", "1"}});
     EXPECT_EQ(knobs.kernel_dir, "/tmp/kernels");
     EXPECT_EQ(knobs.cl_options, "-DORB_SCALAR_TRAVERSAL=1 -cl-nv-verbose");
     EXPECT_EQ(knobs.simd_lanes, 8);
     EXPECT_EQ(knobs.local_size, (orb::render::LocalSize{32, 4}));
     EXPECT_EQ(knobs.refit_cost_limit, 1.5);
     EXPECT_TRUE(knobs.show_build_log);
+    EXPECT_EQ(knobs.device_decisions, true);
 }
 
 TEST(DevelopmentKnobsParser, EveryLaneCountAndOff)
@@ -77,6 +79,8 @@ TEST(DevelopmentKnobsParser, EveryLaneCountAndOff)
     for (int lanes : {0, 4, 8, 16}) EXPECT_EQ(parse({{"ORB_SIMD_LANES", std::to_string(lanes)}}).simd_lanes, lanes);
     EXPECT_EQ(parse({{"ORB_REFIT_COST_LIMIT", "0"}}).refit_cost_limit, 0.0);
     EXPECT_FALSE(parse({{"ORB_SHOW_BUILD_LOG", "0"}}).show_build_log);
+    EXPECT_EQ(parse({{"ORB_DEVICE_DECISIONS", "0"}}).device_decisions, false);
+    EXPECT_FALSE(parse({}).device_decisions);  // unset: the renderer's default
 }
 
 TEST(DevelopmentKnobsParser, AnEmptyValueIsUnset)

@@ -59,8 +59,8 @@ check_listed orb-render --spp --sample-range --seed --mode --width --height --fr
 check_listed orb-import --output --environment
 check_listed orb-tonemap --output --frames --skip-existing --missing --view --exposure
 check_listed orb-diff --pass --all-passes --fail-flip --fail-rmse --json --diff-image
-check_listed orb-merge --output
-check_listed orb-denoise --output --device --quality
+check_listed orb-merge --output --denoise
+check_listed orb-denoise --output --device --quality --prefilter-aux
 check_listed orb-frames --missing --paths
 
 # Placeholders: numbers, choices, files.

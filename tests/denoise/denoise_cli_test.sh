@@ -11,6 +11,8 @@
 #    4: 4 spp 0.050-0.065, 32 spp 0.0091-0.0098, denoised 0.0023.);
 #  - every input channel kept bit for bit, the layer and orb:denoised added;
 #  - standard input and output, and one result for one input;
+#  - orb-render --denoise (one image, --half, PIZ, --frames) and orb-merge
+#    --denoise write what orb-denoise adds to the same image without it;
 #  - bad input: no OIDN (ORB_OIDN_LIBRARY names nothing), not an EXR, no
 #    albedo or normal, output == input, a non-EXR output name, a bad option;
 #    each with one message, its exit code, and no output left behind.
@@ -104,6 +106,45 @@ info=$(oiiotool --info -v rendered.exr)
 grep -q 'orb:passes: "beauty,albedo,normal"' <<<"$info" || problem "--denoise did not add albedo,normal: $info"
 grep -q 'orb:denoised:' <<<"$info" || problem "orb-render --denoise wrote no denoised layer"
 
+# orb-render --denoise writes the layer in its one encode: the same file as
+# rendering the guides and running orb-denoise on it (every layer, the
+# denoised one included, value for value; every attribute but the timing),
+# for a single image with each writer (ZIP, PIZ), under --half, and for each
+# frame of --frames.
+same_as_orb_denoise() { # WHAT RENDERED PLAIN: RENDERED (--denoise) against orb-denoise of PLAIN
+    local what=$1 rendered=$2 plain=$3
+    "$bin/orb-denoise" "$plain" -o "$plain.denoised.exr" -q || { problem "$what: orb-denoise failed"; return; }
+    "$bin/orb-diff" "$plain.denoised.exr" "$rendered" --all-passes --fail-rmse 0 -q 2>/dev/null ||
+        problem "$what: a layer differs from the plain render's"
+    "$bin/orb-diff" "$plain.denoised.exr" "$rendered" --layer denoised --test-layer denoised --fail-rmse 0 -q 2>/dev/null ||
+        problem "$what: the denoised layer differs from orb-denoise's"
+    diff <(oiiotool --info -v "$plain.denoised.exr" | sed 1,2d | grep -v 'orb:renderSeconds') \
+        <(oiiotool --info -v "$rendered" | sed 1,2d | grep -v 'orb:renderSeconds') >/dev/null ||
+        problem "$what: the channels or attributes differ from orb-denoise's: $(diff <(oiiotool --info -v "$plain.denoised.exr") <(oiiotool --info -v "$rendered"))"
+}
+small=(--width 40 --height 30 --spp 3 --seed 5)
+for variant in "zip" "piz --compression piz" "half --half"; do
+    name=${variant%% *}
+    extra=()
+    [[ $variant == *" "* ]] && read -ra extra <<<"${variant#* }"
+    "$bin/orb-render" "$scene" "${small[@]}" "${extra[@]}" --denoise -q -o "one-$name.exr" &&
+        "$bin/orb-render" "$scene" "${small[@]}" "${extra[@]}" --passes beauty,albedo,normal -q -o "one-$name-plain.exr" ||
+        problem "rendering $name failed"
+    same_as_orb_denoise "--denoise ($name)" "one-$name.exr" "one-$name-plain.exr"
+done
+"$bin/orb-render" "$scene" "${small[@]}" --frames 1-3 --orbit 360 --denoise -q -o "frame.%d.exr" &&
+    "$bin/orb-render" "$scene" "${small[@]}" --frames 1-3 --orbit 360 --passes beauty,albedo,normal -q -o "plain.%d.exr" ||
+    problem "rendering --frames failed"
+for frame in 1 2 3; do same_as_orb_denoise "--frames, frame $frame" "frame.$frame.exr" "plain.$frame.exr"; done
+# orb-merge --denoise (orb-farm's collect job) likewise: the merge denoised in its one encode.
+for k in 0 1; do
+    "$bin/orb-render" "$scene" --width 40 --height 30 --seed 5 --sample-range $((3 * k)):3 --passes beauty,albedo,normal -q -o "slice$k.exr" ||
+        problem "rendering slice $k failed"
+done
+"$bin/orb-merge" slice0.exr slice1.exr --denoise -q -o merged-denoised.exr &&
+    "$bin/orb-merge" slice0.exr slice1.exr -q -o merged.exr || problem "orb-merge failed"
+same_as_orb_denoise "orb-merge --denoise" merged-denoised.exr merged.exr
+
 # ---- bad input ----
 ls -A >keep.txt
 sum=$(sha256sum noisy.exr)
@@ -117,6 +158,8 @@ echo "not an image" >text.exr
 echo text.exr >>keep.txt
 expect_status 1 "text.exr: not an OpenEXR file" "$bin/orb-denoise" text.exr -o out.exr
 expect_status 1 "no albedo layer (albedo.R, albedo.G, albedo.B) and no normal layer" "$bin/orb-denoise" reference.exr -o out.exr
+expect_status 1 "the merged image: no albedo layer" "$bin/orb-merge" reference.exr --denoise -o out.exr
+expect_status 1 "ORB_OIDN_LIBRARY" env ORB_OIDN_LIBRARY="$work/nothing-here.so" "$bin/orb-merge" noisy.exr --denoise -o out.exr
 expect_status 1 "nothing.exr" "$bin/orb-denoise" nothing.exr -o out.exr
 expect_status 2 "refusing to overwrite an input" "$bin/orb-denoise" noisy.exr -o ./noisy.exr
 expect_status 2 "OpenEXR only" "$bin/orb-denoise" noisy.exr -o out.png

@@ -10,6 +10,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "orb/denoise/denoise_exr.h"
+#include "orb/denoise/denoise_film.h"
 #include "orb/denoise/denoiser.h"
 #include "orb/denoise/oidn_library.h"
 #include "orb/scene/error.h"
@@ -94,6 +96,86 @@ TEST(Denoiser, RemovesNoiseFromAUniformWall)
     EXPECT_THROW(denoiser.denoise({width, height, color.data(), nullptr, normal.data()}), std::invalid_argument);
 }
 
+const std::vector<std::string> kGuided{"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z"};
+
+// Guides as noisy as the beauty (what a few samples leave behind glass): a
+// wall whose left half has albedo 0.25 and right half 0.75, lit so that its
+// radiance equals its albedo, the colour with noise of standard deviation
+// 0.2 and the albedo with 0.1 a pixel. Prefiltering the guides (OIDN's
+// cleanAux) must remove the noise as the plain filter does (MSE below a 16th
+// of the noisy image's), leave the caller's guides as they were, and differ
+// from the plain filter's result (it runs other filters).
+TEST(Denoiser, PrefilteredGuidesRemoveNoiseToo)
+{
+    const int width = 96, height = 64;
+    const std::size_t floats = static_cast<std::size_t>(width) * height * 3;
+    std::vector<float> truth(floats), color(floats), albedo(floats), normal(floats);
+    std::mt19937 random(11);
+    std::normal_distribution<float> colour_noise(0.0f, 0.2f), albedo_noise(0.0f, 0.1f);
+    for (std::size_t i = 0; i < floats; ++i) {
+        const bool right = (i / 3) % static_cast<std::size_t>(width) >= static_cast<std::size_t>(width / 2);
+        truth[i] = right ? 0.75f : 0.25f;
+        color[i] = std::max(0.0f, truth[i] + colour_noise(random));
+        albedo[i] = std::clamp(truth[i] + albedo_noise(random), 0.0f, 1.0f);
+    }
+    for (std::size_t i = 0; i < floats; i += 3) normal[i + 2] = 1.0f;
+    const std::vector<float> albedo_given = albedo, normal_given = normal;
+
+    DenoiseSettings settings{DeviceChoice::Cpu, Quality::High};
+    settings.prefilter_aux = true;
+    Denoiser prefiltering(settings);
+    EXPECT_NE(prefiltering.description().find("albedo and normal (prefiltered, clean)"), std::string::npos)
+        << prefiltering.description();
+    const std::vector<float> result = prefiltering.denoise({width, height, color.data(), albedo.data(), normal.data()});
+    ASSERT_EQ(result.size(), floats);
+    EXPECT_EQ(albedo, albedo_given);
+    EXPECT_EQ(normal, normal_given);
+    double noisy = 0, denoised = 0;
+    for (std::size_t i = 0; i < floats; ++i) {
+        noisy += (color[i] - truth[i]) * (color[i] - truth[i]);
+        denoised += (result[i] - truth[i]) * (result[i] - truth[i]);
+    }
+    EXPECT_LT(denoised, noisy / 16) << "noisy MSE " << noisy / floats << ", denoised " << denoised / floats;
+
+    Denoiser plain(DenoiseSettings{DeviceChoice::Cpu, Quality::High});
+    EXPECT_NE(plain.description().find("albedo and normal (not clean)"), std::string::npos) << plain.description();
+    EXPECT_NE(plain.denoise({width, height, color.data(), albedo.data(), normal.data()}), result);
+}
+
+// The denoised layer as the film encoder computes it (denoise_film.h) makes
+// the same checks as the EXR step.
+TEST(DenoisedPostLayer, RefusesMissingLayersAndValuesThatAreNotFinite)
+{
+    Denoiser denoiser(DenoiseSettings{DeviceChoice::Cpu, Quality::Fast});
+    const exr::PostLayerPlanes layer = denoised_post_layer(denoiser, "the rendered image");
+    ASSERT_EQ(layer.attributes.size(), 1u);
+    EXPECT_EQ(layer.attributes[0].first, kDenoisedAttribute);
+    EXPECT_EQ(layer.attributes[0].second, denoiser.description());
+    const int width = 4, height = 2;
+    std::vector<std::vector<float>> planes(kGuided.size(), std::vector<float>(width * height, 0.25f));
+    const auto image = [&](std::size_t channels) {
+        std::vector<exr::StoredImage::Channel> list;
+        for (std::size_t c = 0; c < channels; ++c) list.push_back({kGuided[c], planes[c], false});
+        return exr::StoredImage(width, height, list);
+    };
+    EXPECT_EQ(layer.compute(image(kGuided.size())).size(), static_cast<std::size_t>(width * height * 3));
+    try {
+        layer.compute(image(7));  // no normal
+        ADD_FAILURE() << "an image without normals was denoised";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("the rendered image: no normal layer (N.X, N.Y, N.Z)"), std::string::npos)
+            << e.what();
+    }
+    planes[1][1] = std::numeric_limits<float>::quiet_NaN();  // G at pixel (1, 0)
+    try {
+        layer.compute(image(kGuided.size()));
+        ADD_FAILURE() << "a beauty holding NaN was denoised";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("the rendered image: beauty pixel (1, 0) channel G is"), std::string::npos)
+            << e.what();
+    }
+}
+
 // An EXR of the given channels, every one `value` but R at pixel (1, 0).
 std::string exr_bytes(const std::vector<std::string>& channels, float r_at_1_0)
 {
@@ -118,8 +200,6 @@ std::string exr_bytes(const std::vector<std::string>& channels, float r_at_1_0)
     std::filesystem::remove(path);
     return bytes;
 }
-
-const std::vector<std::string> kGuided{"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z"};
 
 TEST(DenoiseExr, RefusesValuesThatAreNotFinite)
 {

@@ -64,6 +64,41 @@ TEST(RenderRequest, AWholeFrameIsFinishedWithAtLeastTheSamplesAskedAndContinuedW
     EXPECT_EQ(slice.reason, "holds the samples 8:8, not a whole frame's from sample 0");
 }
 
+// An adaptive render that ended on its rule (orb:adaptiveStop) is finished
+// short of its samples; one that did not is continued; other adaptive
+// settings are another render; a request that does not say (orb-frames)
+// does not compare them.
+TEST(RenderRequest, AnAdaptiveRenderThatStoppedOnItsRuleIsFinished) {
+    const auto adaptive_file = [](const std::string& name, std::optional<AdaptiveStop> stop) {
+        orb::Film film = synthetic_film(kWidth, kHeight, 40);
+        ExrMetadata m = synthetic_metadata();
+        m.noise_threshold = 0.05;
+        m.adaptive_stop = stop;
+        ExrWriteOptions options;
+        options.passes = {Pass::Beauty};
+        const std::string path = scratch_path(name);
+        write_film_exr(path, film, m, options);
+        return path;
+    };
+    const std::string stopped = adaptive_file("stopped.exr", AdaptiveStop::Noise);
+    EXPECT_EQ(read_film_exr(stopped).metadata.adaptive_stop, AdaptiveStop::Noise);
+    RenderRequest r = request_for_metadata(4096);
+    r.adaptive = RenderRequest::Adaptive{0.05, std::nullopt};
+    const OutputJudgement finished = judge_output(stopped, r);
+    EXPECT_EQ(finished.state, OutputState::Finished);
+    EXPECT_EQ(finished.held_spp, 40u);
+    const std::string short_of_it = adaptive_file("short.exr", std::nullopt);
+    EXPECT_EQ(judge_output(short_of_it, r).state, OutputState::Continuable);
+    r.adaptive->noise_threshold = 0.02;
+    EXPECT_EQ(judge_output(stopped, r).reason, "rendered with --noise-threshold 0.05, 0.02 asked");
+    r.adaptive = RenderRequest::Adaptive{};
+    EXPECT_EQ(judge_output(stopped, r).reason, "rendered with --noise-threshold 0.05, none asked");
+    r.adaptive = RenderRequest::Adaptive{0.05, 0.001};
+    EXPECT_EQ(judge_output(stopped, r).reason, "rendered with --target-error none, 0.001 asked");
+    r.adaptive.reset();
+    EXPECT_EQ(judge_output(stopped, r).state, OutputState::Finished);
+}
+
 TEST(RenderRequest, ASliceMustHoldExactlyItsSamples) {
     RenderRequest r = request_for_metadata(8);
     r.slice = true;

@@ -30,6 +30,9 @@ RenderConfig adaptive_config(int width, int height, std::uint64_t seed = 7, int 
 {
     RenderConfig config = small_config(width, height, seed, max_depth);
     config.adaptive = true;
+    // Decided on the device, as on GPUs (PoCL would decide on the host; the
+    // two decide the same, adaptive_decision_test.cpp).
+    config.development.device_decisions = true;
     return config;
 }
 
@@ -213,6 +216,7 @@ TEST(AdaptiveRender, TheTargetErrorsEstimateMatchesTheErrorAgainstAConvergedRend
     const Film reference = render(scene, config, {4096, 4096});
 
     config.seed = 11;  // other samples than the reference's
+    config.development.device_decisions = true;
     Renderer renderer(scene, config);
     renderer.clear();
     AdaptiveSettings settings;

@@ -39,6 +39,7 @@ struct Arguments {
     std::string output;
     std::string device = "default";
     std::string quality = "high";
+    bool prefilter_aux = orb::denoise::DenoiseSettings{}.prefilter_aux;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -58,6 +59,7 @@ int run(const Arguments& args) {
     try {
         settings.device = orb::denoise::parse_device_choice(args.device);
         settings.quality = orb::denoise::parse_quality(args.quality);
+        settings.prefilter_aux = args.prefilter_aux;
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
@@ -95,6 +97,10 @@ int main(int argc, char** argv) {
                 ->option_text("NAME");
             app.add_option("--quality", args.quality, "Filter quality: high (final frames), balanced, fast")
                 ->option_text("NAME");
+            app.add_flag("--prefilter-aux,!--no-prefilter-aux", args.prefilter_aux,
+                         std::string("Denoise the albedo and normal first, then the beauty guided by them as clean "
+                                     "images (OIDN's cleanAux); default ") +
+                             (args.prefilter_aux ? "on" : "off"));
             app.footer(kExamples);
         },
         [&] { return run(args); });

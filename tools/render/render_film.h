@@ -7,10 +7,11 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "frame_claim.h"
 #include "orb/cli/output_file.h"
-#include "orb/denoise/denoise_exr.h"
+#include "orb/denoise/denoise_film.h"
 #include "orb/exr/film_exr.h"
 #include "orb/render/adaptive_sampler.h"
 #include "orb/render/progressive.h"
@@ -40,7 +41,6 @@ struct FinalImage {
     // --denoise: adds the denoised layer to the encoded image (final images
     // only, never checkpoints).
     std::shared_ptr<denoise::Denoiser> denoiser = nullptr;
-    std::string denoised_bytes = {};  // the file encode(into) returns when denoised
 
     // Waits for the film, if it is still on its way.
     void wait_for_film() {
@@ -49,16 +49,20 @@ struct FinalImage {
     }
     std::string encode() {
         wait_for_film();
-        std::string bytes = exr::encode_film_exr(film, metadata, options);
-        return denoiser ? denoise::add_denoised_layer(bytes, "the rendered image", *denoiser) : bytes;
+        return exr::encode_film_exr(film, metadata, options, post_layers());
     }
-    // The file's bytes, valid until `into` or this image encodes again.
+    // The file's bytes, valid until `into` encodes again.
     std::string_view encode(exr::ExrEncoding& into) {
         wait_for_film();
-        exr::encode_film_exr(film, metadata, options, into);
-        if (!denoiser) return into.bytes();
-        denoised_bytes = denoise::add_denoised_layer(into.bytes(), "the rendered image", *denoiser);
-        return denoised_bytes;
+        exr::encode_film_exr(film, metadata, options, into, post_layers());
+        return into.bytes();
+    }
+
+private:
+    // The denoised layer is written by the one encode of the film.
+    std::vector<exr::PostLayerPlanes> post_layers() const {
+        if (!denoiser) return {};
+        return {denoise::denoised_post_layer(*denoiser, "the rendered image")};
     }
 };
 

@@ -131,18 +131,13 @@ void check_option_combinations(const RenderOptions& o) {
         const char* frame_only = o.fps ? "--fps" : o.same_seed ? "--same-seed" : nullptr;
         if (frame_only) throw UsageError(std::string(frame_only) + " needs --frame N or --frames SPEC");
     }
-    if (o.noise_threshold || o.target_error) {
-        const char* conflicting = o.benchmark        ? "--benchmark"
-                                  : renders_frames(o) ? "--frame/--frames"
-                                  : o.skip_existing   ? "--skip-existing"
-                                  : o.claim           ? "--claim"
-                                  : o.missing         ? "--missing"
-                                                      : nullptr;
-        if (conflicting)
-            throw UsageError(std::string("adaptive sampling (--noise-threshold, --target-error) renders one image "
-                                         "and takes no ") +
-                             conflicting);
-    }
+    // Each frame of --frames is an adaptive render of its own; one that ended
+    // on its rule is finished for --skip-existing, --claim and --missing
+    // (orb:adaptiveStop). A benchmark times passes over every pixel, whose
+    // work adaptive sampling would change from pass to pass.
+    if ((o.noise_threshold || o.target_error) && o.benchmark)
+        throw UsageError("adaptive sampling (--noise-threshold, --target-error) stops pixels and frames on their "
+                         "noise, and --benchmark times passes over every pixel: it takes no --benchmark");
     if (!o.resume.empty() && (o.skip_existing || o.claim))
         throw UsageError(std::string(o.claim ? "--claim" : "--skip-existing") + " and --resume exclude each other");
     if (o.missing) {

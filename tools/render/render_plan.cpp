@@ -257,7 +257,9 @@ bool posed_at(const RenderPlan& plan, long frame) { return plan.frame && plan.fr
 
 exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame) {
     exr::RenderRequest request = plan.settings.request(frame, plan.scene_time);
-    if (plan.denoise) request.passes = plan.passes;  // --passes with the denoiser's guides
+    // --passes with the denoiser's guides, or adaptive sampling's variance and counts.
+    if (plan.denoise || plan.adaptive.any()) request.passes = plan.passes;
+    request.adaptive = exr::RenderRequest::Adaptive{plan.adaptive.noise_threshold, plan.adaptive.target_error};
     request.scene = [&plan, frame] {
         if (frame && !posed_at(plan, *frame)) pose_frame(plan, *frame);
         return request::scene_identity(plan.scene, plan.scene_hash, plan.config.width, plan.config.height);

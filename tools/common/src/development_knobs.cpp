@@ -80,6 +80,8 @@ render::DevelopmentKnobs parse_development_knobs(const EnvironmentLookup& lookup
     if (auto size = value_of(lookup, "ORB_LOCAL_SIZE")) knobs.local_size = parse_local_size(*size);
     if (auto limit = value_of(lookup, "ORB_REFIT_COST_LIMIT")) knobs.refit_cost_limit = parse_refit_cost_limit(*limit);
     if (auto log = value_of(lookup, "ORB_SHOW_BUILD_LOG")) knobs.show_build_log = parse_switch("ORB_SHOW_BUILD_LOG", *log);
+    if (auto decisions = value_of(lookup, "ORB_DEVICE_DECISIONS"))
+        knobs.device_decisions = parse_switch("ORB_DEVICE_DECISIONS", *decisions);
     for (const char* moved : {"ORB_CAPTURE_PASS", "ORB_CAPTURE_SKIP"})
         if (value_of(lookup, moved))
             warnings.push_back(std::string(moved) +

@@ -13,6 +13,8 @@ struct EmbeddedKernel {
 
 // In program order: concatenating them gives the whole program.
 std::span<const EmbeddedKernel> embedded_kernels();
+// The same for adaptive sampling's decision program (kernels/adaptive.cl).
+std::span<const EmbeddedKernel> embedded_decision_kernels();
 
 // The text of one file, or an empty view if there is no such file.
 std::string_view find_embedded_kernel(std::string_view file_name);

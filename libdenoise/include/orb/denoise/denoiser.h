@@ -29,6 +29,11 @@ const char* quality_name(Quality quality);
 struct DenoiseSettings {
     DeviceChoice device = DeviceChoice::Default;
     Quality quality = Quality::High;
+    // Denoise the albedo and normal first, each with its own RT filter, then
+    // the beauty guided by them as clean images (OIDN's cleanAux): what OIDN
+    // recommends for noisy guides, at three filter runs instead of one
+    // (docs/design/denoising-prefiltered-guides.md has the measurements).
+    bool prefilter_aux = false;
 };
 
 // One image and its guides, each width * height * 3 floats, interleaved
@@ -58,7 +63,8 @@ public:
     std::vector<float> denoise(const DenoiseImages& images);
 
     // "Intel Open Image Denoise 2.5.1, RT filter, hdr, albedo and normal (not
-    // clean), quality high, CPU": what the EXR header records.
+    // clean), quality high, CPU" ("(prefiltered, clean)" with prefilter_aux):
+    // what the EXR header records.
     const std::string& description() const;
     const std::string& version() const;  // "2.5.1"
     const std::string& device_name() const;  // "CPU", "CUDA", ...

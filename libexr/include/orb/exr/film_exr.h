@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "orb/exr/camera_matrices.h"
 #include "orb/exr/passes.h"
 #include "orb/film/film.h"
+#include "orb/kernels/film_channels.h"
 
 namespace orb::exr {
 
@@ -29,6 +32,11 @@ struct FrameInfo {
     double fps = 0;   // orb:fps; the scene time is number / fps
     bool operator==(const FrameInfo&) const = default;
 };
+
+// What ended an adaptive render before its target samples per pixel.
+enum class AdaptiveStop { Noise, Error };
+const char* adaptive_stop_name(AdaptiveStop stop);  // "noise", "error"
+std::optional<AdaptiveStop> parse_adaptive_stop(const std::string& name);
 
 // What a render was made from; stored as orb:* header attributes.
 // The sample count and the sample indices are the film's own (orb:spp,
@@ -57,6 +65,11 @@ struct ExrMetadata {
     // the render stopped on, absent without it; what --resume continues with.
     std::optional<double> noise_threshold;  // orb:noiseThreshold
     std::optional<double> target_error;     // orb:targetError
+    // orb:adaptiveStop ("noise" or "error"): the render ended on its
+    // adaptive rule, every pixel below the noise threshold or the frame's
+    // estimate below the target error, before orb:targetSpp; it is
+    // finished (render_request.h). Absent: it did not (yet).
+    std::optional<AdaptiveStop> adaptive_stop;
 };
 
 // Only lossless compressions: a resumed or merged render rebuilds the
@@ -94,14 +107,55 @@ private:
     std::size_t size_ = 0;
 };
 
+// The channels of an image being encoded, as the file will store them: what
+// a reader of the file gets back. A post layer is computed from these.
+class StoredImage {
+public:
+    struct Channel {
+        std::string_view name;
+        std::span<const float> values;  // one per pixel, row-major, top row first
+        bool half = false;              // stored as HALF: values() rounds to it
+    };
+    StoredImage(int width, int height, std::vector<Channel> channels)
+        : width_(width), height_(height), channels_(std::move(channels)) {}
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // The channel `name`, or nullptr when the file has none.
+    const Channel* find(std::string_view name) const;
+    // Pixel `i` of `channel` as a reader of the file gets it back (rounded
+    // to HALF where the file holds HALF).
+    static float value(const Channel& channel, std::size_t i);
+
+private:
+    int width_ = 0;
+    int height_ = 0;
+    std::vector<Channel> channels_;
+};
+
+// A post layer (ORB_POST_LAYERS in film_channels.h, such as `denoised`)
+// written by the same encode as the film's layers, so a render that adds
+// one encodes its file once. Its channels are stored like the colour
+// layers (HALF under --half).
+struct PostLayerPlanes {
+    film::PostLayer layer = film::PostLayer::Denoised;
+    // The layer's values from the stored image: width * height * (the
+    // layer's channel count) floats, interleaved, rows from the top. What it
+    // throws, the encode throws.
+    std::function<std::vector<float>(const StoredImage&)> compute;
+    // String header attributes that say how the layer was made (orb:denoised).
+    std::vector<std::pair<std::string, std::string>> attributes;
+};
+
 // The film as the bytes of an EXR file, encoded in memory so that the caller
 // writes them safely (tools use orb::cli::OutputFile), into `into` (its
-// bytes() until the next call). Throws std::invalid_argument for an empty
-// film, std::runtime_error if OpenEXR fails.
+// bytes() until the next call), with the `post` layers beside the film's.
+// Throws std::invalid_argument for an empty film or a post layer of the
+// wrong size, std::runtime_error if OpenEXR fails.
 void encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
-                     ExrEncoding& into);
+                     ExrEncoding& into, std::span<const PostLayerPlanes> post = {});
 // The same into fresh memory, for a single image.
-std::string encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options);
+std::string encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
+                            std::span<const PostLayerPlanes> post = {});
 
 // Writes `path` directly, for tests and simple callers. Throws
 // std::runtime_error on I/O errors and std::invalid_argument for an empty film.

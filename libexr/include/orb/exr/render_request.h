@@ -46,6 +46,15 @@ struct RenderRequest {
     bool slice = false;
     std::uint64_t first_sample = 0;
     std::optional<std::uint64_t> spp;
+    // Adaptive sampling's settings asked for (none of either: a uniform
+    // render); absent: not compared (orb-frames does not know them). A file
+    // whose adaptive render ended on its rule (orb:adaptiveStop) before the
+    // samples asked for is finished.
+    struct Adaptive {
+        std::optional<double> noise_threshold;
+        std::optional<double> target_error;
+    };
+    std::optional<Adaptive> adaptive;
 };
 
 enum class OutputState {

@@ -11,13 +11,15 @@
 #include <vector>
 
 #include "orb/film/film.h"
+#include "orb/kernels/adaptive_decision.h"
 
 namespace orb::film {
 
 // relMSE's floor in the denominator (Rousselle et al. 2011): below it
 // an error counts absolutely, so dark pixels need no endless samples.
-// orb-diff (libimage's metrics) reads this one.
-inline constexpr double kRelMseEpsilon = 0.01;
+// orb-diff (libimage's metrics) reads this one; the device's decision
+// (kernels/adaptive.cl) the same definition.
+inline constexpr double kRelMseEpsilon = ORB_RELMSE_EPSILON;
 
 // The samples pixel `pixel` holds: its sample_count where the film has that
 // channel (adaptive sampling), else the film's samples_per_pixel.
@@ -37,6 +39,11 @@ std::vector<double> pixel_relmse(const Film& film);
 
 // The frame's: the mean of the pixels' (what orb-diff's relmse of this film
 // against a converged one is expected to be, up to the estimate's own noise).
+// Added in the order the device's decision adds them (kernels/adaptive.cl,
+// sum_pairwise and sum_decision), so that both give the same bits: pairwise
+// within each group of ORB_DECISION_GROUP pixels, the groups' sums in
+// ORB_DECISION_GROUP running sums (the k-th of every group from k on, in
+// turn), those pairwise.
 double frame_relmse(const std::vector<double>& pixel_errors);
 
 }  // namespace orb::film

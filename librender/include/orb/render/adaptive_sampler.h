@@ -57,20 +57,26 @@ public:
     // The frame's estimated relMSE at the last decision (none before one).
     std::optional<double> estimated_relmse() const { return estimated_relmse_; }
     std::size_t active_pixel_count() const;
-    // Decisions made, and the seconds they took (the film's read-back, the
-    // estimates, the list's upload): what adaptive sampling costs on top of
-    // the passes.
+    // Decisions made, and the seconds they took (on the device: its
+    // kernels and the totals' read-back; on the host: the film's read-back,
+    // the estimates, the list's upload): what adaptive sampling costs on top
+    // of the passes.
     int decisions() const { return decisions_; }
     double decision_seconds() const { return decision_seconds_; }
 
 private:
-    // Reads the film and decides among `candidates`.
-    void decide_among(const std::vector<std::uint32_t>& candidates);
+    // Decides among the renderer's active pixels: on the device where the
+    // renderer can (Renderer::decides_on_device), else on the host from the
+    // film read back, among `host_candidates` (the same pixels, the host's copy).
+    void decide_among(const std::vector<std::uint32_t>* host_candidates);
 
     Renderer& renderer_;
     AdaptiveSettings settings_;
-    Film film_;  // read back at each decision, its memory reused
-    std::vector<std::uint32_t> active_;  // with a noise threshold: the pixels still sampling
+    bool on_device_;  // the decisions run on the device, where the film and the list are
+    Film film_;  // read back at each decision on the host, its memory reused
+    // With a noise threshold and decisions on the host: the pixels still
+    // sampling, as the renderer's list holds them.
+    std::vector<std::uint32_t> active_;
     std::optional<StopReason> stop_;
     std::optional<double> estimated_relmse_;
     int decisions_ = 0;

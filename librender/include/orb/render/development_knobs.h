@@ -51,6 +51,12 @@ struct DevelopmentKnobs {
     // counts with -cl-nv-verbose) on stderr for every program built from
     // source; a program loaded from the binary cache has none.
     bool show_build_log = false;
+    // ORB_DEVICE_DECISIONS: where adaptive sampling decides. 1: on the
+    // device wherever it can (a CPU's OpenCL too); 0: on the host, from the
+    // film read back (libfilm's reference). Unset: on the device except on
+    // CPU devices, whose film is in the host's memory already and whose
+    // cores run the host's decision faster (Renderer::decides_on_device).
+    std::optional<bool> device_decisions;
     // Not from the environment: development code called around each render
     // pass (dev/pass_capture). Null: none.
     std::shared_ptr<PassObserver> pass_observer;

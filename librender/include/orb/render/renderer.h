@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -160,6 +161,24 @@ public:
     // std::invalid_argument for indices out of order or outside the image.
     void set_active_pixels(const std::vector<std::uint32_t>& pixels);
     std::size_t active_pixel_count() const;
+    // The list as the (first) device holds it, read back.
+    std::vector<std::uint32_t> active_pixels() const;
+
+    // Whether adaptive sampling's decisions run on the device, where the
+    // film is (decide_on_device): with one device that has double
+    // precision and is not a CPU, or as the development knob
+    // device_decisions says.
+    bool decides_on_device() const;
+    // The decision on the device (docs/design/adaptive-sampling.md), the
+    // same as libfilm's on the film read back: the frame's estimated relMSE
+    // and, with a noise threshold (config().adaptive), the active pixels
+    // narrowed on the device to those that keep sampling, of which
+    // `still_sampling` are left. None where !decides_on_device().
+    struct Decision {
+        double estimated_relmse = 0;
+        std::size_t still_sampling = 0;
+    };
+    std::optional<Decision> decide_on_device(std::optional<double> noise_threshold);
     std::uint64_t next_sample() const;
     const SampleRanges& sample_ranges() const;
     // The samples each device has rendered into the film, in devices() order
