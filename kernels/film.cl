@@ -45,15 +45,26 @@ typedef struct {
     ORB_FILM_ZERO_IF_##accumulate(name, components)
 LANE_FN void film_sums_clear(FilmSums* sums) { ORB_FILM_CHANNELS(ORB_FILM_ZERO) }
 
-// Inside render_pass, whose arguments film_<name> are the buffers: adds lane
-// `lane` of the FilmSums `sums` to pixel `pixel`, or stores the FilmCentre
-// `centre` there (local variables of those names), one statement per
-// channel the program builds (ORB_FILM_BUILT); what a channel left out
-// would add is dead code.
+// Inside render_pass, whose arguments film_<name> are the buffers:
+// ORB_FILM_COPY_SUMS copies each channel of the FilmSums `sums` to a
+// variable of its own, film_sums_<name>; ORB_FILM_ADD_SUMS then adds lane
+// `lane` of those to pixel `pixel`, and ORB_FILM_SET_CENTRE stores the
+// FilmCentre `centre` there (local variables of those names), one statement
+// per channel the program builds (ORB_FILM_BUILT). A lane is read through
+// its variable's memory (lane_f), so each channel has a variable of its
+// own: had they been read from one copy of the whole struct, the compiler
+// could not tell which fields are read, and every channel, built or not,
+// stayed live through the sample loop (on PoCL at 16 lanes that doubled
+// the spilled registers and cost a tenth of the samples/s of open scenes).
+#define ORB_FILM_COPY_IF_Sum(name, components) const ORB_FILM_LANES_##components film_sums_##name = sums.name;
+#define ORB_FILM_COPY_IF_CentreRay(name, components)
+#define ORB_FILM_COPY(name, components, clear, accumulate, merge, layer, stored_as, paired, names) \
+    ORB_FILM_COPY_IF_##accumulate(name, components)
+#define ORB_FILM_COPY_SUMS ORB_FILM_CHANNELS(ORB_FILM_COPY)
 #define ORB_FILM_LANE_1(value) lane_f(value, lane)
 #define ORB_FILM_LANE_3(value) lane_v3(value, lane)
 #define ORB_FILM_ADD_IF_Sum(name, components) \
-    if (ORB_FILM_BUILT(name)) film_add##components(film_##name, pixel, ORB_FILM_LANE_##components(sums.name));
+    if (ORB_FILM_BUILT(name)) film_add##components(film_##name, pixel, ORB_FILM_LANE_##components(film_sums_##name));
 #define ORB_FILM_ADD_IF_CentreRay(name, components)
 #define ORB_FILM_ADD(name, components, clear, accumulate, merge, layer, stored_as, paired, names) ORB_FILM_ADD_IF_##accumulate(name, components)
 #define ORB_FILM_ADD_SUMS ORB_FILM_CHANNELS(ORB_FILM_ADD)

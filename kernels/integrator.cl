@@ -485,20 +485,17 @@ __kernel void render_pass(ORB_RENDER_PASS_ARGUMENTS(ORB_KERNEL_FILM_ARG, ORB_KER
             active = mask_or(active, next);
         }
     }
-    // Read lane by lane from a copy, so that only the copy, not the sums of
-    // the loop above, has its address taken (which would keep them in memory).
-    const FilmSums pass_sums = sums;
+    // Each channel's sums to a variable of its own, read lane by lane (film.cl).
+    ORB_FILM_COPY_SUMS
 #if ORB_ACTIVE_PIXELS
     ORB_FOR_EACH_LANE(lane, listed)
     {
         const uint pixel = (uint)lane_i(pixels, lane);
-        const FilmSums sums = pass_sums;
         ORB_FILM_ADD_SUMS
     }
 #else
     for (int lane = 0; lane < lanes_in_image; ++lane) {
         const uint pixel = (uint)y * (uint)width + (uint)(x0 + lane);
-        const FilmSums sums = pass_sums;
         ORB_FILM_ADD_SUMS
     }
 #endif
