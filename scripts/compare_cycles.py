@@ -15,7 +15,8 @@ box pixel filter of one pixel, black world, and per sphere
   256 x 128 segments;
 - the six walls, spheres of radius 10 000, as planes tangent to them where
   they face the box (Cycles' point intersection loses them at that radius;
-  over the box the sphere lies within 0.13 units of its tangent plane);
+  over the visible box the sphere lies within about 0.5 units of its
+  tangent plane);
 - the lamp as a point light of the lamp's radius (a sphere light, seen by
   the camera, soft falloff off) whose power gives the lamp's radiance:
   Cycles' sphere light of power P and radius r has radiance P / (4 pi^2 r^2)
