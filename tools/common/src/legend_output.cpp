@@ -1,43 +1,14 @@
 #include "orb/cli/legend_output.h"
 
-#include <dlfcn.h>
-
-#include <filesystem>
-#include <mutex>
-
 #include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
+#include "orb/cli/runtime_module.h"
 #include "orb/scene/error.h"
 
 namespace orb::cli {
 namespace {
 
 using EncodeEntry = bool (*)(const ColorLegend&, bool, std::string&, std::string&);
-
-struct LoadedModule {
-    EncodeEntry encode = nullptr;
-    std::string path;
-    std::string why_not;  // set when encode is null
-};
-
-// Loaded once per process and never unloaded (OpenImageIO's state may outlive a call).
-const LoadedModule& legend_module() {
-    static LoadedModule loaded;
-    static std::once_flag once;
-    std::call_once(once, [] {
-        const std::filesystem::path bin = std::filesystem::path(executable_path()).parent_path();
-        loaded.path = (bin.parent_path() / "lib" / "orb" / "orb_legend.so").string();
-        void* handle = dlopen(loaded.path.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!handle) {
-            const char* error = dlerror();
-            loaded.why_not = error ? error : "dlopen failed";
-            return;
-        }
-        loaded.encode = reinterpret_cast<EncodeEntry>(dlsym(handle, "orb_encode_legend_v1"));
-        if (!loaded.encode) loaded.why_not = loaded.path + ": no entry point orb_encode_legend_v1";
-    });
-    return loaded;
-}
 
 }  // namespace
 
@@ -50,12 +21,13 @@ std::optional<LegendOutput> LegendOutput::prepare(const SphereStyleArguments& ar
 
 void LegendOutput::write(const SphereStyleResult& styled, const std::string& source, bool frames_differ) {
     if (!styled.legend) throw InputError(source + ": --legend: nothing was coloured by --color-by");
-    const LoadedModule& module = legend_module();
-    if (!module.encode)
+    const RuntimeModule& module = runtime_module("orb_legend.so", "orb_encode_legend_v1");
+    if (!module.entry)
         throw InputError(file_.display_name() + ": --legend: the legend writer (OpenImageIO) did not load (" +
                          module.why_not + ")");
+    const auto encode = reinterpret_cast<EncodeEntry>(module.entry);
     std::string png, error;
-    if (!module.encode(*styled.legend, horizontal_, png, error))
+    if (!encode(*styled.legend, horizontal_, png, error))
         throw InputError(file_.display_name() + ": --legend: " + error);
     try {
         file_.write(png);
