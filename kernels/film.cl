@@ -51,11 +51,12 @@ LANE_FN void film_sums_clear(FilmSums* sums) { ORB_FILM_CHANNELS(ORB_FILM_ZERO) 
 // `lane` of those to pixel `pixel`, and ORB_FILM_SET_CENTRE stores the
 // FilmCentre `centre` there (local variables of those names), one statement
 // per channel the program builds (ORB_FILM_BUILT). A lane is read through
-// its variable's memory (lane_f), so each channel has a variable of its
-// own: had they been read from one copy of the whole struct, the compiler
-// could not tell which fields are read, and every channel, built or not,
-// stayed live through the sample loop (on PoCL at 16 lanes that doubled
-// the spilled registers and cost a tenth of the samples/s of open scenes).
+// its variable's memory (lane_f), so the copies, not the sums of the sample
+// loop, have their address taken, and each channel has a copy of its own:
+// read from one copy of the whole struct, the compiler could not tell which
+// fields are read, and every channel, built or not, stayed live through the
+// sample loop (on PoCL at 16 lanes, a fifth more spill stores;
+// docs/design/one-path-tracer-over-lanes.md).
 #define ORB_FILM_COPY_IF_Sum(name, components) const ORB_FILM_LANES_##components film_sums_##name = sums.name;
 #define ORB_FILM_COPY_IF_CentreRay(name, components)
 #define ORB_FILM_COPY(name, components, clear, accumulate, merge, layer, stored_as, paired, names) \
