@@ -111,9 +111,10 @@ void AdaptiveSampler::decide_among(const std::vector<std::uint32_t>* host_candid
         const std::vector<double> errors = film::pixel_relmse(film_);
         estimated_relmse_ = film::frame_relmse(errors);
         if (settings_.noise_threshold) {
-            const std::vector<std::uint32_t> candidates = host_candidates ? *host_candidates : std::vector<std::uint32_t>{};
-            active_ =
-                film::pixels_still_sampling(errors, film_.width, film_.height, *settings_.noise_threshold, candidates);
+            // Read in place: active_ is assigned only once the new list is made.
+            static const std::vector<std::uint32_t> none;
+            active_ = film::pixels_still_sampling(errors, film_.width, film_.height, *settings_.noise_threshold,
+                                                  host_candidates ? *host_candidates : none);
             renderer_.set_active_pixels(active_);
             if (active_.empty()) stop_ = StopReason::Converged;
         }

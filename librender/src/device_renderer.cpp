@@ -183,8 +183,7 @@ void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraPar
         upload_scene(session_->context(), session_->queue(), scene.tables, scene_buffers_);
         scene_bytes_ = scene_table_bytes(scene.tables);
         bind_buffers(kernel_, film_, scene_buffers_, 1);
-        if (config_.adaptive) pad_active_pixels();
-        kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
+        bind_active_pixels();
     } catch (const cl::Error& error) {
         fail(error, "uploading the scene");
     }
@@ -281,10 +280,7 @@ void DeviceRenderer::set_active_pixels(const std::vector<std::uint32_t>& pixels)
                                                  pixels.data());
         active_count_ = pixels.size();
         every_pixel_active_ = pixels.size() == image;  // ascending and in the image: 0, 1, ... then
-        if (program_) {
-            pad_active_pixels();
-            kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
-        }
+        if (program_) bind_active_pixels();
     } catch (const cl::Error& error) {
         fail(error, "uploading the list of active pixels");
     }
@@ -300,10 +296,7 @@ void DeviceRenderer::set_every_pixel_active(bool on_device)
             decision_->list_every_pixel(session_->queue(), active_pixels_);
             active_count_ = pixels;
             every_pixel_active_ = true;
-            if (program_) {
-                pad_active_pixels();
-                kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
-            }
+            if (program_) bind_active_pixels();
         } catch (const cl::Error& error) {
             fail(error, "listing every pixel");
         }
@@ -327,10 +320,18 @@ std::vector<std::uint32_t> DeviceRenderer::active_pixels()
     return pixels;
 }
 
-// The list padded with ORB_NO_PIXEL to whole work-groups of ORB_LANES
-// entries per work-item, and the launch over it. At least one work-group,
-// which prepare_kernel launches. The padding is filled on the device: the
-// list may have been made there (decide()).
+// Binds the list of active pixels to the kernel; with adaptive sampling
+// first pads it with ORB_NO_PIXEL to whole work-groups of ORB_LANES entries
+// per work-item and sets the launch over it (at least one work-group, which
+// prepare_kernel launches). Padding may reallocate the list, so the two go
+// together. The padding is filled on the device: the list may have been
+// made there (decide()).
+void DeviceRenderer::bind_active_pixels()
+{
+    if (config_.adaptive) pad_active_pixels();
+    kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
+}
+
 void DeviceRenderer::pad_active_pixels()
 {
     const std::size_t lanes = simd_lanes_ > 0 ? static_cast<std::size_t>(simd_lanes_) : 1;
@@ -384,10 +385,7 @@ std::optional<DecisionOutput> DeviceRenderer::decide(std::uint64_t samples_per_p
             std::swap(active_pixels_, next_active_pixels_);
             every_pixel_active_ = every_pixel_active_ && output.still_sampling == active_count_;
             active_count_ = output.still_sampling;
-            if (program_) {
-                pad_active_pixels();
-                kernel_.setArg(static_cast<cl_uint>(PassArg::count), active_pixels_);
-            }
+            if (program_) bind_active_pixels();
         }
         return output;
     } catch (const cl::Error& error) {

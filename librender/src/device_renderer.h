@@ -107,6 +107,7 @@ public:
 private:
     std::string build_options(const SceneLayout& scene) const;
     void choose_work_sizes();
+    void bind_active_pixels();
     void pad_active_pixels();
     void prepare_kernel();
     [[noreturn]] void fail(const cl::Error& error, const std::string& what) const;
