@@ -36,7 +36,7 @@ LANE_FN lfloat caster_cone_pdf(SCENE_MEM const CasterRecord* c, lv3 p, lv3 wi)
     const float radius2 = radius * radius;
     const lfloat along = lv3_dot(wi, pc);
     const lmask inside = mask_and(mask_and(distance2 > radius2, along > 0.0f), along * along >= distance2 - radius2);
-    if (!lanes_any(inside)) return (lfloat)(0.0f);
+    if (!lanes_step(inside)) return (lfloat)(0.0f);
     return lselect((lfloat)(0.0f), 1.0f / (2.0f * ORB_PI * cone_one_minus_cos(distance2, (lfloat)(radius))), inside);
 }
 
@@ -51,7 +51,7 @@ LANE_FN lfloat continuation_pdf(const SceneView* scene, lv3 p, lfloat bsdf_pdf, 
     return (1.0f - ORB_CASTER_SHARE) * bsdf_pdf + (ORB_CASTER_SHARE / (float)count) * cones;
 }
 
-// Caster k of each lane in `lanes`.
+// Caster k of each lane in `lanes` (what the other lanes get is unspecified).
 LANE_FN void load_caster(const SceneView* scene, lint k, lmask lanes, lv3* centre, lfloat* radius)
 {
 #if ORB_LANES == 1
@@ -71,7 +71,7 @@ LANE_FN void load_caster(const SceneView* scene, lint k, lmask lanes, lv3* centr
         return;
     }
     for (int c = 0; c < scene->caster_count; ++c) {
-        const lmask m = mask_and(lanes, k == c);
+        const lmask m = k == c;
         if (!lanes_any(m)) continue;
         const float4 cr = scene->casters[c].centre_radius;
         *centre = lv3_select(*centre, lv3_splat(cr.xyz), m);
@@ -98,7 +98,7 @@ LANE_FN BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, lv
     lv3 f_cos = lv3_zero();            // f |cos| of the direction, whichever strategy drew it
     lfloat bsdf_pdf = (lfloat)(0.0f);  // the BSDF's own density of it
     lmask delta = mask_of(false);
-    if (lanes_any(own)) {
+    if (lanes_step(own)) {
         lfloat own_choice = *choice;
         s = bsdf_sample(b, wo, n, outside, u, v, &own_choice);
         *choice = lselect(*choice, own_choice, own);
@@ -110,7 +110,7 @@ LANE_FN BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, lv
         f_cos = lv3_scale(s.weight, s.pdf);
     }
     lmask lost = mask_of(false);
-    if (lanes_any(aim)) {
+    if (lanes_step(aim)) {
         const lfloat scaled = *choice * (float)count;
         const lint k = min(to_lint(scaled), (lint)(count - 1));
         *choice = lselect(*choice, fmin(scaled - to_lfloat(k), (lfloat)(0x1.fffffep-1f)), aim);
@@ -141,7 +141,7 @@ LANE_FN BsdfSample sample_continuation(const SceneView* scene, const Bsdf* b, lv
     // lane without a direction (lost, or of density 0) carries nothing: its
     // path ends on the zero weight, whatever the rest of its sample says.
     const lmask mixed = mask_not(delta);
-    if (lanes_any(mixed)) {
+    if (lanes_step(mixed)) {
         const lfloat pdf = continuation_pdf(scene, p, bsdf_pdf, s.wi);
         const lmask valid = mask_and_not(pdf > 0.0f, lost);
         s.pdf = lselect(s.pdf, lselect((lfloat)(0.0f), pdf, valid), mixed);

@@ -86,7 +86,8 @@ LANE_FN void begin_camera_paths(const CameraParams* cam, lint x, PixelRow y, int
     path_sample_clear(out, lanes);
 }
 
-// Entry `slot` of the lights table for each lane in `lanes`.
+// Entry `slot` of the lights table for each lane in `lanes` (what the other
+// lanes get is unspecified).
 LANE_FN void load_light(const SceneView* scene, lint slot, lmask lanes, lint* sphere, lfloat* probability,
                         lfloat* alias_threshold, lint* alias)
 {
@@ -111,7 +112,7 @@ LANE_FN void load_light(const SceneView* scene, lint slot, lmask lanes, lint* sp
         return;
     }
     for (int k = 0; k < scene->light_count; ++k) {
-        const lmask m = mask_and(lanes, slot == k);
+        const lmask m = slot == k;
         if (!lanes_any(m)) continue;
         SCENE_MEM const LightRecord* entry = &scene->lights[k];
         *sphere = lselect(*sphere, (lint)(entry->sphere), m);
@@ -304,7 +305,7 @@ LANE_FN lmask extend_paths(const SceneView* scene, PathState* path, PathSample* 
     // inside glass beta carries (1/1.5)^2, which is no loss of energy, and
     // paths there would otherwise die 2.25 times too often.
     const lmask roulette_lanes = mask_and(alive, path->depth + 1 >= RR_START_EVENT);
-    if (lanes_any(roulette_lanes)) {
+    if (lanes_step(roulette_lanes)) {
         const lfloat q = fmin((lfloat)(1.0f), beta_max / (eta2 * RR_THRESHOLD));
         alive = mask_and(alive, mask_or(mask_not(roulette_lanes), roulette < q));
         beta = lv3_select(beta, lv3_scale(beta, 1.0f / q), roulette_lanes);

@@ -216,6 +216,16 @@ ORB_DEFINE_LANES_GATHER(__constant, lanes_gather_)
 
 // Both widths.
 
+// Whether to run a cheap step for the lanes in m: at width 1 the path's
+// own branch; at width > 1 always, the step masked. At 16 lanes some lane
+// almost always needs such a step, and the branch (the lanes' OR, a jump
+// the lanes' data decide) cost more than the step: on PoCL, running the
+// continuation's strategies, the light's two direction samplers, the caster
+// cone test and the roulette so, with the unmasked table selects of
+// scene.cl, gave caustic.scn 3-4% more samples/s
+// (docs/design/one-path-tracer-over-lanes.md).
+#define lanes_step(m) (ORB_LANES > 1 || lanes_any(m))
+
 // The float3 operations under the names of lv3's (f3_ for lv3_), for text
 // written once over either, such as camera_ray (camera.cl): the
 // centre-ray channels cast one scalar ray per pixel at every width.

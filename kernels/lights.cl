@@ -32,9 +32,9 @@ LANE_FN lv3 sample_light_direction(lv3 p, lint self, lint light_id, lv3 centre, 
     const lfloat one_minus_cos_max = cone_one_minus_cos(distance2, radius);
     *pdf = lselect(1.0f / (2.0f * ORB_PI * one_minus_cos_max), (lfloat)(ORB_INV_4PI), surrounds);
     lv3 wi = lv3_zero();
-    if (lanes_any(surrounds)) wi = sample_uniform_sphere(u, v);
+    if (lanes_step(surrounds)) wi = sample_uniform_sphere(u, v);
     const lmask cone = mask_not(surrounds);
-    if (lanes_any(cone))
+    if (lanes_step(cone))
         wi = lv3_select(wi, sample_uniform_cone(lv3_scale(pc, rsqrt(distance2)), one_minus_cos_max, u, v), cone);
     return wi;
 }
