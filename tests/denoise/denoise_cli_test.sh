@@ -101,10 +101,16 @@ oiiotool --info -v half-denoised.exr | grep -q 'denoised.R (half)\|channel forma
 
 # orb-render --denoise: the guides are added to the passes, the layer is
 # written, checkpoints aside.
-"$bin/orb-render" "$scene" --width 32 --height 24 --spp 2 --denoise -q -o rendered.exr || problem "orb-render --denoise failed"
+"$bin/orb-render" "$scene" --width 32 --height 24 --spp 2 --denoise -q -o rendered.exr --stats-json stats.json ||
+    problem "orb-render --denoise failed"
 info=$(oiiotool --info -v rendered.exr)
 grep -q 'orb:passes: "beauty,albedo,normal"' <<<"$info" || problem "--denoise did not add albedo,normal: $info"
 grep -q 'orb:denoised:' <<<"$info" || problem "orb-render --denoise wrote no denoised layer"
+# --stats-json reports the denoiser's time (positive), and only with --denoise.
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))["denoise_seconds"]; sys.exit(0 if d > 0 else 1)' stats.json ||
+    problem "--stats-json has no positive denoise_seconds: $(cat stats.json)"
+"$bin/orb-render" "$scene" --width 32 --height 24 --spp 2 -q -o plain-stats.exr --stats-json plain-stats.json &&
+    ! grep -q denoise_seconds plain-stats.json || problem "--stats-json without --denoise has denoise_seconds"
 
 # orb-render --denoise writes the layer in its one encode: the same file as
 # rendering the guides and running orb-denoise on it (every layer, the
@@ -132,10 +138,12 @@ for variant in "zip" "piz --compression piz" "half --half"; do
         problem "rendering $name failed"
     same_as_orb_denoise "--denoise ($name)" "one-$name.exr" "one-$name-plain.exr"
 done
-"$bin/orb-render" "$scene" "${small[@]}" --frames 1-3 --orbit 360 --denoise -q -o "frame.%d.exr" &&
+"$bin/orb-render" "$scene" "${small[@]}" --frames 1-3 --orbit 360 --denoise -q -o "frame.%d.exr" --stats-json frames.json &&
     "$bin/orb-render" "$scene" "${small[@]}" --frames 1-3 --orbit 360 --passes beauty,albedo,normal -q -o "plain.%d.exr" ||
     problem "rendering --frames failed"
 for frame in 1 2 3; do same_as_orb_denoise "--frames, frame $frame" "frame.$frame.exr" "plain.$frame.exr"; done
+python3 -c 'import json, sys; f = json.load(open(sys.argv[1]))["frames"]; sys.exit(0 if len(f) == 3 and all(x["denoise_seconds"] > 0 for x in f) else 1)' frames.json ||
+    problem "--frames --stats-json lacks a frame's denoise_seconds: $(cat frames.json)"
 # orb-merge --denoise (orb-farm's collect job) likewise: the merge denoised in its one encode.
 for k in 0 1; do
     "$bin/orb-render" "$scene" --width 40 --height 30 --seed 5 --sample-range $((3 * k)):3 --passes beauty,albedo,normal -q -o "slice$k.exr" ||

@@ -109,6 +109,7 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     if (renderer.samples_per_pixel() == 0) return outcome;
     outcome.image = writer.image(final_state.elapsed_seconds, std::move(reuse), read_later);
     outcome.image.denoiser = plan.denoiser;
+    if (plan.denoiser) outcome.image.denoise_seconds = std::make_shared<double>(0.0);
     // Ended on its adaptive rule: finished, though short of orb:targetSpp (render_request.h).
     if (outcome.reason == render::StopReason::Converged) outcome.image.metadata.adaptive_stop = exr::AdaptiveStop::Noise;
     if (outcome.reason == render::StopReason::ReachedError) outcome.image.metadata.adaptive_stop = exr::AdaptiveStop::Error;

@@ -3,6 +3,7 @@
 // and by every frame of an animation.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,8 +40,11 @@ struct FinalImage {
     exr::ExrWriteOptions options;
     std::optional<render::PendingFilm> arriving;  // set while the film is on its way
     // --denoise: adds the denoised layer to the encoded image (final images
-    // only, never checkpoints).
+    // only, never checkpoints), and adds the denoiser's time to
+    // *denoise_seconds (shared, so that a frame's stats can read it once its
+    // background write is done).
     std::shared_ptr<denoise::Denoiser> denoiser = nullptr;
+    std::shared_ptr<double> denoise_seconds = nullptr;
 
     // Waits for the film, if it is still on its way.
     void wait_for_film() {
@@ -62,7 +66,15 @@ private:
     // The denoised layer is written by the one encode of the film.
     std::vector<exr::PostLayerPlanes> post_layers() const {
         if (!denoiser) return {};
-        return {denoise::denoised_post_layer(*denoiser, "the rendered image")};
+        exr::PostLayerPlanes layer = denoise::denoised_post_layer(*denoiser, "the rendered image");
+        if (denoise_seconds)
+            layer.compute = [compute = std::move(layer.compute), seconds = denoise_seconds](const exr::StoredImage& image) {
+                const auto start = std::chrono::steady_clock::now();
+                std::vector<float> planes = compute(image);
+                *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                return planes;
+            };
+        return {std::move(layer)};
     }
 };
 

@@ -123,6 +123,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
     std::optional<render::Renderer> renderer;
     BackgroundWriter writer;  // after the renderer: destroyed first, so a pending write ends before it
     std::vector<RunStats> rendered;
+    std::vector<std::shared_ptr<double>> denoise_seconds;  // each rendered frame's, known once its write is done
     std::vector<long> skipped;
     int claimed_elsewhere = 0, continued = 0;
     PosePrefetch prefetch;
@@ -172,6 +173,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
             return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
         }
         rendered.push_back(outcome.stats);
+        denoise_seconds.push_back(outcome.image.denoise_seconds);
         const std::string summary = film_summary(outcome, *renderer, image);
         // Written while the next frame renders; a failed write ends the run at the next frame.
         writer.submit({std::move(outcome.image), std::move(image), std::move(claim)});
@@ -183,6 +185,8 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
                   summary);
     }
     writer.finish();
+    for (std::size_t i = 0; i < rendered.size(); ++i)
+        if (denoise_seconds[i]) rendered[i].denoise_seconds = *denoise_seconds[i];
 
     if (outputs.stats)
         outputs.stats->write(plan.frames.size() > 1 || rendered.empty() ? frames_stats_json(rendered, skipped)
