@@ -3,7 +3,6 @@
 // and by every frame of an animation.
 #pragma once
 
-#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,9 +39,9 @@ struct FinalImage {
     exr::ExrWriteOptions options;
     std::optional<render::PendingFilm> arriving;  // set while the film is on its way
     // --denoise: adds the denoised layer to the encoded image (final images
-    // only, never checkpoints), and adds the denoiser's time to
-    // *denoise_seconds (shared, so that a frame's stats can read it once its
-    // background write is done).
+    // only, never checkpoints), and sets *denoise_seconds to the filter's
+    // set-up and run time (shared, so that a frame's stats can read it once
+    // its background write is done).
     std::shared_ptr<denoise::Denoiser> denoiser = nullptr;
     std::shared_ptr<double> denoise_seconds = nullptr;
 
@@ -68,10 +67,12 @@ private:
         if (!denoiser) return {};
         exr::PostLayerPlanes layer = denoise::denoised_post_layer(*denoiser, "the rendered image");
         if (denoise_seconds)
-            layer.compute = [compute = std::move(layer.compute), seconds = denoise_seconds](const exr::StoredImage& image) {
-                const auto start = std::chrono::steady_clock::now();
+            layer.compute = [compute = std::move(layer.compute), denoiser = denoiser,
+                             seconds = denoise_seconds](const exr::StoredImage& image) {
                 std::vector<float> planes = compute(image);
-                *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                // The denoiser's own figures, as orb-denoise reports them, read
+                // before another frame's filter replaces them.
+                *seconds = denoiser->last_setup_seconds() + denoiser->last_filter_seconds();
                 return planes;
             };
         return {std::move(layer)};
