@@ -12,14 +12,19 @@ packages=(
   libtinygltf-dev libstb-dev nlohmann-json3-dev libcli11-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libopenexr-dev libdeflate-dev libopenimageio-dev libopencolorio-dev
+  # OpenImageIO's CMake package (libopenimageio-dev) names its programs as
+  # imported targets and stops the configure when /usr/bin/iconvert and the
+  # others are missing: they are in this package.
+  openimageio-tools
   # PDB and mmCIF (header-only; pegtl is its CIF parser's)
   gemmi-dev tao-pegtl-dev
-  # GoogleTest: the default build configures the test suite too
-  libgtest-dev
 )
 test_packages=(
+  # GoogleTest and GoogleMock (Debian 12's libgtest-dev has no GoogleMock):
+  # only the test build (scripts/test.sh, -DORB_BUILD_TESTS=ON) needs them
+  libgtest-dev libgmock-dev
   # schema validation, reference image tools
-  python3-jsonschema openimageio-tools opencolorio-tools
+  python3-jsonschema opencolorio-tools
   # orb-farm on a one-node Slurm cluster started in a temporary folder
   slurm-wlm munge
   # the tutorial's video step (docs.commands runs every block of the docs)

@@ -12,7 +12,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${ORB_SANITIZE_BUILD_DIR:-$root/build-asan}
 jobs=${ORB_JOBS:-$(nproc)}
 
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DORB_SANITIZE=ON >/dev/null
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DORB_SANITIZE=ON -DORB_BUILD_TESTS=ON >/dev/null
 if [[ -n "${ORB_SANITIZE_TARGETS:-}" ]]; then
   # shellcheck disable=SC2086 # a list of target names
   cmake --build "$build" -j "$jobs" --target ${ORB_SANITIZE_TARGETS}

@@ -307,7 +307,7 @@ TEST(FilmExrRead, HeaderOnlyFragmentIsAClearInputError) {
 // kind stores the same values, for sizes whose last block is short (ZIP's 16
 // rows do not divide 37), one-pixel-wide images and HALF storage.
 TEST(FilmExr, EveryCompressionStoresTheSameValues) {
-    for (const auto [width, height] : {std::pair{97, 37}, std::pair{1, 19}, std::pair{300, 1}}) {
+    for (const auto& [width, height] : {std::pair{97, 37}, std::pair{1, 19}, std::pair{300, 1}}) {
         for (const bool half : {false, true}) {
             const orb::Film film = synthetic_film(width, height, 5, 7);
             ExrWriteOptions options;

@@ -88,10 +88,11 @@ TEST_F(RenderUnderAnEnvironmentMap, TransparentKeepsTheBallAloneAndBackgroundFil
     const Image over = tonemap("--background 0.25,0.5,0.125 --view Raw --bits 16", "b.png");
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 48; ++x) {
-            const float coverage = render.at(x, y, a) ;
+            const float coverage = render.at(x, y, a);
             ASSERT_NEAR(alone.at(x, y, 3), coverage, 0.5 / 65535 + 1e-7);
-            if (coverage == 1.0f)  // the ball covers the pixel: the same colour either way
+            if (coverage == 1.0f) {  // the ball covers the pixel: the same colour either way
                 for (int c = 0; c < 3; ++c) ASSERT_NEAR(alone.at(x, y, c), opaque.at(x, y, c), 1.0 / 65535);
+            }
             if (coverage == 0.0f) {  // nothing covers it: exactly the background colour
                 ASSERT_NEAR(over.at(x, y, 0), 0.25, 0.5 / 65535 + 1e-7);
                 ASSERT_NEAR(over.at(x, y, 1), 0.5, 0.5 / 65535 + 1e-7);
@@ -142,9 +143,10 @@ TEST(RenderWithoutEnvironment, TheBeautyLayerAloneIsPremultipliedAndMakesATransp
                 const double expected = std::min(1.0, double(render.at(x, y, c)) + (1.0 - coverage) * background[c]);
                 ASSERT_NEAR(over.at(x, y, c), expected, 0.5 / 65535 + 1e-6) << x << "," << y << " channel " << c;
                 // Straight colour where covered: the ball's radiance, edges included.
-                if (coverage > 0.0f)
+                if (coverage > 0.0f) {
                     ASSERT_NEAR(alone.at(x, y, c), std::min(1.0, double(render.at(x, y, c)) / coverage),
                                 0.5 / 65535 + 1e-5) << x << "," << y;
+                }
             }
             edges += coverage > 0.0f && coverage < 1.0f;
         }

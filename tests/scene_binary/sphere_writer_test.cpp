@@ -16,7 +16,7 @@ using ordered_json = nlohmann::ordered_json;
 
 // The document as the generic writer built it before the direct sphere writer.
 std::string generic_json(const Scene& scene) {
-    ordered_json document = ordered_json::parse(write_scene_json(Scene{scene.camera, scene.render, scene.materials, {}, {}, scene.environment}));
+    ordered_json document = ordered_json::parse(write_scene_json(Scene{scene.camera, scene.render, scene.materials, {}, {}, scene.environment, {}}));
     ordered_json spheres = ordered_json::array();
     for (const Sphere& s : scene.spheres) {
         ordered_json sphere;
