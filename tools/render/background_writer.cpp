@@ -1,16 +1,10 @@
 #include "background_writer.h"
 
-#include <chrono>
 #include <utility>
 
+#include "seconds_since.h"
+
 namespace orb::render_cli {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-}  // namespace
 
 BackgroundWriter::BackgroundWriter(std::size_t max_in_flight) : max_in_flight_(max_in_flight ? max_in_flight : 1) {}
 

@@ -13,16 +13,10 @@
 #include "orb/cli/tool_main.h"
 #include "orb/scene/error.h"
 #include "render_film.h"
+#include "seconds_since.h"
 #include "render_frames.h"
 
 namespace orb::render_cli {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-}  // namespace
 
 int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
     (void)outputs;

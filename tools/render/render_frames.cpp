@@ -20,13 +20,10 @@
 #include "orb/scene/error.h"
 #include "progress_reporter.h"
 #include "render_film.h"
+#include "seconds_since.h"
 
 namespace orb::render_cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // What is at a job's output, against what this run asks of it (the one
 // definition of finished, orb::exr::judge_output). Every block is decoded:

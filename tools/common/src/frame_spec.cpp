@@ -23,7 +23,7 @@ std::string_view trimmed(std::string_view text) {
 }
 
 // A whole number written with digits only: no sign, no spaces, no "0x".
-int parse_number(std::string_view digits, std::string_view whole, const char* what, int most) {
+int parse_frame_number(std::string_view digits, std::string_view whole, const char* what, int most) {
     if (digits.empty()) bad_spec(whole, std::string("missing ") + what);
     for (char c : digits)
         if (c < '0' || c > '9') bad_spec(whole, "'" + std::string(digits) + "' is not a whole number (" + what + ")");
@@ -43,15 +43,15 @@ Item parse_item(std::string_view item, std::string_view whole) {
     const auto x = item.find('x');
     std::string_view range = item.substr(0, x);
     if (x != std::string_view::npos)
-        out.step = parse_number(item.substr(x + 1), whole, "step", kMaxFrameNumber);
+        out.step = parse_frame_number(item.substr(x + 1), whole, "step", kMaxFrameNumber);
     const auto dash = range.find('-');
     if (dash == std::string_view::npos) {
         if (x != std::string_view::npos) bad_spec(whole, "a step needs a range A-B before the x");
-        out.first = out.last = parse_number(range, whole, "frame", kMaxFrameNumber);
+        out.first = out.last = parse_frame_number(range, whole, "frame", kMaxFrameNumber);
         return out;
     }
-    out.first = parse_number(range.substr(0, dash), whole, "first frame", kMaxFrameNumber);
-    out.last = parse_number(range.substr(dash + 1), whole, "last frame", kMaxFrameNumber);
+    out.first = parse_frame_number(range.substr(0, dash), whole, "first frame", kMaxFrameNumber);
+    out.last = parse_frame_number(range.substr(dash + 1), whole, "last frame", kMaxFrameNumber);
     if (out.last < out.first)
         bad_spec(whole, "the range " + std::string(range) + " ends before it starts");
     if (out.step < 1) bad_spec(whole, "the step must be at least 1");

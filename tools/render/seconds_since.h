@@ -1,0 +1,15 @@
+// The steady clock the render tool's timings read (frames, background
+// writes, the frames benchmark), and the seconds elapsed on it.
+#pragma once
+
+#include <chrono>
+
+namespace orb::render_cli {
+
+using Clock = std::chrono::steady_clock;
+
+inline double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace orb::render_cli
