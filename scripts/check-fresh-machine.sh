@@ -83,7 +83,7 @@ timed() {
 
 make_pristine_tarball() {
   mkdir -p "$cache"
-  mmdebstrap --quiet --variant=apt --include=ca-certificates,git,sudo bookworm "$cache/bookworm.tar.partial"
+  mmdebstrap --quiet --format=tar --variant=apt --include=ca-certificates,git,sudo bookworm "$cache/bookworm.tar.partial"
   mv "$cache/bookworm.tar.partial" "$cache/bookworm.tar"
 }
 [[ -s $cache/bookworm.tar ]] || timed "make the pristine bookworm root (cached in $cache)" make_pristine_tarball
