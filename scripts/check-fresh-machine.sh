@@ -119,12 +119,16 @@ new_root "$first"
 git clone --quiet --no-local --no-checkout "$root" "$first/root/orb"
 git -C "$first/root/orb" checkout --quiet --detach "$commit"
 
-quickstart_log=$work/quickstart.log
-run_quickstart() { in_root "$first" 'cd /root/orb && ./scripts/quickstart.sh' 2>&1 | tee "$quickstart_log"; }
+mkdir -p "$cache/last-run"
+quickstart_log=$cache/last-run/quickstart.log
+# Each line with its time, to see where the minutes went.
+stamp_lines() { local line; while IFS= read -r line; do printf '%(%T)T %s\n' -1 "$line"; done; }
+run_quickstart() { in_root "$first" 'cd /root/orb && ./scripts/quickstart.sh' 2>&1 | stamp_lines | tee "$quickstart_log"; }
 timed "quick start (first run)" run_quickstart
 for output in cornell.exr cornell.png; do
   [[ -s $first/root/orb/$output ]] || fail "the quick start did not write $output"
 done
+say "the quick start's output, each line with its time, is in $quickstart_log"
 if grep -E '(^|[^a-z])warning:' "$quickstart_log" >&2; then fail "the quick start's output has warnings (above)"; fi
 ((step_seconds[-1] <= quickstart_limit)) ||
   fail "the quick start took ${step_seconds[-1]} s, more than $quickstart_limit s"

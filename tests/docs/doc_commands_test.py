@@ -27,7 +27,8 @@ DOCUMENTS = ["README.md", "docs/tutorial.md"]
 # Blocks not run, by "document: section heading", with why.
 NOT_RUN = {
     "README.md: Quick start":
-        "installs packages, builds and runs the whole test suite: scripts/test.sh is CI itself",
+        "installs packages, builds and runs the whole test suite: scripts/test.sh is CI itself, and "
+        "scripts/check-fresh-machine.sh runs both commands on a pristine Debian 12 root",
     "README.md: Building by hand":
         "a fresh configure, a full build, the whole test suite (ctest would run this test inside itself) "
         "and an install: what scripts/test.sh does in CI",
