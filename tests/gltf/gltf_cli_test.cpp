@@ -52,7 +52,10 @@ fs::path scratch(const std::string& name) {
 
 TEST(GltfCli, FlagsReachTheImporter) {
     const fs::path out = scratch("out.json");
-    ToolRun run = run_import(quote(generated("scenes.gltf")) + " --scene two", out);
+    ToolRun run = run_import(quote(generated("scenes.gltf")) + " --gltf-scene two", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(load_scene_json(run.out, "out").spheres.at(0).name, "Second");
+    run = run_import(quote(generated("scenes.gltf")) + " --scene two", out);  // the older name, kept for scripts
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(load_scene_json(run.out, "out").spheres.at(0).name, "Second");
 

@@ -6,18 +6,18 @@
 namespace orb::frames {
 
 MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options,
-                             const std::string& frames, bool allow_empty, const MolecularImportOptions& molecule,
+                             const std::string& frames, const cli::SceneReading& reading,
                              const SphereStyleOptions& style)
     : style_(style) {
     // The orbit is checked before a scene of millions of spheres is read.
     settings_ = request::resolve_request(options, nullptr, &frames, true);
     if (scene_path.empty()) return;
-    trajectory_ = request::open_trajectory(scene_path, molecule);
+    trajectory_ = request::open_trajectory(scene_path, reading);
     if (trajectory_) {
         label_ = scene_path;
         scene_ = request::trajectory_frame(*trajectory_, 1, label_);
     } else {
-        scene_ = request::read_scene(scene_path, label_, allow_empty, molecule);
+        scene_ = request::read_scene(scene_path, label_, reading);
     }
     styled_ = apply_sphere_styling(*scene_, style_, label_);
     settings_ = request::resolve_request(options, &scene_->render, &frames, true);

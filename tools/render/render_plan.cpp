@@ -131,13 +131,13 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     // Usage errors before the scene is read; kept for the frames a trajectory reads later.
     plan.style = cli::sphere_style_options(o.style);
     std::optional<cli::LegendOutput> legend = cli::LegendOutput::prepare(o.style, {{"SCENE", o.scene}});
-    plan.trajectory = request::open_trajectory(o.scene, o.molecule);
+    plan.trajectory = request::open_trajectory(o.scene, o.reading);
     Scene imported;
     if (plan.trajectory) {
         plan.scene_label = o.scene;
         imported = request::trajectory_frame(*plan.trajectory, 1, plan.scene_label);
     } else {
-        imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty, o.molecule);
+        imported = request::read_scene(o.scene, plan.scene_label, o.reading);
     }
     // Before the hash: a styled scene is another scene (its outputs say so, and --resume checks it).
     const SphereStyleResult styled = cli::apply_sphere_style(imported, plan.style, plan.scene_label);

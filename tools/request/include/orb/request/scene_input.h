@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "orb/cli/scene_reading.h"
 #include "orb/exr/render_request.h"
 #include "orb/request/request_settings.h"
 #include "orb/scene/molecular.h"
@@ -15,21 +16,21 @@
 
 namespace orb::request {
 
-// Reads and imports `path` ("-" for stdin); `label` becomes the path, or
-// <stdin>. Throws orb::InputError for bad input, and for a scene without
-// spheres unless `allow_empty` (--allow-empty).
-Scene read_scene(const std::string& path, std::string& label, bool allow_empty,
-                 const MolecularImportOptions& molecule = {});
+// Reads and imports `path` ("-" for stdin) as `reading` asks (the
+// importers' options, --environment); `label` becomes the path, or <stdin>.
+// Throws orb::InputError for bad input, and for a scene without spheres
+// unless reading.import.allow_empty (--allow-empty).
+Scene read_scene(const std::string& path, std::string& label, const cli::SceneReading& reading);
 
 // A molecular or particle file (PDB, mmCIF, XYZ, LAMMPS dump, .gro: its
 // content or name says so) opened frame by frame: frame f of --frames is
 // frame f of the file, counted from 1, read from the file when it is
 // rendered. A numbered series ("dump.*.lammpstrj", orb/scene/numbered_series.h)
 // is one trajectory of its files' frames. Null for any other scene, and for
-// stdin (read whole by read_scene, which takes its first frame). Prints the
-// reader's warnings.
+// stdin (read whole by read_scene, which takes its first frame). Every frame
+// has the environment `reading` chooses. Prints the reader's warnings.
 // Throws orb::InputError.
-std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const MolecularImportOptions& options);
+std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const cli::SceneReading& reading);
 
 // Frame `frame` (1-based) of a trajectory, checked against the scene limits.
 // Throws orb::InputError naming the frames there are for one past the end.
