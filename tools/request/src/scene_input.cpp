@@ -106,7 +106,7 @@ std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, cons
 Scene trajectory_frame(const FrameSource& frames, long frame, const std::string& label) {
     require_trajectory_frames(frames, {frame}, label);
     Scene scene = frames.frame(static_cast<std::size_t>(frame - 1));
-    validate_scene(scene, label + " frame " + std::to_string(frame));
+    validate_scene(scene, label);  // the caller names the frame (for_frame)
     return scene;
 }
 

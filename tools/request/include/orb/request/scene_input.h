@@ -11,6 +11,7 @@
 #include "orb/cli/scene_reading.h"
 #include "orb/exr/render_request.h"
 #include "orb/request/request_settings.h"
+#include "orb/scene/error.h"
 #include "orb/scene/molecular.h"
 #include "orb/scene/scene.h"
 
@@ -31,6 +32,18 @@ Scene read_scene(const std::string& path, std::string& label, const cli::SceneRe
 // has the environment `reading` chooses. Prints the reader's warnings.
 // Throws orb::InputError.
 std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const cli::SceneReading& reading);
+
+// Runs `work`, which reads, poses or styles the scene of frame `frame`: an
+// orb::InputError it throws is thrown again with "frame N: " before its
+// message, so that an error met at frame 3 of 240 says which frame it was.
+template <typename Work>
+auto for_frame(long frame, Work&& work) -> decltype(work()) {
+    try {
+        return work();
+    } catch (const InputError& e) {
+        throw InputError("frame " + std::to_string(frame) + ": " + e.what());
+    }
+}
 
 // Frame `frame` (1-based) of a trajectory, checked against the scene limits.
 // Throws orb::InputError naming the frames there are for one past the end.
