@@ -7,9 +7,9 @@
 Spheres are placed uniformly in a box 100 wide, 50 high and 100 deep resting on
 a floor at y = 0, with radii of about a third of the mean spacing, coloured from
 a palette of 64 colours. The .orb form also holds the floor (a sphere of radius
-1e5), three emissive spheres above the box and a camera; the PLY form holds the
-points only, and orb-import adds its automatic camera and lights
-(docs/orb-import.md). The same count and seed always give the same file.
+1e5), the two lights orb-import gives a point cloud and a camera; the PLY form
+holds the points only, and orb-import adds its automatic camera and those
+lights (docs/orb-import.md). The same count and seed always give the same file.
 Standard library only. Documented in scenes/README.md.
 """
 import argparse
@@ -24,6 +24,10 @@ PRESETS = {"10": 10, "1k": 1_000, "100k": 100_000, "1m": 1_000_000, "10m": 10_00
 BOX = ((-50.0, 50.0), (0.0, 50.0), (-50.0, 50.0))
 PALETTE_SIZE = 64
 MAGIC = b"\x89ORB\r\n\x1a\n"  # docs/scene-format.md, "Binary form"
+# Name, radiance and direction from the box's centre of each light: orb-import's
+# default lights (libscene/src/default_lights.cpp). A sphere of radiance L seen at
+# sin(theta) = 1/4 gives E = pi*L/16: an irradiance of 0.8*pi (key) and 0.3*pi (fill).
+LIGHTS = (("key light", 0.8 * 16, (-1.0, 2.0, 1.0)), ("fill light", 0.3 * 16, (1.0, 0.5, 0.5)))
 
 
 def palette(rng):
@@ -88,7 +92,8 @@ def scene_header(colours, count):
         for i, c in enumerate(colours)
     ]
     materials.append({"name": "floor", "type": "diffuse", "color": [0.5, 0.5, 0.5], "emission": [0, 0, 0], "ior": 1.5})
-    materials.append({"name": "lamp", "type": "diffuse", "color": [0, 0, 0], "emission": [6, 6, 6], "ior": 1.5})
+    for name, radiance, _ in LIGHTS:
+        materials.append({"name": name, "type": "diffuse", "color": [0, 0, 0], "emission": [radiance] * 3, "ior": 1.5})
     scene = {
         "format": "orb-scene", "version": 1,
         "camera": {"position": [0, 70, 170], "target": [0, 15, 0], "up": [0, 1, 0],
@@ -100,13 +105,25 @@ def scene_header(colours, count):
             "sphere_names": False, "scene": scene}
 
 
+def light_spheres():
+    """The two lights orb-import gives a point cloud (docs/orb-import.md): a key
+    light from the upper left and a fill light from the right, 4R from the box's
+    centre, R (their radius) half its diagonal, out of the camera's view. They
+    light the faces the camera sees, as the .ply form of the same cloud is lit."""
+    center = [(low + high) / 2 for low, high in BOX]
+    radius = math.sqrt(sum((high - low) ** 2 for low, high in BOX)) / 2
+    spheres = []
+    for k, (_, _, direction) in enumerate(LIGHTS):
+        length = math.sqrt(sum(d * d for d in direction))
+        spheres.append((tuple(c + d / length * 4 * radius for c, d in zip(center, direction)), radius,
+                        PALETTE_SIZE + 1 + k))
+    return spheres
+
+
 def write_orb(out, colours, centers, radii, indices):
     floor_material = PALETTE_SIZE
-    lamp_material = PALETTE_SIZE + 1
-    # The floor and three lamps follow the random spheres.
-    extra = [((0.0, -1e5, 0.0), 1e5, floor_material)]
-    for x in (-60.0, 0.0, 60.0):
-        extra.append(((x, 110.0, 20.0), 15.0, lamp_material))
+    # The floor and the two lights follow the random spheres.
+    extra = [((0.0, -1e5, 0.0), 1e5, floor_material)] + light_spheres()
     centers = array.array("d", centers)
     radii = array.array("d", radii)
     indices = array.array("I", indices)
