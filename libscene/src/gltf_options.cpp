@@ -72,8 +72,8 @@ void add_gltf_options(CLI::App& app, ImportOptions& import) {
         ->default_str("photometric")
         ->group(group);
     app.add_flag("--no-default-light{false}", options.default_light,
-                 "Leave an asset without any light unlit (default: give it a uniform white environment of radiance 1, "
-                 "with a warning)")
+                 "Leave an asset without any light unlit (default: give it a grey environment and a key light, with "
+                 "a warning)")
         ->group(group);
 }
 
