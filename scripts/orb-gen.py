@@ -16,8 +16,10 @@ import argparse
 import array
 import json
 import math
+import os
 import random
 import struct
+import subprocess
 import sys
 
 PRESETS = {"10": 10, "1k": 1_000, "100k": 100_000, "1m": 1_000_000, "10m": 10_000_000}
@@ -142,14 +144,59 @@ def write_orb(out, colours, centers, radii, indices):
         out.write(column.tobytes())
 
 
+class OrbHelp(argparse.RawDescriptionHelpFormatter):
+    """--help in the shape of every Orb tool's ("Usage:", as the man page and
+    bash completion made from it expect: packaging/cli_reference.py)."""
+
+    def add_usage(self, usage, actions, groups, prefix=None):
+        super().add_usage(usage, actions, groups, prefix="Usage: ")
+
+
+class VersionAction(argparse.Action):
+    """--version: orb-gen's version, and the revision and libraries of the build
+    it came with, as the orb-render beside it (installed, or in a build's bin/)
+    says them; asked only when --version is given."""
+
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, **kwargs)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        print(version_text())
+        parser.exit()
+
+
+def version_text():
+    here = os.path.dirname(os.path.realpath(sys.argv[0]))
+    render = os.path.join(here, "orb-render")
+    if os.access(render, os.X_OK):
+        lines = subprocess.run([render, "--version"], capture_output=True, text=True, check=False).stdout.splitlines()
+        if lines and lines[0].startswith("orb-render (Orb) "):
+            return "\n".join(["orb-gen (Orb) " + lines[0].split()[-1]] + lines[1:])
+    return "orb-gen (Orb) unknown\nrevision: unknown (no orb-render beside orb-gen in %s)" % here
+
+
+EXAMPLES = """Examples:
+  orb-gen --preset 1m -o random-1m.orb        1,000,000 spheres, seed 1
+  orb-gen --count 5000 --seed 7 -o r.ply      any count, any seed, as PLY
+  orb-gen --preset 100k -o c.orb && orb-render c.orb --spp 16 -o c.exr
+
+From a clone it is scripts/orb-gen.py; the package installs it as orb-gen.
+Details: scenes/README.md. Exit status: 0 success, 1 failure, 2 usage error."""
+
+
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    description = __doc__.split("\n")[0].removeprefix("orb-gen: ")
+    parser = argparse.ArgumentParser(prog="orb-gen", description=description[:1].upper() + description[1:],
+                                     epilog=EXAMPLES, formatter_class=OrbHelp)
     size = parser.add_mutually_exclusive_group(required=True)
-    size.add_argument("--preset", choices=PRESETS, help="10, 1k, 100k, 1m or 10m spheres")
-    size.add_argument("--count", type=int, help="number of random spheres")
-    parser.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
-    parser.add_argument("--format", choices=("ply", "orb"), help="default: from the -o extension")
-    parser.add_argument("-o", "--output", required=True, help="file to write (.ply or .orb)")
+    size.add_argument("--preset", choices=PRESETS, metavar="|".join(PRESETS),
+                      help="10, 1k, 100k, 1m or 10m spheres")
+    size.add_argument("--count", type=int, metavar="N", help="number of random spheres")
+    parser.add_argument("--seed", type=int, default=1, metavar="N", help="random seed (default 1)")
+    parser.add_argument("--format", choices=("ply", "orb"), metavar="ply|orb", help="default: from the -o extension")
+    parser.add_argument("-o", "--output", required=True, metavar="FILE", help="file to write (.ply or .orb)")
+    parser.add_argument("--version", action=VersionAction,
+                        help="the version, and the revision and libraries of the build it came with")
     args = parser.parse_args()
     count = PRESETS[args.preset] if args.preset else args.count
     if count < 0:
@@ -162,7 +209,6 @@ def main():
     temporary = args.output + ".orb-gen-partial"
     with open(temporary, "wb") as out:
         (write_ply if fmt == "ply" else write_orb)(out, colours, centers, radii, indices)
-    import os
     os.replace(temporary, args.output)
 
 
