@@ -21,6 +21,7 @@ import random
 import struct
 import subprocess
 import sys
+import textwrap
 
 PRESETS = {"10": 10, "1k": 1_000, "100k": 100_000, "1m": 1_000_000, "10m": 10_000_000}
 BOX = ((-50.0, 50.0), (0.0, 50.0), (-50.0, 50.0))
@@ -144,12 +145,20 @@ def write_orb(out, colours, centers, radii, indices):
         out.write(column.tobytes())
 
 
-class OrbHelp(argparse.RawDescriptionHelpFormatter):
+class OrbHelp(argparse.HelpFormatter):
     """--help in the shape of every Orb tool's ("Usage:", as the man page and
-    bash completion made from it expect: packaging/cli_reference.py)."""
+    bash completion made from it expect: packaging/cli_reference.py), wrapped
+    to the terminal's width (80 when not a terminal): prose line by line, an
+    example (an indented line) kept whole."""
 
     def add_usage(self, usage, actions, groups, prefix=None):
         super().add_usage(usage, actions, groups, prefix="Usage: ")
+
+    def _fill_text(self, text, width, indent):
+        lines = []
+        for line in text.splitlines():
+            lines.extend([line] if line.startswith("  ") or len(line) <= width else textwrap.wrap(line, width))
+        return "\n".join(indent + line for line in lines)
 
 
 class VersionAction(argparse.Action):
@@ -176,12 +185,16 @@ def version_text():
 
 
 EXAMPLES = """Examples:
-  orb-gen --preset 1m -o random-1m.orb        1,000,000 spheres, seed 1
-  orb-gen --count 5000 --seed 7 -o r.ply      any count, any seed, as PLY
-  orb-gen --preset 100k -o c.orb && orb-render c.orb --spp 16 -o c.exr
+  orb-gen --preset 1m -o random-1m.orb
+      1,000,000 spheres, seed 1
+  orb-gen --count 5000 --seed 7 -o r.ply
+      any count, any seed, as PLY
+  orb-gen --preset 100k -o c.orb
+  orb-render c.orb --spp 16 -o c.exr
 
-From a clone it is scripts/orb-gen.py; the package installs it as orb-gen.
-Details: scenes/README.md. Exit status: 0 success, 1 failure, 2 usage error."""
+From a clone it is scripts/orb-gen.py; the package installs it as orb-gen. Details: scenes/README.md.
+
+Exit status: 0 success, 1 failure, 2 usage error."""
 
 
 def main():

@@ -59,7 +59,7 @@ cmake -S "$work/orb" -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DORB_BUILD_TES
 if [[ -f $work/stamp ]]; then
   step "4/5 building: checking the kept build is up to date"
 else
-  step "4/5 building with $jobs jobs: about 15 minutes on 2 cores (docs/install.md); make shows its percentage"
+  step "4/5 building with $jobs jobs: about 16 minutes on 2 cores (docs/install.md); make shows its percentage"
 fi
 cmake --build "$work/build" -j "$jobs"
 echo "$identity" >"$work/stamp"  # written once the build has finished

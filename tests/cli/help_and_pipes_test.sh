@@ -44,8 +44,8 @@ for tool in "${tools[@]}"; do
 done
 
 # Wrapped to the terminal's width, 80 columns when not a terminal (a pipe
-# here, and the man pages made from --help): orb-farm's too. Under a
-# terminal of 60 columns (a pseudo-terminal python3 opens), 60.
+# here, and the man pages made from --help): orb-farm's and orb-gen's too.
+# Under a terminal of 60 columns (a pseudo-terminal python3 opens), 60.
 help_in_terminal() { # COLUMNS TOOL: the tool's --help as a terminal that wide shows it
     python3 - "$@" <<'PY'
 import fcntl, os, pty, struct, subprocess, sys, termios
@@ -67,7 +67,7 @@ process.wait()
 sys.stdout.write(text.decode().replace("\r\n", "\n"))
 PY
 }
-for tool in "${tools[@]}" orb-farm; do
+for tool in "${tools[@]}" orb-farm orb-gen; do
     long=$("$bin/$tool" --help | awk 'length($0) > 80')
     [[ -z $long ]] || problem "$tool --help (not a terminal) has lines over 80 columns: $long"
     narrow=$(help_in_terminal 60 "$bin/$tool")
