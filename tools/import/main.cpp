@@ -179,11 +179,16 @@ int main(int argc, char** argv) {
                          "Write a scene without spheres instead of failing (a glTF asset of triangle meshes)");
             orb::cli::add_scene_reading_options(app, args.reading);
             // orb-import writes one frame of a trajectory; orb-render's --frame N renders the same one.
-            app.add_option("--frame", args.reading.import.molecular.frame,
-                           "Which frame of a trajectory or model of an ensemble to write (1 = the first, the default)")
-                ->check(CLI::PositiveNumber)
-                ->option_text("N")
-                ->group(std::string(orb::find_scene_importer("xyz")->options->heading));
+            // Named, like the group's own options, when the input is of another format.
+            const std::string_view molecules = orb::find_scene_importer("xyz")->options->heading;
+            args.reading.importer_options.push_back(
+                {app.add_option("--frame", args.reading.import.molecular.frame,
+                                "Which frame of a trajectory or model of an ensemble to write (1 = the first, the "
+                                "default)")
+                     ->check(CLI::PositiveNumber)
+                     ->option_text("N")
+                     ->group(std::string(molecules)),
+                 molecules});
             // The older name of --gltf-scene, kept for scripts (unlisted: orb-frames' --scene is the scene file).
             app.add_option("--scene", args.reading.import.gltf.scene)->group("");
             orb::cli::add_camera_options(app, args.camera);

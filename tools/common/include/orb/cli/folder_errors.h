@@ -7,10 +7,10 @@
 
 namespace orb::cli {
 
-// For an errno that says the folder refuses new files (EACCES, EPERM:
-// "the folder ro is not writable (Permission denied)"; EROFS: "the folder ro
-// is on a read-only file system"), the words that follow "OUT: cannot write
-// (-o): "; empty for any other error. An empty `folder` is ".".
+// For an errno that says the folder refuses new files (EACCES, EPERM,
+// EROFS: "the folder ro is not writable (Permission denied)", "... (Read-only
+// file system)"), the words that follow "OUT: cannot write (-o): "; empty for
+// any other error. An empty `folder` is ".".
 std::string unwritable_folder(const std::string& folder, int error);
 
 }  // namespace orb::cli
