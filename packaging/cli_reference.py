@@ -8,7 +8,8 @@ the same shape. An option added to a tool is therefore in its man page and its
 completion at the next build, with nothing kept by hand here.
 
 What the completion offers for a value follows from the help text alone:
-  choices        a placeholder of lower-case words joined by '|' (global|direct)
+  choices        a placeholder of lower-case words joined by '|' (global|direct),
+                 or a description that lists them ("one of: scn, gltf, glb")
   files          placeholders FILE, OUT, PATTERN, PATH, SCENE, INPUT, ... and
                  positionals; filtered to the extensions the description names
                  ("(.scn, .gltf/.glb, ...)", "MAP.exr"), or to .exr where it
@@ -130,7 +131,8 @@ def parse_help(name: str, text: str) -> Help:
             continue
         end_paragraph()
         if section == "Examples":
-            examples.append(line.strip())
+            # Past the examples' own indentation: a comment under its command, a command continued with "\\".
+            examples.append(line[2:] if line.startswith("  ") else line.strip())
             continue
         if not line.startswith("   ") and (entry := parse_entry(line, section)):
             entries.append(entry)
@@ -153,6 +155,7 @@ def parse_help(name: str, text: str) -> Help:
 
 FILE_WORDS = {"FILE", "OUT", "OUTPUT", "PATTERN", "PATH", "SCENE", "INPUT", "INPUTS", "IMAGE", "MAP",
               "REFERENCE", "TEST"}
+ONE_OF = re.compile(r"\bone of: ((?:[a-z0-9][a-z0-9_.-]*, )+[a-z0-9][a-z0-9_.-]*)")
 EXTENSION_IN_TEXT = re.compile(r"(?:^|(?<=[\s(/,]))\.([a-z][a-z0-9]{1,4})\b")
 
 
@@ -165,6 +168,10 @@ def value_kind(cli: Help, name: str, placeholder: str, description: str) -> tupl
     alternatives = placeholder.split("|")
     if len(alternatives) > 1 and all(re.fullmatch(r"[a-z0-9][a-z0-9_.-]*", w) for w in alternatives):
         return ("words", alternatives)
+    # Choices too many for a placeholder are listed in the description: "one of: scn, gltf, glb".
+    listed = ONE_OF.search(description)
+    if listed:
+        return ("words", listed.group(1).split(", "))
     extensions = EXTENSION_IN_TEXT.findall(description)
     extensions += [m.group(1) for w in alternatives if (m := re.search(r"\w\.([a-z][a-z0-9]{1,4})$", w))]
     upper = placeholder.upper()

@@ -172,7 +172,7 @@ std::string render_program_options(DeviceSession& session, const SceneLayout& sc
 void DeviceRenderer::set_scene(const SceneLayout& scene, const device::CameraParams& camera)
 {
     simd_lanes_ = simd_lanes(session_->info(), session_->device(), config_.development);
-    const cl::Program& program = session_->program(build_options(scene));
+    const cl::Program& program = session_->program(build_options(scene), config_.on_slow_kernel_build);
     try {
         if (&program != program_) {
             kernel_ = cl::Kernel(program, "render_pass");

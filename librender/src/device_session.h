@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -53,8 +54,8 @@ public:
 
     // The program built from the kernels with these compiler options; built
     // on the first request, then the same one. Throws std::runtime_error with
-    // the build log when it does not build.
-    const cl::Program& program(const std::string& build_options);
+    // the build log when it does not build. `on_slow_build`: see build_program.
+    const cl::Program& program(const std::string& build_options, const std::function<void()>& on_slow_build = {});
 
     // Programs built or loaded so far (one per distinct set of options).
     int programs_built() const;

@@ -1,6 +1,7 @@
 // Building the OpenCL program, through a per-device binary cache.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "opencl.h"
@@ -54,8 +55,10 @@ struct ProgramBuild {
 // refreshed (atomically, failures ignored). A failed source build throws
 // std::runtime_error carrying the compiler's build log. With
 // `show_build_log` (the development knob ORB_SHOW_BUILD_LOG), a source
-// build's log goes to stderr.
+// build's log goes to stderr. `on_slow_build`, when set, is called (from
+// another thread) once a build from source has run for a second.
 ProgramBuild build_program(const cl::Context& context, const cl::Device& device, const std::string& source,
-                           const std::string& options, bool use_cache, bool show_build_log = false);
+                           const std::string& options, bool use_cache, bool show_build_log = false,
+                           const std::function<void()>& on_slow_build = {});
 
 }  // namespace orb::render

@@ -108,16 +108,10 @@ void fix_camera(Scene& scene, FrameView& view, const std::string& source) {
     view.light_radius = std::max(diagonal / 2, median_radius(scene.spheres));
 }
 
-// The spheres after the atoms (cell, lights) carry each property's smallest
-// value (numeric) or first label (categorical): a colour-by range is then
-// what the atoms span.
-void pad_properties(std::vector<SphereProperty>& properties, std::size_t atoms, std::size_t spheres) {
-    for (SphereProperty& property : properties) {
-        float filler = 0;
-        if (!property.categorical() && atoms > 0)
-            filler = *std::min_element(property.values.begin(), property.values.begin() + static_cast<std::ptrdiff_t>(atoms));
-        property.values.resize(spheres, filler);
-    }
+// The spheres after the atoms (cell, lights) are not atoms: they have no
+// value of any property, so colouring or sizing by one leaves them as they are.
+void pad_properties(std::vector<SphereProperty>& properties, std::size_t spheres) {
+    for (SphereProperty& property : properties) property.values.resize(spheres, kNoValue);
 }
 
 }  // namespace
@@ -190,7 +184,7 @@ Scene atoms_scene(AtomFrame frame, const MolecularImportOptions& options, FrameV
     detail::add_default_lights(scene, view.light_center, view.light_radius);
     colors.resize(3 * scene.spheres.size(), 0.0f);  // the lights' colour: their material is black and emits
 
-    pad_properties(frame.properties, atoms, scene.spheres.size());
+    pad_properties(frame.properties, scene.spheres.size());
     scene.sphere_attributes.properties = std::move(frame.properties);
     return scene;
 }

@@ -51,8 +51,8 @@ private:
 
 // ---- an asset without light (gltf_default_light.cpp) ----
 
-// Gives a scene that has no light the default uniform environment
-// (kDefaultEnvironmentRadiance), with a notice naming --no-default-light.
+// Gives a scene that has no light the default light (kDefaultEnvironmentRadiance,
+// kDefaultKeyIrradiance), with a notice naming --no-default-light.
 // It loses nothing, so it is a notice, not a warning that --strict refuses.
 void add_default_light(Scene& scene, const std::string& source, std::vector<std::string>& notices);
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "import_option_groups.h"
 #include "orb/scene/error.h"
 #include "orb/scene/gltf.h"
 #include "orb/scene/molecular.h"
@@ -158,14 +159,14 @@ const std::vector<SceneImporter>& table() {
          .extension_decides = true,
          .recognise = recognise_gltf,
          .read = read_gltf,
-         .option_group = "glTF input"},
+         .options = &detail::kGltfOptions},
         {.name = "ply",
          .description = "PLY point cloud, ASCII or binary: one sphere per vertex",
          .extensions = {".ply"},
          .extension_decides = true,
          .recognise = recognise_ply,
          .read = read_ply,
-         .option_group = "PLY input"},
+         .options = &detail::kPlyOptions},
         {.name = "orb",
          .aliases = {"json"},
          .description = "the canonical Orb scene, JSON (docs/scene-format.md)",
@@ -186,7 +187,7 @@ const std::vector<SceneImporter>& table() {
          .extension_decides = true,
          .recognise = recognise_molecular<"pdb">,
          .read = read_molecular_as<"pdb">,
-         .option_group = "Molecule input"},
+         .options = &detail::kMolecularOptions},
         {.name = "mmcif",
          .aliases = {"cif"},
          .description = "PDBx/mmCIF file, through gemmi: an atom per sphere, its models as frames",
@@ -194,7 +195,7 @@ const std::vector<SceneImporter>& table() {
          .extension_decides = true,
          .recognise = recognise_molecular<"mmcif">,
          .read = read_molecular_as<"mmcif">,
-         .option_group = "Molecule input"},
+         .options = &detail::kMolecularOptions},
         {.name = "xyz",
          .aliases = {"extxyz"},
          .description = "XYZ or extended XYZ: an atom per sphere, each frame of a trajectory a frame",
@@ -202,7 +203,7 @@ const std::vector<SceneImporter>& table() {
          .extension_decides = true,
          .recognise = recognise_molecular<"xyz">,
          .read = read_molecular_as<"xyz">,
-         .option_group = "Molecule input"},
+         .options = &detail::kMolecularOptions},
         {.name = "lammps-dump",
          .aliases = {"lammpstrj"},
          .description = "LAMMPS text dump (atom or custom style): a particle per sphere, each timestep a frame",
@@ -210,14 +211,14 @@ const std::vector<SceneImporter>& table() {
          .extension_decides = true,
          .recognise = recognise_molecular<"lammps-dump">,
          .read = read_molecular_as<"lammps-dump">,
-         .option_group = "Molecule input"},
+         .options = &detail::kMolecularOptions},
         {.name = "gro",
          .description = "GROMACS .gro: an atom per sphere, each frame a frame (nm become angstrom)",
          .extensions = {".gro"},
          .extension_decides = true,
          .recognise = recognise_molecular<"gro">,
          .read = read_molecular_as<"gro">,
-         .option_group = "Molecule input"},
+         .options = &detail::kMolecularOptions},
     };
     return importers;
 }
@@ -236,6 +237,14 @@ bool lists_extension(const SceneImporter& importer, const std::string& extension
 }  // namespace
 
 std::span<const SceneImporter> scene_importers() { return table(); }
+
+std::vector<const ImportOptionGroup*> import_option_groups() {
+    std::vector<const ImportOptionGroup*> groups;
+    for (const SceneImporter& importer : table())
+        if (importer.options && std::find(groups.begin(), groups.end(), importer.options) == groups.end())
+            groups.push_back(importer.options);
+    return groups;
+}
 
 const SceneImporter* find_scene_importer(std::string_view name) {
     for (const SceneImporter& importer : table())

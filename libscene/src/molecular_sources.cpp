@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "atoms_scene.h"
+#include "import_option_groups.h"
 #include "line_reader.h"
 #include "orb/scene/error.h"
 #include "orb/scene/importers.h"
@@ -212,7 +213,7 @@ std::string_view molecular_file_format(const std::string& path) {
     std::string_view format = recognise_molecular_file(head, path);
     if (!format.empty()) return format;
     const SceneImporter* named = scene_importer_for_path(path);
-    if (!named || named->option_group != "Molecule input") return {};
+    if (!named || named->options != &detail::kMolecularOptions) return {};
     // A name that decides, unless the content is another importer's.
     if (const SceneImporter* recognised = recognise_scene(head); recognised && recognised != named) return {};
     return named->name;

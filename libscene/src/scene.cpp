@@ -1,5 +1,6 @@
 #include "orb/scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -9,6 +10,12 @@ bool Environment::operator==(const Environment& other) const {
     const bool same_image = image == other.image || (image && other.image && *image == *other.image);
     return kind == other.kind && color == other.color && map == other.map && intensity == other.intensity &&
            rotation_deg == other.rotation_deg && same_image;
+}
+
+bool SphereProperty::operator==(const SphereProperty& other) const {
+    const auto same = [](float a, float b) { return a == b || (!has_value(a) && !has_value(b)); };
+    return name == other.name && labels == other.labels &&
+           std::equal(values.begin(), values.end(), other.values.begin(), other.values.end(), same);
 }
 
 namespace {

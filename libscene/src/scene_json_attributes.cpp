@@ -16,7 +16,7 @@ using json = nlohmann::json;
 // Shortest text that reads back as the same float: the arrays hold floats,
 // and "0.8" is what a reader wrote, not "0.800000011920929".
 void append_float(std::string& out, float value) {
-    if (!std::isfinite(value)) {  // validation refuses these; never written as invalid JSON
+    if (!std::isfinite(value)) {  // a property's "no value" (NaN); validation refuses the rest: never invalid JSON
         out += "null";
         return;
     }
@@ -77,8 +77,10 @@ SphereAttributes sphere_attributes_from_json(const JsonReader& r, const json* co
             }
             const json& values = r.array(r.member(object, path, "values"), path + ".values");
             property.values.reserve(values.size());
-            for (std::size_t i = 0; i < values.size(); ++i)
-                property.values.push_back(read_float(r, values[i], JsonReader::index(path + ".values", i)));
+            for (std::size_t i = 0; i < values.size(); ++i)  // null: the sphere has no value
+                property.values.push_back(values[i].is_null()
+                                              ? kNoValue
+                                              : read_float(r, values[i], JsonReader::index(path + ".values", i)));
             attributes.properties.push_back(std::move(property));
         }
     }
@@ -165,7 +167,8 @@ void validate_sphere_attributes(const SphereAttributes& attributes, std::size_t 
         for (std::size_t i = 0; i < property.values.size(); ++i) {
             const float value = property.values[i];
             const std::string where = path + ".values[" + std::to_string(i) + "]";
-            if (!std::isfinite(value)) fail(source, where, "expected a finite number");
+            if (!has_value(value)) continue;
+            if (!std::isfinite(value)) fail(source, where, "expected a finite number (or null: no value)");
             if (property.categorical() && !(value >= 0 && value < categories && value == std::floor(value)))
                 {
                 std::string got;
@@ -193,7 +196,8 @@ void hash_sphere_attributes(const SphereAttributes& attributes, ContentHash& has
             hash.add(label);
         }
         hash.add_uint32(static_cast<std::uint32_t>(property.values.size()));
-        for (float value : property.values) hash.add_uint32(std::bit_cast<std::uint32_t>(value));
+        // Every NaN is the one "no value": a binary scene may hold another NaN's bits.
+        for (float value : property.values) hash.add_uint32(std::bit_cast<std::uint32_t>(has_value(value) ? value : kNoValue));
     }
 }
 

@@ -48,6 +48,12 @@ const SphereProperty& find_property(const Scene& scene, const std::string& name,
                      ")");
 }
 
+// The particles that have a value of `property`: a molecule's cell has none, and keeps its look.
+std::vector<bool> valued_particles(const SphereProperty& property, std::vector<bool> particles) {
+    for (std::size_t i = 0; i < particles.size(); ++i) particles[i] = particles[i] && has_value(property.values[i]);
+    return particles;
+}
+
 std::pair<double, double> particle_range(const SphereProperty& property, const std::vector<bool>& particles) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t i = 0; i < property.values.size(); ++i) {
@@ -65,9 +71,10 @@ double fraction_in(double value, const std::pair<double, double>& range) {
     return std::clamp((value - range.first) / width, 0.0, 1.0);
 }
 
-void color_by(Scene& scene, const SphereStyleOptions& options, const std::vector<bool>& particles,
+void color_by(Scene& scene, const SphereStyleOptions& options, const std::vector<bool>& all_particles,
               const std::string& source, SphereStyleResult& result) {
     const SphereProperty& property = find_property(scene, options.color_by, "--color-by", source);
+    const std::vector<bool> particles = valued_particles(property, all_particles);
     std::vector<float>& colors = scene.sphere_attributes.colors;
     if (colors.empty()) {  // the lights keep their material's colour
         colors.resize(3 * scene.spheres.size());
@@ -104,9 +111,10 @@ void color_by(Scene& scene, const SphereStyleOptions& options, const std::vector
         if (particles[i]) set(i, colormap_display_color(options.colormap, fraction_in(property.values[i], range)));
 }
 
-void radius_by(Scene& scene, const SphereStyleOptions& options, const std::vector<bool>& particles,
+void radius_by(Scene& scene, const SphereStyleOptions& options, const std::vector<bool>& all_particles,
                const std::string& source, SphereStyleResult& result) {
     const SphereProperty& property = find_property(scene, options.radius_by, "--radius-by", source);
+    const std::vector<bool> particles = valued_particles(property, all_particles);
     if (property.categorical())
         throw InputError(source + ": --radius-by " + property.name +
                          ": a categorical property (labels such as \"" + property.labels.front() +

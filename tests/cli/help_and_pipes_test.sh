@@ -43,6 +43,39 @@ for tool in "${tools[@]}"; do
     done
 done
 
+# Wrapped to the terminal's width, 80 columns when not a terminal (a pipe
+# here, and the man pages made from --help): orb-farm's and orb-gen's too.
+# Under a terminal of 60 columns (a pseudo-terminal python3 opens), 60.
+help_in_terminal() { # COLUMNS TOOL: the tool's --help as a terminal that wide shows it
+    python3 - "$@" <<'PY'
+import fcntl, os, pty, struct, subprocess, sys, termios
+columns, tool = int(sys.argv[1]), sys.argv[2]
+leader, follower = pty.openpty()
+fcntl.ioctl(follower, termios.TIOCSWINSZ, struct.pack("HHHH", 24, columns, 0, 0))
+process = subprocess.Popen([tool, "--help"], stdout=follower, stderr=subprocess.DEVNULL, env=dict(os.environ, TERM="dumb"))
+os.close(follower)
+text = b""
+while True:
+    try:
+        chunk = os.read(leader, 65536)
+    except OSError:  # the follower's last writer is gone
+        break
+    if not chunk:
+        break
+    text += chunk
+process.wait()
+sys.stdout.write(text.decode().replace("\r\n", "\n"))
+PY
+}
+for tool in "${tools[@]}" orb-farm orb-gen; do
+    long=$("$bin/$tool" --help | awk 'length($0) > 80')
+    [[ -z $long ]] || problem "$tool --help (not a terminal) has lines over 80 columns: $long"
+    narrow=$(help_in_terminal 60 "$bin/$tool")
+    grep -q -- '--help' <<<"$narrow" || problem "$tool --help in a 60-column terminal printed: $narrow"
+    long=$(awk 'length($0) > 60' <<<"$narrow")
+    [[ -z $long ]] || problem "$tool --help in a 60-column terminal has longer lines: $long"
+done
+
 # Options of every kind (flags, numbers, choices, files, lists) are listed
 # by name; tests/cli/help_formatter_test.cpp checks the formatter lists any
 # option registered, of any kind.

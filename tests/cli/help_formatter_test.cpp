@@ -2,6 +2,7 @@
 // option a tool registers is listed with a readable placeholder and none of
 // CLI11's parser details.
 #include "orb/cli/help_formatter.h"
+#include "orb/cli/help_wrapping.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,7 +29,7 @@ std::string line_of(const std::string& help, const std::string& name) {
 
 class HelpFormatterTest : public ::testing::Test {
 protected:
-    HelpFormatterTest() { app.formatter(std::make_shared<orb::cli::HelpFormatter>()); }
+    HelpFormatterTest() { app.formatter(std::make_shared<orb::cli::HelpFormatter>(80)); }
 
     CLI::App app{"A tool", "orb-example"};
     std::uint64_t spp = 0;
@@ -105,6 +107,72 @@ TEST_F(HelpFormatterTest, ALongChoiceListIsLeftToTheDescription) {
     const std::string line = line_of(app.help(), "--compression");
     EXPECT_THAT(line, HasSubstr("--compression COMPRESSION "));
     EXPECT_THAT(line, Not(HasSubstr("{")));
+}
+
+// Every line of `text`.
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+TEST(HelpWrapping, BreaksAtSpacesWithinTheWidth) {
+    EXPECT_EQ(orb::cli::wrap_words("one two  three four", 9), (std::vector<std::string>{"one two", "three", "four"}));
+    // A word longer than the width stands alone rather than being cut.
+    EXPECT_EQ(orb::cli::wrap_words("a unbreakable b", 5), (std::vector<std::string>{"a", "unbreakable", "b"}));
+    EXPECT_TRUE(orb::cli::wrap_words("   ", 10).empty());
+}
+
+TEST(HelpWrapping, ProseContinuesUnindentedAndShortLinesStayAsTheyAre) {
+    EXPECT_EQ(orb::cli::wrap_help_line("Exit status: 0 success,  1 failure", 80), "Exit status: 0 success,  1 failure");
+    EXPECT_EQ(orb::cli::wrap_help_line("Exit status: 0 success, 1 failure", 20), "Exit status: 0\nsuccess, 1 failure");
+}
+
+TEST(HelpWrapping, AnExamplesCommentGoesUnderItsCommand) {
+    EXPECT_EQ(orb::cli::wrap_help_line("  orb-import cloud.ply -o cloud.orb   PLY point cloud -> spheres", 40),
+              "  orb-import cloud.ply -o cloud.orb\n      PLY point cloud -> spheres");
+}
+
+TEST(HelpWrapping, ALongCommandIsContinuedAsAShellReadsIt) {
+    const std::string wrapped =
+        orb::cli::wrap_help_line("  orb-render scene.json -o out.exr --spp 4096 --noise-threshold 0.02", 30);
+    EXPECT_EQ(wrapped, "  orb-render scene.json -o \\\n      out.exr --spp 4096 \\\n      --noise-threshold 0.02");
+    for (const std::string& line : lines_of(wrapped)) EXPECT_LE(line.size(), 30u) << line;
+}
+
+TEST_F(HelpFormatterTest, WrapsEveryLineToItsWidthWithDescriptionsPastTheNames) {
+    std::string long_text;
+    for (int i = 0; i < 30; ++i) long_text += "word" + std::to_string(i) + " ";
+    app.description("A tool whose description is long: " + long_text);
+    app.add_option("--spp", spp, "Samples per pixel: " + long_text);
+    app.add_option("--a-very-long-option-name-indeed", view, "Which: " + long_text)->option_text("SOMETHING");
+    app.add_flag("--half", flag, "Half floats");
+    app.footer("Examples:\n  orb-example --spp 4 --a-very-long-option-name-indeed x --half   " + long_text +
+               "\nExit status: " + long_text);
+    const std::string help = app.help();
+    std::size_t continued = 0;
+    for (const std::string& line : lines_of(help)) {
+        EXPECT_LE(line.size(), 80u) << line;
+        continued += line.rfind(std::string(34, ' '), 0) == 0;
+    }
+    EXPECT_GT(continued, 2u) << help;  // the descriptions go on in their column
+    EXPECT_THAT(help, HasSubstr("\n  --half                          Half floats\n"));
+    // A name too long for the column: the description starts on the next line.
+    EXPECT_THAT(help, HasSubstr("  --a-very-long-option-name-indeed SOMETHING\n" + std::string(34, ' ') + "Which: word0"));
+    // Every word is still there, in order.
+    std::string words;
+    for (const std::string& line : lines_of(help))
+        if (line.find("word") != std::string::npos) words += line;
+    EXPECT_THAT(words, HasSubstr("word28"));
+}
+
+TEST_F(HelpFormatterTest, ANarrowWidthPutsDescriptionsUnderTheirNames) {
+    app.formatter(std::make_shared<orb::cli::HelpFormatter>(40));
+    app.add_option("--spp", spp, "Samples per pixel, as many as the render needs to converge");
+    const std::string help = app.help();
+    EXPECT_THAT(help, HasSubstr("  --spp N\n      Samples per pixel, as many as the\n      render needs to converge\n"));
+    for (const std::string& line : lines_of(help)) EXPECT_LE(line.size(), 40u) << line;
 }
 
 }  // namespace

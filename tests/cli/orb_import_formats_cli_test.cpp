@@ -109,7 +109,7 @@ TEST_F(OrbImportFormatsCli, AllowEmptyWritesTheEmptySceneAndSaysWhatWasLeftOut) 
 
 TEST_F(OrbImportFormatsCli, NonSpheresBoundGivesTheBoxItsBoundingSphere) {
     write("Box.glb", data("gltf-sample-assets/Box/Box.glb"));
-    const ProcessResult r = run({"Box.glb", "--non-spheres", "bound"});
+    const ProcessResult r = run({"Box.glb", "--non-spheres", "bound", "--no-default-light"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const Scene scene = load_scene_json(r.out, "stdout");
     ASSERT_EQ(scene.spheres.size(), 1u);
@@ -122,7 +122,7 @@ TEST_F(OrbImportFormatsCli, AnAssetMixingSpheresAndMeshesImportsItsSpheres) {
     write("spheres.glb", data("gltf-sample-assets/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb"));
     const ProcessResult r = run({"spheres.glb"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(load_scene_json(r.out, "stdout").spheres.size(), 98u);
+    EXPECT_EQ(load_scene_json(r.out, "stdout").spheres.size(), 98u + 1u);  // and the default key light
     EXPECT_THAT(r.err, HasSubstr("not spheres, left out (--non-spheres bound|error to change): 'Metal' (node 'Metal'), "
                                  "'Non-metal' (node 'Non-metal'), 'Rough' (node 'Rough'), 'Smooth' (node 'Smooth')"));
 }

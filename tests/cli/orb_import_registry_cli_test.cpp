@@ -62,10 +62,14 @@ TEST_F(OrbImportRegistryCli, FromTakesEveryWordAndNamesThemWhenWrong) {
 
 TEST_F(OrbImportRegistryCli, OptionsOfAnotherFormatAreNamed) {
     write("cloud.ply", kCloud);
-    const ProcessResult r = run({"cloud.ply", "--scene", "0", "--light-units", "radiometric", "-o", "out.json"});
+    const ProcessResult r = run({"cloud.ply", "--gltf-scene", "0", "--light-units", "radiometric", "-o", "out.json"});
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_THAT(r.err, HasSubstr("orb-import: warning: cloud.ply: ignored --scene (glTF input), --light-units (glTF "
+    EXPECT_THAT(r.err, HasSubstr("orb-import: warning: cloud.ply: ignored --gltf-scene (glTF input), --light-units (glTF "
                                  "input): the input is read as ply"));
+    // orb-import's own --frame belongs to the molecular readers' group too.
+    const ProcessResult frame = run({"cloud.ply", "--frame", "2", "-o", "out.json"});
+    EXPECT_EQ(frame.exit_code, 0) << frame.err;
+    EXPECT_THAT(frame.err, HasSubstr("ignored --frame (Molecule input): the input is read as ply"));
     const ProcessResult own = run({"cloud.ply", "--radius", "0.1", "-o", "out.json"});
     EXPECT_EQ(own.exit_code, 0) << own.err;
     EXPECT_THAT(own.err, ::testing::Not(HasSubstr("ignored --"))) << own.err;

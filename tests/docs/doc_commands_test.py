@@ -4,8 +4,9 @@
     doc_commands_test.py SOURCE_DIR BIN_DIR
 
 Every ```sh block of a document runs, in order, with `bash -e -o pipefail`, in
-one temporary folder per document laid out like a clone's root (scenes/ and
-scripts/ linked in), with BIN_DIR first on PATH; a block fails the test when
+one temporary folder per document laid out like a clone's root (scenes/,
+scripts/ and tests/ linked in, so that the commands run as written from a
+clone, test data included), with BIN_DIR first on PATH; a block fails the test when
 it exits non-zero. Blocks run scaled down, by the substitutions in
 SUBSTITUTIONS (printed with every run), so that both documents take well
 under two minutes on two cores. Blocks that cannot run here are listed by
@@ -89,23 +90,10 @@ def scaled(text, shared):
 def make_folder(root, source, name):
     folder = os.path.join(root, name)
     os.makedirs(folder)
-    for linked in ("scenes", "scripts"):
+    # The folders the documents name, as a clone has them: the commands run as written.
+    for linked in ("scenes", "scripts", "tests"):
         os.symlink(os.path.join(source, linked), os.path.join(folder, linked))
     return folder
-
-
-def prepare_readme_inputs(folder, source, env):
-    """The files README's glTF and molecule blocks name as their own: the Khronos
-    asset and two chemfiles test files from tests/data and, for "any lat-long
-    EXR", a small grey one."""
-    shutil.copy(os.path.join(source, "tests/data/gltf-sample-assets/MetalRoughSpheresNoTextures",
-                             "MetalRoughSpheresNoTextures.glb"), folder)
-    subprocess.run(["oiiotool", "--create", "32x16", "3", "--fill:color=0.8,0.8,0.8", "0,0,32,16",
-                    "-d", "float", "-o", "studio.exr"], cwd=folder, env=env, check=True)
-    # The molecule block's haemoglobin and LAMMPS trajectory, from tests/data/chemfiles-tests-data.
-    molecules = os.path.join(source, "tests/data/chemfiles-tests-data")
-    shutil.copy(os.path.join(molecules, "4hhb.pdb"), folder)
-    shutil.copy(os.path.join(molecules, "polymer-10-frames.lammpstrj"), os.path.join(folder, "polymer.lammpstrj"))
 
 
 class Cluster:
@@ -148,8 +136,6 @@ def main():
     try:
         for document in DOCUMENTS:
             folder = make_folder(root, source, os.path.basename(document).removesuffix(".md"))
-            if document == "README.md":
-                prepare_readme_inputs(folder, source, env)
             shared = os.path.join(folder, "shared")
             for heading, index, text in blocks(os.path.join(source, document)):
                 name = f"{document}: {heading}"

@@ -112,7 +112,7 @@ usage_case "--fps: expected a positive number, got '0'" "${common[@]}" --fps 0
 usage_case "--tonemap exr would overwrite the rendered frames" "${common[@]}" --tonemap exr
 usage_case "--poll: expected a whole number of seconds >= 1" "${common[@]}" --poll 0
 usage_case "--time-limit: expected a Slurm time" "${common[@]}" --time-limit soon
-usage_case "unknown option '--bogus'" "${common[@]}" --bogus
+usage_case "unknown option --bogus" "${common[@]}" --bogus
 usage_case "--dry-run submits nothing to wait for" "${common[@]}" --dry-run --wait
 usage_case "--sbatch-arg --array=1-3: orb-farm sets that option itself" "${common[@]}" --sbatch-arg=--array=1-3
 usage_case "--sbatch-arg: expected an sbatch option" "${common[@]}" --sbatch-arg account
@@ -136,7 +136,7 @@ usage_case "--mode: nosuch not in {global,direct}" "${common[@]}" -- --mode nosu
 usage_case "--mode: nosuch not in {global,direct}" "${common[@]}" --slices 2 --spp 4 --dry-run -- --mode nosuch
 usage_case "--spp: At Most 1 required but received 2" "${common[@]}" --spp 4 -- --spp 8
 usage_case "--passes: " "${common[@]}" -- --passes beauty,nosuch
-usage_case "The following argument was not expected: extra.json" "${common[@]}" -- extra.json
+usage_case "unexpected argument 'extra.json' after SCENE " "${common[@]}" -- extra.json
 checks=$((checks + 1))
 [[ ! -e shots && ! -e b.%04d.exr ]] || problem "a usage error created files: $(ls)"
 
@@ -238,6 +238,35 @@ expect_status 0
 expect_in "--orbit 90 --orbit-frames 1-8 --skip-existing"
 expect_not_in "--orbit-frames 3-4"
 rm -rf shots
+
+section "orb-render's options given to orb-farm: the scene's (an importer's), and any other"
+# A PLY cloud's --radius, given before -- as orb-import and orb-render take it, reaches every task.
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n' >cloud.ply
+cloud=(cloud.ply --frames 1-2 -o shots/c.%04d.exr --width 8 --height 6 --spp 2)
+run "$farm" "${cloud[@]}" --radius 0.25 --dry-run -- --seed 3
+expect_status 0
+expect_in "--radius=0.25 --seed 3 --skip-existing"
+mkdir -p shots
+(cd "$work" && SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_JOB_ID=1 bash -c "$(nth_script 1 "$out")" 2>/dev/null) ||
+    problem "the task script failed"
+# Its frame is what orb-render --radius 0.25 renders, not the cloud read without it.
+run "$bin/orb-render" cloud.ply --frames 1-2 -o shots/c.%04d.exr --width 8 --height 6 --spp 2 --seed 3 --radius 0.25 --missing
+checks=$((checks + 1))
+[[ $out == 2 ]] || problem "frame 1 of the task is not orb-render --radius 0.25's: missing '$out'"
+run "$bin/orb-render" cloud.ply --frames 1-2 -o shots/c.%04d.exr --width 8 --height 6 --spp 2 --seed 3 --missing
+checks=$((checks + 1))
+[[ $out == $'1\n2' ]] || problem "--radius did not change the scene the task rendered: missing '$out'"
+# A flag of another importer's group is taken, and orb-render's warning passed on.
+run "$farm" "${cloud[@]}" --cell --dry-run
+expect_status 0
+expect_in "--cell --skip-existing"
+expect_in "ignored --cell (Molecule input): the input is read as ply" err
+rm -rf shots
+# Checked by orb-render before anything is submitted or created.
+usage_case "--radius: expected a radius > 0, got '-1'" "${cloud[@]}" --radius=-1
+usage_case "unknown option --radiuss" "${cloud[@]}" --radiuss 1
+usage_case "--non-spheres needs a value" "${cloud[@]}" --non-spheres
+usage_case "--cell takes no value" "${cloud[@]}" --cell=yes
 
 section "dry run: more tasks than MaxArraySize"
 mkdir -p "$work/fake-slurm"

@@ -83,6 +83,7 @@ void check_attributes(const Scene& scene) {
         if (property.values.size() != spheres)
             throw std::logic_error("molecular frame: property " + property.name + " has not one value per sphere");
         for (float v : property.values) {
+            if (!has_value(v)) continue;  // a sphere that is not an atom (the cell, a light) has no value
             if (!std::isfinite(v)) throw std::logic_error("molecular frame: property " + property.name + " not finite");
             if (property.categorical() && !(v >= 0 && v < property.labels.size() && v == std::floor(v)))
                 throw std::logic_error("molecular frame: property " + property.name + " indexes no label");

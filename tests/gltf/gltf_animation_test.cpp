@@ -92,7 +92,7 @@ TEST(GltfAnimation, ABrokenChannelCostsItsMotionNotTheScene) {
       "nodes":[{"name":"Ball","extensions":{"KHR_implicit_shapes":{"shape":0}}}],
       "animations":[{"samplers":[{"input":5,"output":6}],"channels":[{"sampler":0,"target":{"node":0,"path":"translation"}}]}],
       "scenes":[{"nodes":[0]}]})";
-    const GltfImportResult result = import_gltf(text, "broken.gltf", "", {});
+    const GltfImportResult result = import_gltf(text, "broken.gltf", "", without_default_light());
     ASSERT_EQ(result.scene.spheres.size(), 1u);
     EXPECT_TRUE(result.scene.animation.empty());
     EXPECT_TRUE(any_warning_contains(result, "animation 0 channel 0 input: accessor 5 does not exist; the channel is ignored"));

@@ -52,7 +52,10 @@ fs::path scratch(const std::string& name) {
 
 TEST(GltfCli, FlagsReachTheImporter) {
     const fs::path out = scratch("out.json");
-    ToolRun run = run_import(quote(generated("scenes.gltf")) + " --scene two", out);
+    ToolRun run = run_import(quote(generated("scenes.gltf")) + " --gltf-scene two", out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(load_scene_json(run.out, "out").spheres.at(0).name, "Second");
+    run = run_import(quote(generated("scenes.gltf")) + " --scene two", out);  // the older name, kept for scripts
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(load_scene_json(run.out, "out").spheres.at(0).name, "Second");
 
@@ -60,7 +63,7 @@ TEST(GltfCli, FlagsReachTheImporter) {
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(load_scene_json(run.out, "out").camera.position, (Vec3{10, 0, 0}));
 
-    run = run_import(quote(generated("non_sphere.gltf")) + " --non-spheres bound", out);
+    run = run_import(quote(generated("non_sphere.gltf")) + " --non-spheres bound --no-default-light", out);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(load_scene_json(run.out, "out").spheres.size(), 2u);
 
@@ -92,7 +95,7 @@ TEST(GltfCli, FlagsReachTheImporter) {
     EXPECT_NO_THROW(sphere_named(load_scene_json(run.out, "out"), "Sun"));
     EXPECT_LT(load_scene_json(run.out, "out").camera.position[2], 100.0) << "framed the scene, not the sun";
 
-    run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance 0.01", out);
+    run = run_import(quote(generated("nested.gltf")) + " --sphere-tolerance 0.01 --no-default-light", out);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_EQ(load_scene_json(run.out, "out").spheres.size(), 3u);
 

@@ -58,7 +58,7 @@ TEST_P(Containers, PointCloudsUseRadiusAndColourAttributes) {
     // No _RADIUS: 1% of the bounding-box diagonal (4 x 3 box: diagonal 5).
     expect_sphere(scene, "Plain.point1", {14, 0, 0}, 0.05);
 
-    GltfImportOptions options;
+    GltfImportOptions options = without_default_light();
     options.point_radius = 0.3;
     const GltfImportResult fixed = import_generated("points" + GetParam(), options);
     expect_sphere(fixed.scene, "Plain.point2", {10, 3, 0}, 0.3);
@@ -72,7 +72,7 @@ TEST_P(Containers, NonSpheresAreSkippedWithOneWarningBoundedOrRefused) {
     ASSERT_EQ(skipped.warnings.size(), 1u);
     EXPECT_NE(skipped.warnings[0].find("'Cube'"), std::string::npos) << skipped.warnings[0];
 
-    GltfImportOptions bound;
+    GltfImportOptions bound = without_default_light();
     bound.non_spheres = NonSpherePolicy::Bound;
     const GltfImportResult bounded = import_generated("non_sphere" + GetParam(), bound);
     ASSERT_EQ(bounded.scene.spheres.size(), 2u);
@@ -106,7 +106,7 @@ TEST_P(Containers, OpenSurfacesOnASphereAreNotSpheres) {
     for (const char* open : {"'Band'", "'Hemisphere'", "'Cap'"})
         EXPECT_NE(result.warnings[0].find(open), std::string::npos) << result.warnings[0];
 
-    GltfImportOptions bound;
+    GltfImportOptions bound = without_default_light();
     bound.non_spheres = NonSpherePolicy::Bound;
     const Scene bounded = import_generated("parts" + GetParam(), bound).scene;
     EXPECT_EQ(bounded.spheres.size(), 9u);
@@ -179,10 +179,10 @@ TEST(GltfGeometry, NonUniformScaleWarnsAndUsesTheLargestAxis) {
 TEST(GltfGeometry, SphereToleranceDecides) {
     // A UV sphere with 16 segments is exact at its vertices: it passes even a
     // tiny tolerance; a cube never passes, whatever the tolerance.
-    GltfImportOptions tight;
+    GltfImportOptions tight = without_default_light();
     tight.sphere_tolerance = 1e-6;
     EXPECT_EQ(import_generated("nested.gltf", tight).scene.spheres.size(), 3u);
-    GltfImportOptions loose;
+    GltfImportOptions loose = without_default_light();
     loose.sphere_tolerance = 0.5;
     EXPECT_EQ(import_generated("non_sphere.gltf", loose).scene.spheres.size(), 1u);
 }
@@ -221,7 +221,7 @@ TEST(GltfGeometry, SparseAccessorOverZeros) {
                     "sparse":{"count":1,"indices":{"bufferView":0,"componentType":5125},"values":{"bufferView":1}}}],
       "meshes":[{"primitives":[{"attributes":{"POSITION":0},"mode":0}]}],
       "nodes":[{"name":"P","mesh":0}],"scenes":[{"nodes":[0]}]})";
-    GltfImportOptions options;
+    GltfImportOptions options = without_default_light();
     options.point_radius = 0.5;
     const Scene scene = import_gltf(text, "sparse.gltf", "", options).scene;
     ASSERT_EQ(scene.spheres.size(), 3u);

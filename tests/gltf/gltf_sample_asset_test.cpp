@@ -15,6 +15,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <span>
 #include <set>
 #include <string>
 #include <tuple>
@@ -65,11 +66,11 @@ TEST(GltfSampleAsset, MetalRoughSpheresKeepEveryMaterialFactor) {
     ASSERT_EQ(labels.size(), 4u);
 
     // What came in.
-    ASSERT_EQ(scene.spheres.size(), 98u);
+    ASSERT_EQ(scene.spheres.size(), 98u + 1u);  // and the default key light, the last
     std::multiset<Factors> imported;
     std::map<std::tuple<double, double, double>, int> per_colour;
     const std::regex percentages(R"((?:g_)?m(\d+)%_r(\d+)%)");  // g_: the gold ones
-    for (const Sphere& sphere : scene.spheres) {
+    for (const Sphere& sphere : std::span(scene.spheres).first(98)) {
         const Material& m = scene.materials.at(sphere.material);
         EXPECT_EQ(m.type, MaterialType::Pbr) << sphere.name;
         imported.insert({m.color[0], m.color[1], m.color[2], m.metallic, m.roughness});
@@ -98,6 +99,7 @@ TEST(GltfSampleAsset, MetalRoughSpheresKeepEveryMaterialFactor) {
     EXPECT_EQ(scene.environment.kind, EnvironmentKind::Color);
     EXPECT_EQ(scene.environment.color, (Vec3{kDefaultEnvironmentRadiance, kDefaultEnvironmentRadiance,
                                              kDefaultEnvironmentRadiance}));
+    EXPECT_EQ(scene.spheres.back().name, "default key light");
 }
 
 }  // namespace

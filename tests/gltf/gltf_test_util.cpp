@@ -19,6 +19,11 @@ std::string read_file(const std::string& path) {
 
 std::string generated(const std::string& name) { return std::string(ORB_GLTF_GENERATED_DIR) + "/" + name; }
 
+GltfImportOptions without_default_light(GltfImportOptions options) {
+    options.default_light = false;
+    return options;
+}
+
 GltfImportResult import_generated(const std::string& name, const GltfImportOptions& options) {
     const std::string path = generated(name);
     const std::string dir = std::filesystem::path(path).parent_path().string();

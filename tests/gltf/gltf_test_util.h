@@ -11,8 +11,14 @@ namespace orb::gltf_test {
 std::string read_file(const std::string& path);
 std::string generated(const std::string& name);  // path of a generated asset
 
+// Options that leave out the default light (a key light sphere and a grey
+// environment, for an asset without any light): the tests that count an
+// asset's spheres count its own; gltf_default_light_test.cpp checks the light.
+GltfImportOptions without_default_light(GltfImportOptions options = {});
+
 // Imports a generated asset (name with extension) with its folder as base.
-GltfImportResult import_generated(const std::string& name, const GltfImportOptions& options = {});
+GltfImportResult import_generated(const std::string& name,
+                                  const GltfImportOptions& options = without_default_light());
 
 // The sphere with this name; fails the test (and throws) when missing.
 const Sphere& sphere_named(const Scene& scene, const std::string& name);

@@ -129,7 +129,7 @@ TEST(Textures, WithoutADecoderOnlyTheFactorsCountAndTheWarningSaysWhy) {
 
 // Four broken images: each is named in a warning and its material keeps its factor.
 TEST(Textures, BrokenImagesAreWarnedAboutNeverFatal) {
-    const GltfImportResult result = import_generated("bad_images.gltf", with_decoder());
+    const GltfImportResult result = import_generated("bad_images.gltf", without_default_light(with_decoder()));
     ASSERT_EQ(result.scene.spheres.size(), 4u);
     for (int k = 0; k < 4; ++k)
         expect_color(material_of(result.scene, "Ball" + std::to_string(k)).color, {0.1 * (k + 1), 0.5, 0.5});
@@ -209,7 +209,7 @@ TEST(TextureDecoder, CorruptBytesGiveAnErrorOrTexels) {
 // (0.00017 from the exact mean here), hence the 1e-3.
 TEST(Textures, ARealTexturedBoxTakesItsTexturesMean) {
     const std::string path = std::string(ORB_GLTF_SAMPLE_ASSETS_DIR) + "/BoxTextured/BoxTextured.glb";
-    GltfImportOptions options = with_decoder();
+    GltfImportOptions options = without_default_light(with_decoder());
     options.non_spheres = NonSpherePolicy::Bound;
     const GltfImportResult result = import_gltf(read_file(path), path, "", options);
     ASSERT_EQ(result.scene.spheres.size(), 1u);

@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <tuple>
 
 #include "molecular_test_util.h"
 #include "orb/scene/elements.h"
+#include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
+#include "orb/scene/sphere_styling.h"
 
 namespace orb {
 namespace {
@@ -148,6 +151,39 @@ TEST(MolecularFiles, ExtendedXyzColumnsLatticeAndFrames) {
     EXPECT_EQ(scene.materials[1].name, "cell");
     // Without --cell the atoms are all.
     EXPECT_EQ(atom_count(open("extended.xyz", "xyz")->frame(0)), 192u);
+}
+
+// The cell and the lights are not atoms: they carry no value of any property,
+// so colouring by one leaves the cell grey, and the written scene says null.
+TEST(MolecularFiles, TheCellAndTheLightsHaveNoPropertyValuesAndStayGreyUnderColourBy) {
+    for (const auto& [file, format, by] : {std::tuple{"extended.xyz", "xyz", "CS_1"},
+                                          std::tuple{"polymer-10-frames.lammpstrj", "lammps-dump", "mol"},
+                                          std::tuple{"ubiquitin.gro", "gro", "element"}}) {
+        Scene scene = open(file, format, {.cell = true})->frame(0);
+        const std::size_t atoms = static_cast<std::size_t>(std::count_if(
+            scene.spheres.begin(), scene.spheres.end(), [&](const Sphere& s) { return scene.materials[s.material].name == "atom"; }));
+        ASSERT_GT(scene.spheres.size(), atoms + 2) << file << ": the cell's spheres and two lights follow the atoms";
+        ASSERT_EQ(scene.materials[scene.spheres[atoms].material].name, "cell") << file;
+        ASSERT_FALSE(scene.sphere_attributes.properties.empty()) << file;
+        for (const SphereProperty& p : scene.sphere_attributes.properties)
+            for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+                EXPECT_EQ(has_value(p.values[i]), i < atoms) << file << " " << p.name << " sphere " << i;
+        const float grey = scene.sphere_attributes.colors[3 * atoms];
+        SphereStyleOptions colour_by;
+        colour_by.color_by = by;
+        apply_sphere_styling(scene, colour_by, file);
+        for (std::size_t i = atoms; i < scene.spheres.size(); ++i) {
+            if (scene.materials[scene.spheres[i].material].name != "cell") continue;
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(scene.sphere_attributes.colors[3 * i + c], grey) << file << " sphere " << i;
+        }
+        // null in the JSON form, and back; the binary form and the hash agree.
+        const std::string text = write_scene_json(scene);
+        EXPECT_NE(text.find("null"), std::string::npos) << file;
+        const Scene read = load_scene_json(text, file);
+        EXPECT_EQ(scene_content_hash(read), scene_content_hash(scene)) << file;
+        EXPECT_FALSE(has_value(read.sphere_attributes.properties.front().values.back())) << file;
+        EXPECT_EQ(scene_content_hash(load_scene_binary(write_scene_binary(scene), file)), scene_content_hash(scene)) << file;
+    }
 }
 
 TEST(MolecularFiles, PlainXyzTrajectory) {

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "molecular_test_util.h"
+#include "orb/scene/sphere_styling.h"
 #include "orb/scene/elements.h"
 #include "orb/scene/error.h"
 
@@ -97,9 +98,9 @@ TEST(MolecularFrames, LammpsTriclinicBoxRadiusColumnAndTypes) {
     EXPECT_EQ(scene.spheres[1].radius, 0.7);
     const SphereProperty& type = *property(scene, "type");
     EXPECT_EQ(label_of(type, 1), "2");
-    // Types coloured apart; the lights carry black and the first label.
+    // Types coloured apart; the lights carry black and no type.
     EXPECT_NE(scene.sphere_attributes.colors[0], scene.sphere_attributes.colors[3]);
-    EXPECT_EQ(type.values.back(), 0.0f);
+    EXPECT_FALSE(has_value(type.values.back()));
     EXPECT_EQ(scene.sphere_attributes.colors.back(), 0.0f);
 }
 
@@ -129,15 +130,20 @@ TEST(MolecularFrames, TypeNKeepsOkabeItoColourNMinusOneInEveryFrame) {
     EXPECT_EQ(color(second, 0), orange);
 }
 
-TEST(MolecularFrames, NumericPropertiesOfLightsDoNotWidenTheirRange) {
+TEST(MolecularFrames, TheLightsHaveNoValueSoTheyWidenNoRange) {
     const std::string dump =
         "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n0 10\n0 10\n0 10\n"
         "ITEM: ATOMS id x y z c_temp\n1 1 1 1 300\n2 5 5 5 350\n";
     const Scene scene = open_molecular_bytes(dump, "t.lammpstrj", "lammps-dump", {})->frame(0);
     const SphereProperty& temp = *property(scene, "c_temp");
     ASSERT_EQ(temp.values.size(), scene.spheres.size());
-    EXPECT_EQ(temp.values[2], 300.0f);
-    EXPECT_EQ(temp.values[3], 300.0f);
+    EXPECT_FALSE(has_value(temp.values[2]));
+    EXPECT_FALSE(has_value(temp.values[3]));
+    Scene styled = scene;
+    SphereStyleOptions by_temperature;
+    by_temperature.color_by = "c_temp";
+    const std::pair<double, double> atoms_range{300, 350};
+    EXPECT_EQ(apply_sphere_styling(styled, by_temperature, "t").color_range, atoms_range);
 }
 
 }  // namespace

@@ -134,6 +134,8 @@ if [[ -r $bash_completion ]]; then
     expect_not_offered "orb-frames' frame list" box.scn beauty.exr -- "$bin/orb-frames" ""
     expect_offers "orb-frames' file name pattern" beauty.exr -- "$bin/orb-frames" 1-3 ""
     expect_offers "orb-import's environment map" beauty.exr -- "$bin/orb-import" --environment ""
+    # Choices too many for a placeholder within 80 columns, listed in the description ("one of: ...").
+    expect_offers "orb-import's formats" gltf ply lammps-dump -- "$bin/orb-import" --from ""
     expect_offers "orb-farm's options" --slices --sbatch-arg -- "$bin/orb-farm" --s
 fi
 

@@ -2,7 +2,8 @@
 # The Debian package as a user gets it, built by cpack from this build folder
 # (the binaries the other tests ran; scripts/package.sh makes the release one
 # from a clean clone):
-#   - lintian: an error fails the test; its warnings are printed;
+#   - lintian: an error fails the test; its warnings are printed, and the
+#     maintainer scripts that ran ldconfig for private modules are gone;
 #   - its control fields: name, version, Depends from dpkg-shlibdeps;
 #   - its files: the tools in /usr/bin, kernels, OCIO config and scenes in
 #     /usr/share/orb, a man page and a bash completion for every tool, the
@@ -49,6 +50,11 @@ lintian_status=$?
 grep -v '^running with root privileges' "$work/lintian.log"
 ((lintian_status == 0)) || problem "lintian reports errors (status $lintian_status)"
 grep -q '^E: ' "$work/lintian.log" && problem "lintian: $(grep '^E: ' "$work/lintian.log")"
+grep -q 'maintscript-calls-ldconfig' "$work/lintian.log" && problem "lintian: $(grep 'maintscript-calls-ldconfig' "$work/lintian.log")"
+for script in postinst postrm; do
+    dpkg-deb -I "$deb" "$script" >/dev/null 2>&1 && problem "the package has a $script: $(dpkg-deb -I "$deb" "$script")"
+done
+grep -q 'python3' <<<"$(dpkg-deb -f "$deb" Depends)" || problem "Depends does not name python3 (orb-gen needs it)"
 
 # ---- control fields ----
 [[ $(dpkg-deb -f "$deb" Package) == orb ]] || problem "Package is not orb"
@@ -99,6 +105,10 @@ options=(--spp 4 --width 40 --height 30 --seed 3 -q)
 run_installed orb-import "$root/usr/share/orb/scenes/cornell.scn" -o box.json -q || problem "installed orb-import failed"
 run_installed orb-render box.json "${options[@]}" -o installed.exr || problem "installed orb-render failed"
 run_installed orb-tonemap installed.exr -o installed.png -q || problem "installed orb-tonemap (its OCIO config) failed"
+# scripts/orb-gen.py, installed as orb-gen under Debian's python3: its scene renders.
+head -1 "$root/usr/bin/orb-gen" | grep -qx '#!/usr/bin/python3' || problem "installed orb-gen's shebang: $(head -1 "$root/usr/bin/orb-gen")"
+run_installed orb-gen --preset 10 -o ten.orb || problem "installed orb-gen failed"
+run_installed orb-render ten.orb "${options[@]}" -o ten.exr || problem "the installed orb-render failed on orb-gen's scene"
 [[ -s installed.png ]] || problem "no PNG from the installed orb-tonemap"
 # The unpacked tools make what the build tree's make: same scene, same samples.
 "$bin/orb-import" "$root/usr/share/orb/scenes/cornell.scn" -q | "$bin/orb-render" - "${options[@]}" -o built.exr ||

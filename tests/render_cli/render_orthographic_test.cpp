@@ -53,7 +53,7 @@ TEST_F(RenderOrthographic, TheKhronosCamerasAssetsOrthographicCameraRendersItsVi
     EXPECT_EQ(scene.camera.orthographic_height, 2.0);  // 2 ymag
     EXPECT_EQ(scene.render.width, 480);                // xmag/ymag = 1
     EXPECT_EQ(scene.render.height, 480);
-    ASSERT_EQ(scene.spheres.size(), 1u);
+    ASSERT_EQ(scene.spheres.size(), 2u);  // the quad's bounding sphere, and the default key light (out of view)
     const double radius = scene.spheres[0].radius;
     EXPECT_NEAR(radius, std::sqrt(0.5), 1e-4);  // the unit quad's half diagonal
 

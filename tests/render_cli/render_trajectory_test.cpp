@@ -113,4 +113,24 @@ TEST_F(RenderTrajectory, AFramePastTheEndIsOneErrorBeforeAnythingRenders) {
     EXPECT_FALSE(fs::exists(path("w.0002.exr")));
 }
 
+// An error met in one frame names it: chemfiles' extended XYZ has the property
+// CS_1 in its first two frames only, and frame 3 is where --color-by CS_1 fails.
+TEST_F(RenderTrajectory, AnErrorInAFrameNamesTheFrame) {
+    const std::string xyz = std::string(ORB_TEST_DATA_DIR) + "/chemfiles-tests-data/extended.xyz";
+    const auto run = render({xyz, "--color-by", "CS_1", "--frames", "1-3", "--spp", "1", "--width", "16", "--height",
+                             "12", "-o", path("x.%04d.exr")});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_NE(run.err.find("orb-render: error: frame 3: " + xyz + ": --color-by CS_1: no such sphere property"),
+              std::string::npos)
+        << run.err;
+    EXPECT_TRUE(fs::exists(path("x.0002.exr")));
+    EXPECT_FALSE(fs::exists(path("x.0003.exr")));
+    // The first frame's own error names it too.
+    const auto first = render({xyz, "--color-by", "nosuch", "--frames", "1-3", "--spp", "1", "-o", path("y.%04d.exr")});
+    EXPECT_EQ(first.exit_code, 1);
+    EXPECT_NE(first.err.find("orb-render: error: frame 1: " + xyz + ": --color-by nosuch: no such sphere property"),
+              std::string::npos)
+        << first.err;
+}
+
 }  // namespace

@@ -1,6 +1,9 @@
 // Scene files are recognised by their content, not their name.
 #include <gtest/gtest.h>
 
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <set>
 #include <string>
 #include <string_view>
@@ -41,6 +44,47 @@ TEST(SceneImporters, EveryWordFindsItsImporter) {
     EXPECT_EQ(orb::find_scene_importer("glb"), orb::find_scene_importer("gltf"));
     EXPECT_EQ(orb::find_scene_importer("json"), orb::find_scene_importer("orb"));
     EXPECT_EQ(orb::find_scene_importer("obj"), nullptr);
+}
+
+// Each importer's option group, as a tool's command line gets them all.
+TEST(SceneImporters, EachOptionGroupAddsItsOwnOptionsToACommandLine) {
+    CLI::App app;
+    orb::ImportOptions options;
+    std::size_t groups = 0;
+    for (const orb::ImportOptionGroup* group : orb::import_option_groups()) {
+        ++groups;
+        ASSERT_NE(group->add, nullptr) << group->heading;
+        const std::size_t before = app.get_options().size();
+        group->add(app, options);  // CLI11 throws for a name another group has
+        const std::vector<CLI::Option*> added = app.get_options();
+        EXPECT_GT(added.size(), before) << group->heading;
+        for (std::size_t i = before; i < added.size(); ++i)
+            EXPECT_EQ(added[i]->get_group(), group->heading) << added[i]->get_name();
+    }
+    EXPECT_EQ(groups, 3u);  // glTF, PLY, and the molecular readers' one, each once
+    for (const orb::SceneImporter& importer : orb::scene_importers()) {
+        if (!importer.options) continue;
+        const std::vector<const orb::ImportOptionGroup*> all = orb::import_option_groups();
+        EXPECT_NE(std::find(all.begin(), all.end(), importer.options), all.end()) << importer.name;
+    }
+    app.parse(std::vector<std::string>{"bound", "--non-spheres", "0.5", "--radius", "--cell", "covalent", "--atom-radius",
+                                       "2", "--gltf-scene"});  // reversed, as CLI11 takes a vector
+    EXPECT_EQ(options.gltf.scene, "2");
+    EXPECT_EQ(options.gltf.non_spheres, orb::NonSpherePolicy::Bound);
+    EXPECT_EQ(options.ply.radius, 0.5);
+    EXPECT_TRUE(options.molecular.cell);
+    EXPECT_EQ(options.molecular.radius, orb::AtomRadius::Covalent);
+}
+
+TEST(SceneImporters, TheirNumericOptionsRefuseWhatIsNotAFiniteNumberInRange) {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"nan", "--radius"}, {"inf", "--radius"},
+                                                 {"-1", "--light-radius"}, {"2", "--sphere-tolerance"},
+                                                 {"1x", "--point-radius"}}) {
+        CLI::App app;
+        orb::ImportOptions options;
+        for (const orb::ImportOptionGroup* group : orb::import_option_groups()) group->add(app, options);
+        EXPECT_THROW(app.parse(std::vector<std::string>(args)), CLI::ValidationError) << args[1] << " " << args[0];
+    }
 }
 
 TEST(SceneImporters, EveryEntryIsComplete) {

@@ -148,7 +148,10 @@ TEST(SphereAttributes, ValidationNamesTheArrayAndSphere) {
               std::string::npos);
     scene = attributed_scene();
     scene.sphere_attributes.properties[0].values[9] = std::numeric_limits<float>::infinity();
-    EXPECT_EQ(validation_error(scene), "s.json: sphere_properties[0].values[9]: expected a finite number");
+    EXPECT_EQ(validation_error(scene), "s.json: sphere_properties[0].values[9]: expected a finite number (or null: no value)");
+    scene = attributed_scene();
+    scene.sphere_attributes.properties[0].values[9] = orb::kNoValue;  // a sphere without a value: valid
+    EXPECT_EQ(validation_error(scene), "(no error)");
     scene = attributed_scene();
     scene.sphere_attributes.properties[0].values.pop_back();
     EXPECT_EQ(validation_error(scene),

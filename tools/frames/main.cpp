@@ -11,7 +11,7 @@
 #include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
-#include "orb/cli/molecule_options.h"
+#include "orb/cli/scene_reading.h"
 #include "orb/cli/legend_output.h"
 #include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
@@ -26,16 +26,16 @@ struct Settings {
     bool paths = false;
     bool missing = false;
     std::string scene;
-    bool allow_empty = false;  // --scene may have no spheres
-    orb::MolecularImportOptions molecule;  // --atom-radius, --cell, ...: a molecular --scene as orb-render builds it
+    // How --scene is read, as orb-render reads it: every importer's options, --environment, --allow-empty.
+    orb::cli::SceneReading reading;
     orb::cli::SphereStyleArguments style;  // --color-by, --radius-scale, ...: the --scene styled as orb-render styles it
     orb::request::RequestOptions render;  // the render the frames are asked to hold
 };
 
 // Whether any option of the render asked for was given.
 bool any_render_option(const Settings& s) {
-    return !s.scene.empty() || s.allow_empty || s.render != orb::request::RequestOptions{} ||
-           s.molecule != orb::MolecularImportOptions{} || !orb::cli::sphere_style_options(s.style).empty();
+    return !s.scene.empty() || s.reading.import.allow_empty || s.render != orb::request::RequestOptions{} ||
+           orb::cli::any_scene_reading_option(s.reading) || !orb::cli::sphere_style_options(s.style).empty();
 }
 
 // "-" reads the list from stdin, where newlines and spaces separate items as
@@ -93,8 +93,9 @@ int main(int argc, char** argv) {
                            "With --missing: the scene orb-render renders, so that its content, camera and render "
                            "block are compared too")
                 ->option_text("SCENE");
-            app.add_flag("--allow-empty", s.allow_empty, "With --scene: accept a scene without spheres, as orb-render does");
-            orb::cli::add_molecule_options(app, s.molecule, false);
+            app.add_flag("--allow-empty", s.reading.import.allow_empty,
+                         "With --scene: accept a scene without spheres, as orb-render does");
+            orb::cli::add_scene_reading_options(app, s.reading);
             orb::cli::add_sphere_style_options(app, s.style);
             orb::request::add_request_options(app, s.render);
             app.add_option("--samples", samples, "Older name of --sample-range")->option_text("START:COUNT");
@@ -130,7 +131,7 @@ int main(int argc, char** argv) {
             std::optional<orb::cli::LegendOutput> legend =
                 orb::cli::LegendOutput::prepare(s.style, {{"--scene", s.scene}});
             std::optional<orb::frames::MissingFrames> judge;
-            if (s.missing) judge.emplace(s.scene, s.render, frames, s.allow_empty, s.molecule,
+            if (s.missing) judge.emplace(s.scene, s.render, frames, s.reading,
                                         orb::cli::sphere_style_options(s.style));
             if (legend) legend->write(judge->styled(), s.scene, s.style.color_range.empty() && judge->frames_differ());
             std::string out;

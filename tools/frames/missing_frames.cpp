@@ -6,20 +6,21 @@
 namespace orb::frames {
 
 MissingFrames::MissingFrames(const std::string& scene_path, const request::RequestOptions& options,
-                             const std::string& frames, bool allow_empty, const MolecularImportOptions& molecule,
+                             const std::string& frames, const cli::SceneReading& reading,
                              const SphereStyleOptions& style)
     : style_(style) {
     // The orbit is checked before a scene of millions of spheres is read.
     settings_ = request::resolve_request(options, nullptr, &frames, true);
     if (scene_path.empty()) return;
-    trajectory_ = request::open_trajectory(scene_path, molecule);
+    trajectory_ = request::open_trajectory(scene_path, reading);
     if (trajectory_) {
         label_ = scene_path;
-        scene_ = request::trajectory_frame(*trajectory_, 1, label_);
+        scene_ = request::for_frame(1, [&] { return request::trajectory_frame(*trajectory_, 1, label_); });
+        styled_ = request::for_frame(1, [&] { return apply_sphere_styling(*scene_, style_, label_); });
     } else {
-        scene_ = request::read_scene(scene_path, label_, allow_empty, molecule);
+        scene_ = request::read_scene(scene_path, label_, reading);
+        styled_ = apply_sphere_styling(*scene_, style_, label_);
     }
-    styled_ = apply_sphere_styling(*scene_, style_, label_);
     settings_ = request::resolve_request(options, &scene_->render, &frames, true);
 }
 
@@ -28,11 +29,14 @@ exr::SceneIdentity MissingFrames::identity_at(long frame) {
     // A frame past a trajectory's end is an error, as in orb-render.
     // A trajectory's frame 1 is the scene read and styled already.
     const bool read_frame = trajectory_ && frame != 1;
-    Scene posed = read_frame   ? request::trajectory_frame(*trajectory_, frame, label_)
-                  : trajectory_ ? *scene_
-                                : request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
-    if (read_frame) apply_sphere_styling(posed, style_, label_);
-    request::apply_camera_request(posed, settings_, frame, label_);
+    Scene posed = request::for_frame(frame, [&] {
+        Scene scene = read_frame   ? request::trajectory_frame(*trajectory_, frame, label_)
+                      : trajectory_ ? *scene_
+                                    : request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
+        if (read_frame) apply_sphere_styling(scene, style_, label_);
+        request::apply_camera_request(scene, settings_, frame, label_);
+        return scene;
+    });
     exr::SceneIdentity identity =
         request::scene_identity(posed, scene_content_hash(posed), *settings_.width, *settings_.height);
     const bool frames_differ = trajectory_ && trajectory_->frame_count() > 1;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "orb/cli/scene_reading.h"
 #include "orb/exr/render_request.h"
 #include "orb/request/request_options.h"
 #include "orb/request/request_settings.h"
@@ -18,16 +19,15 @@ namespace orb::frames {
 
 class MissingFrames {
 public:
-    // Reads `scene_path` as orb-render does when it is not empty (throws
-    // orb::InputError for a bad scene, and for one without spheres unless
-    // `allow_empty`); without it the scene, its camera and what its render
+    // Reads `scene_path` as orb-render does, as `reading` asks, when it is not
+    // empty (throws orb::InputError for a bad scene, and for one without
+    // spheres unless --allow-empty); without it the scene, its camera and what its render
     // block would fill in are not compared. `frames` is the frame list
     // judged: the range of --orbit unless --orbit-frames gives it. A
     // molecular trajectory is read frame by frame, as orb-render reads it,
     // and each scene is styled (--color-by, ...) as orb-render styles it.
     MissingFrames(const std::string& scene_path, const request::RequestOptions& options, const std::string& frames,
-                  bool allow_empty, const MolecularImportOptions& molecule = {},
-                  const SphereStyleOptions& style = {});
+                  const cli::SceneReading& reading, const SphereStyleOptions& style = {});
 
     exr::OutputJudgement judge(const std::string& path, long frame);
 

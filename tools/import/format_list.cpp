@@ -28,7 +28,7 @@ std::string format_list() {
         std::vector<std::string_view> words{importer.name};
         words.insert(words.end(), importer.aliases.begin(), importer.aliases.end());
         rows.push_back({joined(words, ", "), joined(importer.extensions, " "),
-                        importer.option_group.empty() ? "-" : std::string(importer.option_group),
+                        importer.options ? std::string(importer.options->heading) : "-",
                         std::string(importer.description)});
     }
     std::size_t format_width = 0, files_width = 0, options_width = 0;
@@ -45,23 +45,6 @@ std::string format_list() {
         text += row.description + "\n";
     }
     return text;
-}
-
-std::string options_for_other_formats(const CLI::App& app, std::string_view format) {
-    const SceneImporter* reader = find_scene_importer(format);
-    std::string given;
-    std::vector<std::string_view> groups;  // each once, should two formats share one
-    for (const SceneImporter& importer : scene_importers()) {
-        if (importer.option_group.empty() || (reader && importer.option_group == reader->option_group)) continue;
-        if (std::find(groups.begin(), groups.end(), importer.option_group) != groups.end()) continue;
-        groups.push_back(importer.option_group);
-        for (const CLI::Option* option : app.get_options()) {
-            if (option->get_group() != importer.option_group || option->count() == 0) continue;
-            if (!given.empty()) given += ", ";
-            given += option->get_name() + " (" + std::string(importer.option_group) + ")";
-        }
-    }
-    return given;
 }
 
 }  // namespace orb::import_tool

@@ -6,20 +6,17 @@
 #include <string>
 #include <vector>
 
-#include "environment_options.h"
 #include "format_list.h"
-#include "gltf_options.h"
-#include "map_paths.h"
 #include "orb/cli/camera_options.h"
 #include "orb/cli/io.h"
-#include "orb/cli/messages.h"
-#include "orb/cli/molecule_options.h"
-#include "orb/cli/output_file.h"
 #include "orb/cli/legend_output.h"
+#include "orb/cli/map_paths.h"
+#include "orb/cli/messages.h"
+#include "orb/cli/output_file.h"
 #include "orb/cli/output_overlap.h"
+#include "orb/cli/scene_reading.h"
 #include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
-#include "orb/cli/texture_decoder_loader.h"
 #include "orb/scene/error.h"
 #include "orb/scene/import.h"
 #include "orb/scene/importers.h"
@@ -28,7 +25,6 @@
 #include "orb/scene/scene_json.h"
 #include "orb/scene/scn.h"
 #include "output_format.h"
-#include "ply_options.h"
 
 namespace {
 
@@ -69,8 +65,7 @@ struct Arguments {
     std::string to;
     bool strict = false;
     bool list_formats = false;
-    orb::ImportOptions import_options;
-    orb::import_tool::EnvironmentChoice environment;
+    orb::cli::SceneReading reading;  // every importer's options, --environment
     orb::cli::CameraOptions camera;
     orb::cli::SphereStyleArguments style;
 };
@@ -94,27 +89,17 @@ void report_losses(const std::vector<std::string>& losses, bool strict, const st
     for (const auto& loss : losses) orb::cli::warning(loss);
 }
 
-// Options of one format given for an input of another are named, not silently dropped.
-void warn_about_other_formats_options(const CLI::App& app, std::string_view format, const std::string& source) {
-    const std::string given = orb::import_tool::options_for_other_formats(app, format);
-    if (!given.empty())
-        orb::cli::warning(source + ": ignored " + given + ": the input is read as " + std::string(format) +
-                          " (orb-import --list-formats says which options each format takes)");
-}
-
-int run(Arguments& args, const CLI::App& app) {
+int run(Arguments& args) {
+    using orb::cli::rebase_environment_map;
     using orb::import_tool::OutputFormat;
-    using orb::import_tool::rebase_environment_map;
     if (args.list_formats) return orb::cli::print_to_stdout(orb::import_tool::format_list());
     if (args.input.empty()) throw orb::cli::UsageError("missing INPUT (a scene file, or - for stdin)");
     const orb::SphereStyleOptions style = orb::cli::sphere_style_options(args.style);
     const OutputFormat to = orb::import_tool::choose_output_format(args.to, args.output);
+    orb::ImportOptions import_options = orb::cli::import_options_for(args.reading);
     // Without --from, the content (and the name's extension) says the format (orb::import_scene).
-    args.import_options.format = args.from;
-    args.import_options.gltf.strict = args.strict;
-    args.import_options.gltf.image_decoder = orb::cli::texture_decoder();  // glTF textures, through OpenImageIO, loaded when needed
-    // A chosen environment lights the scene: no default light for a glTF asset.
-    if (!args.environment.value.empty()) args.import_options.gltf.default_light = false;
+    import_options.format = args.from;
+    import_options.gltf.strict = args.strict;
 
     // The output is checked and prepared before anything is read or converted.
     orb::cli::refuse_overlapping_paths({{"INPUT", args.input}}, {{"-o", args.output}});
@@ -123,16 +108,16 @@ int run(Arguments& args, const CLI::App& app) {
         orb::cli::LegendOutput::prepare(args.style, {{"INPUT", args.input}, {"-o", args.output}});
     // Checked before the input is read, which may be millions of spheres.
     std::optional<orb::Environment> environment =
-        orb::import_tool::chosen_environment(args.environment, base_directory(args.output));
+        orb::cli::chosen_environment(args.reading.environment, base_directory(args.output));
 
     const std::string source = orb::cli::is_stdio(args.input) ? "<stdin>" : args.input;
     // A numbered series ("frame.*.xyz") is one trajectory of its files' frames.
     const bool series = !orb::cli::is_stdio(args.input) && orb::is_series_pattern(args.input);
     const std::string bytes = series ? std::string() : orb::cli::read_input(args.input);
     orb::ImportResult imported =
-        series ? orb::import_molecular_series(args.input, args.import_options)
-               : orb::import_scene(bytes, source, base_directory(args.input), args.import_options);
-    warn_about_other_formats_options(app, imported.format, source);
+        series ? orb::import_molecular_series(args.input, import_options)
+               : orb::import_scene(bytes, source, base_directory(args.input), import_options);
+    orb::cli::warn_about_other_formats_options(args.reading, imported.format, source);
     report_losses(imported.warnings, args.strict, source);
     for (const std::string& notice : imported.notices) orb::cli::warning(notice);  // additions lose nothing: never fatal
     rebase_environment_map(imported.scene, base_directory(args.input), base_directory(args.output));
@@ -167,23 +152,20 @@ int run(Arguments& args, const CLI::App& app) {
 
 int main(int argc, char** argv) {
     Arguments args;
-    const CLI::App* parsed = nullptr;
     return orb::cli::run_tool(
         argc, argv, "orb-import", kDescription,
         [&](CLI::App& app) {
-            parsed = &app;
             app.add_option("INPUT", args.input, "Scene to read; - reads stdin");
             app.add_option("-o,--output", args.output, "Where to write; - (the default) writes stdout")
                 ->option_text("FILE");
             const std::vector<std::string> formats = orb::scene_format_words();
-            std::string format_choice;
-            for (const std::string& word : formats) {
-                if (!format_choice.empty()) format_choice += '|';
-                format_choice += word;
-            }
-            app.add_option("--from", args.from, "Input format, instead of recognising it by content (--list-formats)")
+            std::string format_words;  // too many to show as a placeholder within 80 columns
+            for (const std::string& word : formats) format_words += (format_words.empty() ? "" : ", ") + word;
+            app.add_option("--from", args.from,
+                           "Input format, instead of recognising it by content, one of: " + format_words +
+                               " (--list-formats)")
                 ->check(CLI::IsMember(formats))
-                ->option_text(format_choice);
+                ->option_text("FORMAT");
             app.add_flag("--list-formats", args.list_formats,
                          "List the input formats: their names, files, options and what they hold; then exit");
             app.add_option("--to", args.to,
@@ -193,15 +175,25 @@ int main(int argc, char** argv) {
                 ->option_text("orb|orb-binary|scn");
             app.add_flag("--strict", args.strict,
                          "Fail (exit 1, no output) instead of warning when information would be lost");
-            app.add_flag("--allow-empty", args.import_options.allow_empty,
+            app.add_flag("--allow-empty", args.reading.import.allow_empty,
                          "Write a scene without spheres instead of failing (a glTF asset of triangle meshes)");
-            orb::import_tool::add_gltf_options(app, args.import_options.gltf);
-            orb::import_tool::add_ply_options(app, args.import_options.ply);
-            orb::cli::add_molecule_options(app, args.import_options.molecular, true);
-            orb::import_tool::add_environment_options(app, args.environment);
+            orb::cli::add_scene_reading_options(app, args.reading);
+            // orb-import writes one frame of a trajectory; orb-render's --frame N renders the same one.
+            // Named, like the group's own options, when the input is of another format.
+            const std::string_view molecules = orb::find_scene_importer("xyz")->options->heading;
+            args.reading.importer_options.push_back(
+                {app.add_option("--frame", args.reading.import.molecular.frame,
+                                "Which frame of a trajectory or model of an ensemble to write (1 = the first, the "
+                                "default)")
+                     ->check(CLI::PositiveNumber)
+                     ->option_text("N")
+                     ->group(std::string(molecules)),
+                 molecules});
+            // The older name of --gltf-scene, kept for scripts (unlisted: orb-frames' --scene is the scene file).
+            app.add_option("--scene", args.reading.import.gltf.scene)->group("");
             orb::cli::add_camera_options(app, args.camera);
             orb::cli::add_sphere_style_options(app, args.style);
             app.footer(kExamples);
         },
-        [&] { return run(args, *parsed); });
+        [&] { return run(args); });
 }

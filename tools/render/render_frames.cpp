@@ -7,10 +7,14 @@
 #include <filesystem>
 #include <optional>
 
+#include <cerrno>
+#include <cstring>
+
 #include "background_writer.h"
 #include "frame_jobs.h"
 #include "frame_claim.h"
 #include "interrupt.h"
+#include "orb/cli/folder_errors.h"
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/output_overlap.h"
@@ -91,8 +95,12 @@ void require_output_folders(const std::vector<Job>& jobs) {
         std::error_code ec;
         if (!std::filesystem::is_directory(folder, ec))
             throw InputError(job.output + ": cannot write (-o): folder " + folder + " does not exist");
-        if (::access(folder.c_str(), W_OK | X_OK) != 0)
-            throw InputError(job.output + ": cannot write (-o): folder " + folder + " is not writable");
+        if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+            const int error = errno;
+            std::string why = cli::unwritable_folder(folder, error);
+            if (why.empty()) why = "folder " + folder + ": " + std::strerror(error);
+            throw InputError(job.output + ": cannot write (-o): " + why);
+        }
         if (checked.size() > 16) break;  // a pattern with the frame in the folder: the first few tell
     }
 }

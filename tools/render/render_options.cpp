@@ -1,7 +1,5 @@
 #include "render_options.h"
 
-#include "orb/cli/molecule_options.h"
-
 #include <cctype>
 #include <charconv>
 #include <climits>
@@ -58,7 +56,7 @@ Details: docs/orb-render.md)";
 void add_render_options(CLI::App& app, RenderOptions& o) {
     const CLI::Validator& seconds = request::positive_number();
     app.add_option("SCENE", o.scene, "Scene file (" + orb::readable_file_names() + ") or - for stdin");
-    app.add_flag("--allow-empty", o.allow_empty, "Render a scene without spheres instead of failing");
+    app.add_flag("--allow-empty", o.reading.import.allow_empty, "Render a scene without spheres instead of failing");
     app.add_option("-o,--output", o.output, "Output EXR, or - for stdout");
     app.add_flag("--list-devices", o.list_devices, "List OpenCL devices and exit");
     app.add_option("--device", o.device, "Device index or name substring (default: fastest GPU, else CPU)");
@@ -74,7 +72,7 @@ void add_render_options(CLI::App& app, RenderOptions& o) {
         ->check(positive)
         ->option_text("E");
     cli::add_sphere_style_options(app, o.style);
-    cli::add_molecule_options(app, o.molecule, false);
+    cli::add_scene_reading_options(app, o.reading);
     app.add_option("--time", o.time_limit, "Stop after this many seconds of rendering")->check(seconds);
     app.add_option("--checkpoint", o.checkpoint, "Rewrite the output every SECONDS while rendering")->check(seconds);
     app.add_option("--resume", o.resume, "Continue the render stored in this orb-render EXR")->option_text("FILE");

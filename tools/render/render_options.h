@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "orb/cli/scene_reading.h"
 #include "orb/cli/sphere_style_options.h"
 #include "orb/request/request_options.h"
-#include "orb/scene/molecular.h"
 
 namespace orb::render_cli {
 
@@ -19,8 +19,9 @@ namespace orb::render_cli {
 // --passes, --fps, ...) are orb::request's, shared with orb-frames.
 struct RenderOptions : request::RequestOptions {
     std::string scene;   // path or "-"
-    bool allow_empty = false;  // --allow-empty: render a scene without spheres
-    MolecularImportOptions molecule;  // --atom-radius, --cell, ...: how a molecular or particle file becomes spheres
+    // How the scene is read: every importer's options (--radius, --cell, --non-spheres, ...), --environment,
+    // --allow-empty (reading.import.allow_empty): as orb-import reads it.
+    cli::SceneReading reading;
     std::string output;  // path or "-"
     bool list_devices = false;
     std::string device;

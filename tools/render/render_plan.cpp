@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
+#include <mutex>
 #include <sstream>
 
 #include "orb/cli/camera_options.h"
@@ -124,6 +126,34 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     exr::require_resumable(*plan.resumed, plan.passes, path);
 }
 
+// pose_at's work (render_plan.h), whose errors pose_at names the frame in.
+PosedFrame pose_scene_at(const RenderPlan& plan, long frame) {
+    PosedFrame posed;
+    posed.frame = frame;
+    // A scene without animation is the same at every frame: the first
+    // frame takes it (and its hash) and every other frame keeps it, unless
+    // --orbit turns its camera. (For a changing scene only the imported
+    // scene and the settings are read, which nothing changes while frames
+    // render: safe on another thread.)
+    if (!changes_per_frame(plan) && plan.frame) return posed;
+    if (plan.trajectory) {
+        // Frame 1 as the plan read and styled it, the first time it is posed.
+        if (frame == 1 && plan.trajectory_first) posed.scene = plan.trajectory_first->take();
+        if (!posed.scene) {
+            posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
+            // Quietly: this runs on the thread that reads the next frame while
+            // one renders, and the range of frame 1 was said when the plan was made.
+            apply_sphere_styling(*posed.scene, plan.style, plan.scene_label);
+        }
+    } else {
+        posed.scene =
+            request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
+    }
+    request::apply_camera_request(*posed.scene, plan.settings, frame, plan.scene_label);
+    posed.hash = scene_content_hash(*posed.scene);
+    return posed;
+}
+
 }  // namespace
 
 RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
@@ -131,16 +161,17 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     // Usage errors before the scene is read; kept for the frames a trajectory reads later.
     plan.style = cli::sphere_style_options(o.style);
     std::optional<cli::LegendOutput> legend = cli::LegendOutput::prepare(o.style, {{"SCENE", o.scene}});
-    plan.trajectory = request::open_trajectory(o.scene, o.molecule);
+    plan.trajectory = request::open_trajectory(o.scene, o.reading);
     Scene imported;
     if (plan.trajectory) {
         plan.scene_label = o.scene;
-        imported = request::trajectory_frame(*plan.trajectory, 1, plan.scene_label);
+        imported = request::for_frame(1, [&] { return request::trajectory_frame(*plan.trajectory, 1, plan.scene_label); });
     } else {
-        imported = request::read_scene(o.scene, plan.scene_label, o.allow_empty, o.molecule);
+        imported = request::read_scene(o.scene, plan.scene_label, o.reading);
     }
     // Before the hash: a styled scene is another scene (its outputs say so, and --resume checks it).
-    const SphereStyleResult styled = cli::apply_sphere_style(imported, plan.style, plan.scene_label);
+    const auto style_scene = [&] { return cli::apply_sphere_style(imported, plan.style, plan.scene_label); };
+    const SphereStyleResult styled = plan.trajectory ? request::for_frame(1, style_scene) : style_scene();
     if (legend)
         legend->write(styled, plan.scene_label,
                       plan.trajectory && plan.trajectory->frame_count() > 1 && !plan.style.color_range);
@@ -149,6 +180,13 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     plan.config.development = knobs;
     if (!o.kernel_dir.empty()) plan.config.development.kernel_dir = o.kernel_dir;  // the option wins over ORB_KERNEL_DIR
     plan.config.use_binary_cache = !o.no_cache;
+    // A build from source takes seconds (tens on a CPU): said once, whatever the devices and frames.
+    plan.config.on_slow_kernel_build = [cached = !o.no_cache, said = std::make_shared<std::once_flag>()] {
+        std::call_once(*said, [cached] {
+            cli::info(cached ? "building kernels for this scene (once; cached)"
+                             : "building kernels for this scene (--no-cache: every run builds them)");
+        });
+    };
     plan.half = o.half;
     if (o.compression) plan.compression = exr::parse_compression(*o.compression);
     plan.denoise = o.denoise;
@@ -206,30 +244,7 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
 }
 
 PosedFrame pose_at(const RenderPlan& plan, long frame) {
-    PosedFrame posed;
-    posed.frame = frame;
-    // A scene without animation is the same at every frame: the first
-    // frame takes it (and its hash) and every other frame keeps it, unless
-    // --orbit turns its camera. (For a changing scene only the imported
-    // scene and the settings are read, which nothing changes while frames
-    // render: safe on another thread.)
-    if (!changes_per_frame(plan) && plan.frame) return posed;
-    if (plan.trajectory) {
-        // Frame 1 as the plan read and styled it, the first time it is posed.
-        if (frame == 1 && plan.trajectory_first) posed.scene = plan.trajectory_first->take();
-        if (!posed.scene) {
-            posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
-            // Quietly: this runs on the thread that reads the next frame while
-            // one renders, and the range of frame 1 was said when the plan was made.
-            apply_sphere_styling(*posed.scene, plan.style, plan.scene_label);
-        }
-    } else {
-        posed.scene =
-            request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
-    }
-    request::apply_camera_request(*posed.scene, plan.settings, frame, plan.scene_label);
-    posed.hash = scene_content_hash(*posed.scene);
-    return posed;
+    return request::for_frame(frame, [&] { return pose_scene_at(plan, frame); });
 }
 
 void install(RenderPlan& plan, PosedFrame&& posed) {

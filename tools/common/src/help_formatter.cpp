@@ -5,8 +5,15 @@
 #include <string_view>
 #include <vector>
 
+#include "orb/cli/help_wrapping.h"
+
 namespace orb::cli {
 namespace {
+
+// A description with less room than this beside its option's names (a
+// narrow terminal) goes on the lines below them, indented kNarrowIndent.
+constexpr std::size_t kNarrowestDescription = 20;
+constexpr std::size_t kNarrowIndent = 6;
 
 // CLI11's own type names and its built-in checks' adjectives ("NOT" prefixes
 // a negated check): a validator description that is one of these says nothing
@@ -126,6 +133,47 @@ std::string value_placeholder(const CLI::Option& option) {
     std::string text = count > 1 ? several(one, count, separator) : one;
     if (option.get_expected_max() >= CLI::detail::expected_max_vector_size) text += " ...";
     return text;
+}
+
+// The names column: room for "-o, --output FILE" and most options with their placeholders.
+HelpFormatter::HelpFormatter(std::size_t width) : width_(width) { column_width(34); }
+
+std::string HelpFormatter::make_option(const CLI::Option* option, bool is_positional) const {
+    const std::string names = "  " + make_option_name(option, is_positional) + make_option_opts(option);
+    const std::string description = make_option_desc(option);
+    if (description.empty()) return names + "\n";
+    const std::vector<std::string> paragraphs = CLI::detail::split(description, '\n');
+    std::size_t longest_word = 0;
+    for (const std::string& paragraph : paragraphs)
+        for (const std::string& word : wrap_words(paragraph, 0)) longest_word = std::max(longest_word, word.size());
+    // Beside the names while the column leaves room for the description and its longest word.
+    const bool beside = width_ >= column_width_ + std::max(kNarrowestDescription, longest_word);
+    const std::size_t column = beside ? column_width_ : kNarrowIndent;
+    const std::string indent(column, ' ');
+    std::vector<std::string> lines;
+    for (const std::string& paragraph : paragraphs)
+        for (std::string& line : wrap_words(paragraph, width_ > column ? width_ - column : 1))
+            lines.push_back(std::move(line));
+    std::string text = names;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        // Two spaces at least part the names from the description beside them, as readers of --help expect.
+        if (i == 0 && names.size() + 2 <= column)
+            text += std::string(column - names.size(), ' ');
+        else
+            text += "\n" + indent;
+        text += lines[i];
+    }
+    return text + "\n";
+}
+
+std::string HelpFormatter::make_description(const CLI::App* app) const {
+    const std::string text = CLI::Formatter::make_description(app);
+    return text.empty() ? text : wrap_help_text(text.substr(0, text.size() - 1), width_) + "\n";
+}
+
+std::string HelpFormatter::make_footer(const CLI::App* app) const {
+    const std::string footer = app->get_footer();
+    return footer.empty() ? footer : wrap_help_text(footer, width_) + "\n";
 }
 
 std::string HelpFormatter::make_option_name(const CLI::Option* option, bool is_positional) const {

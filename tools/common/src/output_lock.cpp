@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "orb/cli/folder_errors.h"
 #include "orb/scene/error.h"
 
 namespace orb::cli::detail {
@@ -46,9 +47,12 @@ HeldLock lock_output(const std::string& target, const std::string& option) {
     // file must try again on the new one.
     for (int attempt = 0; attempt < 100; ++attempt) {
         const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-        if (fd < 0)
-            throw InputError(target + ": cannot write (" + option + "): cannot create the lock file " + path + ": " +
-                             std::strerror(errno));
+        if (fd < 0) {
+            const int error = errno;
+            std::string why = unwritable_folder(fs::path(target).parent_path().string(), error);
+            if (why.empty()) why = "cannot create the lock file " + path + ": " + std::strerror(error);
+            throw InputError(target + ": cannot write (" + option + "): " + why);
+        }
         if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
             const int error = errno;
             const std::string holder = read_holder(fd);

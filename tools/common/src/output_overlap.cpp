@@ -42,6 +42,11 @@ std::optional<Identity> identity_of(const std::string& path, bool as_output) {
     return Identity{false, 0, 0, target.lexically_normal().string()};
 }
 
+// "--config ocio.config" for an option's value, "the input scene.json" for an argument.
+std::string describe_input(const NamedPath& in) {
+    return (in.option.starts_with('-') ? in.option : std::string("the input")) + " " + in.path;
+}
+
 bool is_allowed(const std::vector<std::pair<std::string, std::string>>& allowed, const std::string& input_option,
                 const std::string& output_option) {
     return std::find(allowed.begin(), allowed.end(), std::make_pair(input_option, output_option)) != allowed.end();
@@ -65,7 +70,7 @@ void refuse_overlapping_paths(const std::vector<NamedPath>& inputs, const std::v
         for (auto it = first; it != last; ++it) {
             const NamedPath& in = *it->second;
             if (is_allowed(allowed, in.option, out.option)) continue;
-            throw UsageError(out.option + " " + out.path + " is the input " + in.option + " " + in.path +
+            throw UsageError(out.option + " " + out.path + " is " + describe_input(in) +
                              " (the same file); refusing to overwrite an input");
         }
         const auto [earlier, is_new] = earlier_outputs.emplace(*id, &out);

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <random>
 
+#include "orb/cli/folder_errors.h"
 #include "orb/scene/error.h"
 
 namespace orb::cli::detail {
@@ -39,10 +40,13 @@ int create_temporary(const std::string& target, const std::string& option, std::
         path = (t.parent_path() / (prefix_for(t) + suffix)).string();
         const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
         if (fd >= 0) return fd;
-        if (errno != EEXIST)
-            throw InputError(target + ": cannot write (" + option + "): cannot create a file in " +
-                             (t.parent_path().empty() ? std::string(".") : t.parent_path().string()) + ": " +
-                             std::strerror(errno));
+        if (errno != EEXIST) {
+            const int error = errno;
+            const std::string folder = t.parent_path().empty() ? std::string(".") : t.parent_path().string();
+            std::string why = unwritable_folder(folder, error);
+            if (why.empty()) why = "cannot create a file in " + folder + ": " + std::strerror(error);
+            throw InputError(target + ": cannot write (" + option + "): " + why);
+        }
     }
     throw InputError(target + ": cannot create a temporary file beside it");
 }

@@ -2,13 +2,13 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/exr/camera_matrices.h"
 #include "orb/exr/environment_map.h"
-#include "orb/cli/texture_decoder_loader.h"
 #include "orb/scene/animation.h"
 #include "orb/scene/import.h"
 #include "orb/scene/importers.h"
@@ -20,37 +20,85 @@ namespace orb::request {
 
 namespace fs = std::filesystem;
 
-Scene read_scene(const std::string& path, std::string& label, bool allow_empty, const MolecularImportOptions& molecule) {
+namespace {
+
+// Where a scene's relative paths (glTF buffers, environment maps) are resolved from.
+std::string scene_folder(const std::string& path) {
+    return cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
+}
+
+// The environment --environment chooses, its map loaded (resolved from the
+// scene's folder, as a map the scene names is); nothing when none was chosen.
+std::optional<Environment> chosen_environment(const cli::SceneReading& reading, const std::string& base_dir,
+                                              const std::string& label) {
+    std::optional<Environment> chosen = cli::chosen_environment(reading.environment, base_dir);
+    if (!chosen) return std::nullopt;
+    Scene holder;
+    holder.environment = std::move(*chosen);
+    exr::load_environment_map(holder, base_dir, label);
+    return std::move(holder.environment);
+}
+
+// A trajectory whose every frame is lit by the environment chosen on the command line.
+class EnvironmentLitFrames final : public FrameSource {
+public:
+    EnvironmentLitFrames(std::unique_ptr<FrameSource> frames, Environment environment)
+        : frames_(std::move(frames)), environment_(std::move(environment)) {}
+    std::size_t frame_count() const override { return frames_->frame_count(); }
+    Scene frame(std::size_t index) const override {
+        Scene scene = frames_->frame(index);
+        scene.environment = environment_;  // the map's texels are shared, not copied
+        return scene;
+    }
+    const std::vector<std::string>& warnings() const override { return frames_->warnings(); }
+    std::string_view format() const override { return frames_->format(); }
+    std::size_t frames_built() const override { return frames_->frames_built(); }
+
+private:
+    std::unique_ptr<FrameSource> frames_;
+    Environment environment_;
+};
+
+}  // namespace
+
+Scene read_scene(const std::string& path, std::string& label, const cli::SceneReading& reading) {
     label = cli::is_stdio(path) ? "<stdin>" : path;
+    const std::string base_dir = scene_folder(path);
+    // Checked before the scene, which may be millions of spheres, is read.
+    std::optional<Environment> environment = chosen_environment(reading, base_dir, label);
     const std::string bytes = cli::read_input(path);
-    const std::string base_dir =
-        cli::is_stdio(path) ? fs::current_path().string() : fs::absolute(path).parent_path().string();
-    ImportOptions options;
-    options.allow_empty = allow_empty;
-    options.molecular = molecule;
-    options.gltf.image_decoder = cli::texture_decoder();  // glTF textures, through OpenImageIO, loaded when needed
-    ImportResult imported = import_scene(bytes, label, base_dir, options);
+    ImportResult imported = import_scene(bytes, label, base_dir, cli::import_options_for(reading));
+    cli::warn_about_other_formats_options(reading, imported.format, label);
     for (const std::string& message : imported.warnings) cli::warning(message);
     for (const std::string& message : imported.notices) cli::warning(message);
-    // The map's texels join the scene before it is hashed (they are part of its identity) and rendered.
-    exr::load_environment_map(imported.scene, base_dir, label);
+    if (environment) {
+        imported.scene.environment = std::move(*environment);
+    } else {
+        // The map's texels join the scene before it is hashed (they are part of its identity) and rendered.
+        exr::load_environment_map(imported.scene, base_dir, label);
+    }
     if (!scene_has_light(imported.scene))
         cli::warning(label + ": the scene has no light (no sphere emits and there is no environment); it renders black");
     return std::move(imported.scene);
 }
 
-std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const MolecularImportOptions& options) {
+std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const cli::SceneReading& reading) {
     if (cli::is_stdio(path)) return nullptr;
-    std::shared_ptr<const FrameSource> frames;
-    if (is_series_pattern(path)) {
-        frames = open_molecular_series(path, options);  // "dump.*.lammpstrj": its files, one trajectory
-    } else {
+    const bool series = is_series_pattern(path);  // "dump.*.lammpstrj": its files, one trajectory
+    std::string_view format;
+    if (!series) {
         std::error_code ec;
         if (!fs::is_regular_file(path, ec)) return nullptr;  // read_scene gives the error (or reads the FIFO)
-        const std::string_view format = molecular_file_format(path);
+        format = molecular_file_format(path);
         if (format.empty()) return nullptr;
-        frames = open_molecular_file(path, format, options);
     }
+    // Checked before the trajectory is scanned.
+    std::optional<Environment> environment = chosen_environment(reading, scene_folder(path), path);
+    const MolecularImportOptions& options = reading.import.molecular;
+    std::unique_ptr<FrameSource> frames =
+        series ? open_molecular_series(path, options) : open_molecular_file(path, format, options);
+    if (environment) frames = std::make_unique<EnvironmentLitFrames>(std::move(frames), std::move(*environment));
+    cli::warn_about_other_formats_options(reading, frames->format(), path);
     for (const std::string& message : frames->warnings()) cli::warning(message);
     return frames;
 }
@@ -58,7 +106,7 @@ std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, cons
 Scene trajectory_frame(const FrameSource& frames, long frame, const std::string& label) {
     require_trajectory_frames(frames, {frame}, label);
     Scene scene = frames.frame(static_cast<std::size_t>(frame - 1));
-    validate_scene(scene, label + " frame " + std::to_string(frame));
+    validate_scene(scene, label);  // the caller names the frame (for_frame)
     return scene;
 }
 

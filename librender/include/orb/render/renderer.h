@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,6 +54,11 @@ struct RenderConfig {
     // Settings for measuring and debugging (development_knobs.h); the
     // defaults render as a user's run does.
     DevelopmentKnobs development;
+    // Called, from the thread that builds, when the kernels for a scene are
+    // being built from source (not loaded from the binary cache) and the build
+    // has taken a second: builds take seconds, tens on a CPU through PoCL, so
+    // a tool can say why it waits. Never for a program loaded from the cache.
+    std::function<void()> on_slow_kernel_build;
 };
 
 // A scene laid out for the devices, its BVH built or refitted: what

@@ -2,6 +2,7 @@
 // materials, camera, lights and node animation. Every rule is in docs/gltf.md.
 #pragma once
 
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,8 +45,8 @@ struct GltfImportOptions {
     bool directional_lights = false;
     LightUnits light_units = LightUnits::Photometric;
     // An asset that brings no light at all (no punctual light imported, no
-    // emissive material on a sphere) gets the default environment,
-    // kDefaultEnvironmentRadiance, with a warning (docs/gltf.md).
+    // emissive material on a sphere) gets the default light, with a warning:
+    // a neutral grey environment and a key light (docs/gltf.md).
     bool default_light = true;
     // Reads the base-colour, metallic-roughness and emissive textures into
     // each sphere's material (docs/gltf.md, "Textures"); without one,
@@ -53,11 +54,20 @@ struct GltfImportOptions {
     ImageDecoder image_decoder;
 };
 
-// The default environment's uniform radiance: under it a diffuse surface of
-// albedo a has radiance exactly a (nothing else lights it), so every base
-// colour shows at its own value, the neutral look of a glTF viewer, and
-// white maps to display white.
-inline constexpr double kDefaultEnvironmentRadiance = 1.0;
+// The default light of an asset without any, as a glTF viewer lights one: a
+// neutral grey environment of this uniform radiance (the background, dark
+// grey), and a key light from the camera's upper left giving this irradiance
+// at the centre of the spheres' box (an emissive sphere seen from there at
+// sin(theta) = 1/4, radiance 16 E / pi, behind the camera's plane: out of
+// view). The level is an exposure choice: the Khronos sample
+// MetalRoughSpheresNoTextures then shows its spheres at a median luminance
+// of 0.183 (256 x 256, 64 spp, its wholly covered pixels), mid-grey, as its
+// reference screenshot does (0.183 there, over a background of 0.019); under
+// the earlier uniform white environment of radiance 1 its background was
+// display white and its white and metal rows vanished into it
+// (docs/design/default-lighting.md).
+inline constexpr double kDefaultEnvironmentRadiance = 0.05;
+inline constexpr double kDefaultKeyIrradiance = 1.6 * std::numbers::pi;
 
 struct GltfImportResult {
     Scene scene;

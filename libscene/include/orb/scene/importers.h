@@ -13,7 +13,26 @@
 
 #include "orb/scene/import.h"
 
+namespace CLI {
+class App;
+}
+
 namespace orb {
+
+// An importer's command-line options (or a family's that reads with the same
+// ones: the molecular readers), declared beside its reader
+// (libscene/src/*_options.cpp). Every tool that reads a scene (orb-import,
+// orb-render, orb-frames --scene, and orb-farm through orb-render) adds every
+// group (orb/cli/scene_reading.h), so one option has one name and one
+// meaning everywhere.
+struct ImportOptionGroup {
+    // The group's heading in --help ("PLY input"), also --list-formats' OPTIONS column.
+    std::string_view heading{};
+    // Adds the group's options to a tool's command line (CLI11), writing into
+    // `options` (its member of them: options.ply); CLI11's checks refuse a
+    // bad value as a usage error.
+    void (*add)(CLI::App& app, ImportOptions& options) = nullptr;
+};
 
 // How sure an importer is, from the bytes alone, that an input is its format.
 enum class ContentMatch {
@@ -46,15 +65,17 @@ struct SceneImporter {
     // Reads the input; throws InputError naming the source and the place.
     ImporterOutput (*read)(std::string_view bytes, const std::string& source, const std::string& base_dir,
                            const ImportOptions& options) = nullptr;
-    // The heading of the options that apply to this format only (orb-import's
-    // help groups them under it: "PLY input"); empty when none do.
-    std::string_view option_group{};
+    // The options that apply to this format only; null when none do.
+    const ImportOptionGroup* options = nullptr;
     // Why a scene of this format has no sphere, when the reader does not say.
     std::string_view no_spheres = "it holds none";
 };
 
 // Every importer, in the order their content is checked.
 std::span<const SceneImporter> scene_importers();
+
+// Every importer's option group, each once, in the table's order.
+std::vector<const ImportOptionGroup*> import_option_groups();
 
 // The importer `name` names (its name or an alias); null for any other word.
 const SceneImporter* find_scene_importer(std::string_view name);

@@ -5,20 +5,30 @@
 // for --color-by and --radius-by. Index i of every array is Scene::spheres[i].
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace orb {
 
+// The value of a sphere that has none of a property: a molecule's cell and
+// lights are spheres, not atoms, and carry no B-factor or element. Written
+// as null in the JSON form; styling leaves such spheres as they are.
+inline constexpr float kNoValue = std::numeric_limits<float>::quiet_NaN();
+inline bool has_value(float value) { return !std::isnan(value); }
+
 // One named value per sphere. A numeric property (temperature, b_factor)
 // keeps its numbers; a categorical one (element, chain, residue name, type)
-// keeps each sphere's index into `labels`, so "Fe" is stored once.
+// keeps each sphere's index into `labels`, so "Fe" is stored once. A sphere
+// may have no value (kNoValue).
 struct SphereProperty {
     std::string name;            // as the file names it ("b_factor", "element", "c_peratom")
     std::vector<float> values;   // one per sphere; categorical: the index into labels
     std::vector<std::string> labels;  // empty: numeric; else the categories
     bool categorical() const { return !labels.empty(); }
-    bool operator==(const SphereProperty&) const = default;
+    // Equal names, labels and values, a sphere without a value (NaN) equal to another without.
+    bool operator==(const SphereProperty& other) const;
 };
 
 struct SphereAttributes {

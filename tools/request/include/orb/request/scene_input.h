@@ -8,28 +8,42 @@
 #include <optional>
 #include <string>
 
+#include "orb/cli/scene_reading.h"
 #include "orb/exr/render_request.h"
 #include "orb/request/request_settings.h"
+#include "orb/scene/error.h"
 #include "orb/scene/molecular.h"
 #include "orb/scene/scene.h"
 
 namespace orb::request {
 
-// Reads and imports `path` ("-" for stdin); `label` becomes the path, or
-// <stdin>. Throws orb::InputError for bad input, and for a scene without
-// spheres unless `allow_empty` (--allow-empty).
-Scene read_scene(const std::string& path, std::string& label, bool allow_empty,
-                 const MolecularImportOptions& molecule = {});
+// Reads and imports `path` ("-" for stdin) as `reading` asks (the
+// importers' options, --environment); `label` becomes the path, or <stdin>.
+// Throws orb::InputError for bad input, and for a scene without spheres
+// unless reading.import.allow_empty (--allow-empty).
+Scene read_scene(const std::string& path, std::string& label, const cli::SceneReading& reading);
 
 // A molecular or particle file (PDB, mmCIF, XYZ, LAMMPS dump, .gro: its
 // content or name says so) opened frame by frame: frame f of --frames is
 // frame f of the file, counted from 1, read from the file when it is
 // rendered. A numbered series ("dump.*.lammpstrj", orb/scene/numbered_series.h)
 // is one trajectory of its files' frames. Null for any other scene, and for
-// stdin (read whole by read_scene, which takes its first frame). Prints the
-// reader's warnings.
+// stdin (read whole by read_scene, which takes its first frame). Every frame
+// has the environment `reading` chooses. Prints the reader's warnings.
 // Throws orb::InputError.
-std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const MolecularImportOptions& options);
+std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const cli::SceneReading& reading);
+
+// Runs `work`, which reads, poses or styles the scene of frame `frame`: an
+// orb::InputError it throws is thrown again with "frame N: " before its
+// message, so that an error met at frame 3 of 240 says which frame it was.
+template <typename Work>
+auto for_frame(long frame, Work&& work) -> decltype(work()) {
+    try {
+        return work();
+    } catch (const InputError& e) {
+        throw InputError("frame " + std::to_string(frame) + ": " + e.what());
+    }
+}
 
 // Frame `frame` (1-based) of a trajectory, checked against the scene limits.
 // Throws orb::InputError naming the frames there are for one past the end.

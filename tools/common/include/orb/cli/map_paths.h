@@ -6,7 +6,7 @@
 
 #include "orb/scene/scene.h"
 
-namespace orb::import_tool {
+namespace orb::cli {
 
 // A map path relative to `input_dir`, as it must be written relative to
 // `output_dir` so that it names the same file; absolute paths unchanged.
@@ -18,4 +18,4 @@ std::string rebased_map_path(const std::string& map, const std::string& input_di
 // stdout). Absolute paths and scenes without a map are left alone.
 void rebase_environment_map(Scene& scene, const std::string& input_dir, const std::string& output_dir);
 
-}  // namespace orb::import_tool
+}  // namespace orb::cli

@@ -1,13 +1,22 @@
-#include "orb/cli/molecule_options.h"
+// The molecular and particle importers' options (docs/orb-import.md,
+// "Molecules and particles"): PDB, mmCIF, XYZ, LAMMPS dumps and .gro read
+// with the same ones.
+#include <CLI/CLI.hpp>
 
 #include <charconv>
 #include <cmath>
 #include <string>
 
-namespace orb::cli {
+#include "import_option_groups.h"
 
-void add_molecule_options(CLI::App& app, MolecularImportOptions& options, bool with_frame) {
-    const char* group = "Molecule input";
+namespace orb::detail {
+namespace {
+
+constexpr const char* kHeading = "Molecule input";
+
+void add_molecular_options(CLI::App& app, ImportOptions& import) {
+    MolecularImportOptions& options = import.molecular;
+    const char* group = kHeading;
     app.add_option_function<std::string>(
            "--atom-radius",
            [&options](const std::string& value) {
@@ -38,12 +47,10 @@ void add_molecule_options(CLI::App& app, MolecularImportOptions& options, bool w
     app.add_flag("--all-altlocs", options.all_altlocs,
                  "PDB/mmCIF: keep every alternate location (default: per residue the most occupied, the first on a tie)")
         ->group(group);
-    if (with_frame)
-        app.add_option("--frame", options.frame,
-                       "Which frame of a trajectory or model of an ensemble to write (1 = the first, the default)")
-            ->check(CLI::PositiveNumber)
-            ->option_text("N")
-            ->group(group);
 }
 
-}  // namespace orb::cli
+}  // namespace
+
+const ImportOptionGroup kMolecularOptions{kHeading, add_molecular_options};
+
+}  // namespace orb::detail

@@ -1,13 +1,23 @@
-// orb-import's glTF options (docs/gltf.md lists the rules they change).
-#include "gltf_options.h"
+// The glTF importer's options (docs/gltf.md lists the rules they change).
+#include <CLI/CLI.hpp>
 
 #include <map>
+#include <string>
 
-namespace orb::import_tool {
+#include "import_option_groups.h"
+#include "option_checks.h"
 
-void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
-    const std::string group = "glTF input";
-    app.add_option("--scene", options.scene, "glTF scene to import, by index or name (default: the asset's default scene)")
+namespace orb::detail {
+namespace {
+
+constexpr const char* kHeading = "glTF input";
+
+void add_gltf_options(CLI::App& app, ImportOptions& import) {
+    GltfImportOptions& options = import.gltf;
+    const std::string group = kHeading;
+    // --gltf-scene, not --scene: orb-frames' --scene names the scene file.
+    app.add_option("--gltf-scene", options.scene,
+                   "glTF scene to import, by index or name (default: the asset's default scene)")
         ->option_text("N|NAME")
         ->group(group);
     app.add_option("--camera", options.camera,
@@ -23,14 +33,14 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
     app.add_option("--sphere-tolerance", options.sphere_tolerance,
                    "A mesh is a sphere when all its vertices lie within this fraction of the radius of one sphere "
                    "(default 0.001)")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(finite_number_check([](double f) { return f >= 0 && f <= 1; }, "a fraction in [0, 1]"))
         ->capture_default_str()
         ->option_text("FRACTION")
         ->group(group);
     app.add_option("--point-radius", options.point_radius,
                    "Radius of POINTS without a _RADIUS attribute, in world units (default: 1% of the point cloud's "
                    "bounding-box diagonal)")
-        ->check(CLI::PositiveNumber)
+        ->check(finite_number_check([](double r) { return r > 0; }, "a radius > 0"))
         ->option_text("R")
         ->group(group);
     const std::map<std::string, NonSpherePolicy> policies{
@@ -45,7 +55,7 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
     app.add_option("--light-radius", options.light_radius,
                    "Radius of the emissive sphere for each point/spot light, in world units (default: 1% of the "
                    "scene's bounding-box diagonal)")
-        ->check(CLI::PositiveNumber)
+        ->check(finite_number_check([](double r) { return r > 0; }, "a radius > 0"))
         ->option_text("R")
         ->group(group);
     app.add_flag("--directional-lights", options.directional_lights,
@@ -62,9 +72,13 @@ void add_gltf_options(CLI::App& app, GltfImportOptions& options) {
         ->default_str("photometric")
         ->group(group);
     app.add_flag("--no-default-light{false}", options.default_light,
-                 "Leave an asset without any light unlit (default: give it a uniform white environment of radiance 1, "
-                 "with a warning)")
+                 "Leave an asset without any light unlit (default: give it a grey environment and a key light, with "
+                 "a warning)")
         ->group(group);
 }
 
-}  // namespace orb::import_tool
+}  // namespace
+
+const ImportOptionGroup kGltfOptions{kHeading, add_gltf_options};
+
+}  // namespace orb::detail

@@ -1,5 +1,5 @@
-// orb-import's --environment options (docs/orb-import.md, "Environment").
-#include "environment_options.h"
+// The --environment options (docs/orb-import.md, "Environment").
+#include "orb/cli/environment_options.h"
 
 #include <charconv>
 #include <cmath>
@@ -7,11 +7,11 @@
 #include <fstream>
 #include <vector>
 
-#include "map_paths.h"
+#include "orb/cli/map_paths.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 
-namespace orb::import_tool {
+namespace orb::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -63,7 +63,7 @@ void add_environment_options(CLI::App& app, EnvironmentChoice& choice) {
         ->group("Environment");
 }
 
-std::optional<Environment> chosen_environment(const EnvironmentChoice& choice, const std::string& output_dir) {
+std::optional<Environment> chosen_environment(const EnvironmentChoice& choice, const std::string& scene_dir) {
     if (choice.value.empty()) return std::nullopt;
     const std::string what = "--environment " + choice.value;
     if (!radiance_in_range(choice.intensity))
@@ -90,10 +90,10 @@ std::optional<Environment> chosen_environment(const EnvironmentChoice& choice, c
         throw InputError(what + ": not an OpenEXR file (Orb reads environment maps as EXR; convert one with, for "
                                 "example, oiiotool sky.hdr -o sky.exr)");
     environment.kind = EnvironmentKind::Map;
-    environment.map = rebased_map_path(choice.value, fs::current_path().string(), output_dir);
+    environment.map = rebased_map_path(choice.value, fs::current_path().string(), scene_dir);
     environment.intensity = choice.intensity;
     environment.rotation_deg = choice.rotation_deg;
     return environment;
 }
 
-}  // namespace orb::import_tool
+}  // namespace orb::cli

@@ -1,8 +1,8 @@
-#include "map_paths.h"
+#include "orb/cli/map_paths.h"
 
 #include <filesystem>
 
-namespace orb::import_tool {
+namespace orb::cli {
 
 std::string rebased_map_path(const std::string& map, const std::string& input_dir, const std::string& output_dir) {
     namespace fs = std::filesystem;
@@ -19,4 +19,4 @@ void rebase_environment_map(Scene& scene, const std::string& input_dir, const st
         environment.map = rebased_map_path(environment.map, input_dir, output_dir);
 }
 
-}  // namespace orb::import_tool
+}  // namespace orb::cli
