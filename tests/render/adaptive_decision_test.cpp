@@ -205,13 +205,13 @@ TEST(DeviceDecision, AnAdaptiveRenderIsTheSameWithDecisionsOnEitherSide)
         estimates.push_back(sampler.estimated_relmse().value_or(-1));
     }
     // The passes between decisions follow the pass timer, so the sums may
-    // be grouped differently: the same up to float rounding.
+    // be grouped differently: the same bits all the same.
     EXPECT_EQ(films[0].sample_count, films[1].sample_count);
-    expect_same_films_up_to_rounding(films[0], films[1]);
+    expect_same_films(films[0], films[1]);
     EXPECT_NEAR(estimates[0], estimates[1], 1e-4 * estimates[1]);
-    float fewest = 1e9f;
-    for (float count : films[0].sample_count) fewest = std::min(fewest, count);
-    EXPECT_LT(fewest, 200.0f);  // some pixels did stop
+    film::Sum fewest = 200;
+    for (film::Sum count : films[0].sample_count) fewest = std::min(fewest, count);
+    EXPECT_LT(fewest, 200);  // some pixels did stop
 }
 
 }  // namespace orb::render::test

@@ -1,7 +1,10 @@
 #include "background_writer.h"
 
 #include <chrono>
+#include <stdexcept>
 #include <utility>
+
+#include "orb/cli/messages.h"
 
 namespace orb::render_cli {
 namespace {
@@ -22,28 +25,39 @@ BackgroundWriter::~BackgroundWriter() {
 void BackgroundWriter::wait_for_oldest() {
     Write& oldest = in_flight_.front();
     if (oldest.thread.joinable()) oldest.thread.join();
-    if (*oldest.error && !error_) error_ = *oldest.error;
+    if (*oldest.error) {
+        std::string label = oldest.job->label;
+        while (!label.empty() && (label.back() == ' ' || label.back() == ':')) label.pop_back();
+        failed_.push_back(label.empty() ? oldest.job->output.display_name() : label);
+    }
     spare_.push_back(std::move(oldest.job->image.film));
     spare_encodings_.push_back(std::move(oldest.encoding));
     in_flight_.pop_front();
 }
 
-void BackgroundWriter::rethrow_first_error() {
-    if (std::exception_ptr error = std::exchange(error_, nullptr)) std::rethrow_exception(error);
+void BackgroundWriter::throw_if_any_failed() {
+    if (failed_.empty()) return;
+    std::string names;
+    for (const std::string& name : failed_) names += (names.empty() ? "" : ", ") + name;
+    const std::size_t count = std::exchange(failed_, {}).size();
+    throw std::runtime_error(std::to_string(count) + (count == 1 ? " image" : " images") + " not written (" + names +
+                             "); those written before stay");
 }
 
 void BackgroundWriter::finish() {
     const Clock::time_point start = Clock::now();
     while (!in_flight_.empty()) wait_for_oldest();
     waited_ += seconds_since(start);
-    rethrow_first_error();
+    throw_if_any_failed();
 }
 
 void BackgroundWriter::submit(Job job) {
     const Clock::time_point start = Clock::now();
     while (in_flight_.size() >= max_in_flight_) wait_for_oldest();
+    // Frames written meanwhile: a failure among them ends the run now.
+    while (!in_flight_.empty() && in_flight_.front().job.use_count() == 1) wait_for_oldest();
     waited_ += seconds_since(start);
-    rethrow_first_error();
+    throw_if_any_failed();
     std::shared_ptr<exr::ExrEncoding> encoding;
     if (spare_encodings_.empty()) {
         encoding = std::make_shared<exr::ExrEncoding>();
@@ -53,9 +67,22 @@ void BackgroundWriter::submit(Job job) {
     }
     Write write{std::make_shared<Job>(std::move(job)), std::move(encoding), std::make_shared<std::exception_ptr>(), {}};
     write.thread = std::thread([job = write.job, encoding = write.encoding, error = write.error] {
+        // A frame is said to be done once its file is in place, and each
+        // frame that fails says why.
         try {
             job->output.write(job->image.encode(*encoding));
+            // (Nothing to say for orb-render --benchmark --frames.)
+            if (!job->written.empty()) {
+                if (job->warn)
+                    cli::warning(job->label + job->written);
+                else
+                    cli::info(job->label + job->written);
+            }
+        } catch (const std::exception& e) {
+            cli::error(job->label + "not written: " + e.what());
+            *error = std::current_exception();
         } catch (...) {
+            cli::error(job->label + "not written");
             *error = std::current_exception();
         }
         job->claim.reset();  // the frame is on disk (or failed): others may take it now
