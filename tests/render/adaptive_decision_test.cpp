@@ -142,7 +142,7 @@ TEST(DeviceDecision, DecidesAsTheHostOnRandomSums)
         // 1% of the pixels hold 0 or 1 sample, the others 2 to 40.
         const float n = unit(random) < 0.01f ? static_cast<float>(unit(random) < 0.5f)
                                              : 2.0f + static_cast<float>(static_cast<int>(unit(random) * 39.0f));
-        film.sample_count[i] = n;
+        film.sample_count[i] = static_cast<film::Sum>(n);
         // 3% noisy (a sample variance up to the mean's square), 2% with a
         // square below the mean's (no variance), the others quiet, some
         // of those near the lowest threshold (a relative error of 1% at
@@ -153,8 +153,8 @@ TEST(DeviceDecision, DecidesAsTheHostOnRandomSums)
             const float spread = kind < 0.03f   ? 1.0f + unit(random)
                                  : kind < 0.05f ? 0.999f
                                                 : 1.0f + 2e-4f * unit(random) * unit(random);
-            film.radiance[i * 3 + c] = mean * n;
-            film.radiance_sq[i * 3 + c] = mean * mean * spread * n;
+            film.radiance[i * 3 + c] = film::sum_units(film::Units::Fixed, mean * n);
+            film.radiance_sq[i * 3 + c] = film::sum_units(film::Units::Fixed, mean * mean * spread * n);
         }
     }
     for (double threshold : {0.01, 0.05, 0.2}) {

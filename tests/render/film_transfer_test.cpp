@@ -130,7 +130,7 @@ TEST(FilmTransfer, DeviceMemoryHoldsOnlyTheComputedChannels)
     std::uint64_t saved = 0;
     for (const film::ChannelInfo& c : film::kChannels)
         if (!computed(config, c.channel))
-            saved += (24u * 18u - 1u) * static_cast<std::uint64_t>(c.components) * sizeof(float);
+            saved += (24u * 18u - 1u) * film::pixel_bytes(c);
     EXPECT_EQ(every.device_memory_bytes() - beauty.device_memory_bytes(), saved);
 }
 

@@ -125,6 +125,36 @@ void expect_same_image(const exr::testing::RawExr& a, const exr::testing::RawExr
     }
 }
 
+void expect_same_within_float_rounding(const exr::testing::RawExr& a, const exr::testing::RawExr& b) {
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    constexpr double kRelative = 1e-5;  // ~80 float ulps
+    for (const auto& [name, values] : a.channels) {
+        if (name.rfind("orb.sum.", 0) == 0) continue;
+        const auto found = b.channels.find(name);
+        ASSERT_NE(found, b.channels.end()) << name;
+        const auto& other = found->second;
+        int reported = 0;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const double x = values[i], y = other[i];
+            if (std::isinf(x) || std::isinf(y)) {
+                EXPECT_EQ(x, y) << name << "[" << i << "]";
+                continue;
+            }
+            double tolerance = kRelative * std::max(std::fabs(x), std::fabs(y));
+            if (name.rfind("N.", 0) == 0) tolerance = 1e-4;  // renormalised unit vectors
+            if (name.rfind("variance.", 0) == 0) {
+                // var = (sum_sq/n - mean^2)/(n-1) cancels; its rounding scales with mean^2/(n-1).
+                const std::string c = name.substr(9);
+                const double mean = a.channels.at(c)[i];
+                tolerance += kRelative * mean * mean;
+            }
+            if (std::fabs(x - y) > tolerance && reported++ < 5)
+                ADD_FAILURE() << name << "[" << i << "]: " << x << " vs " << y;
+        }
+    }
+}
+
 void expect_same_image(const std::string& path_a, const std::string& path_b) {
     expect_same_image(exr::testing::read_raw_exr(path_a), exr::testing::read_raw_exr(path_b));
 }

@@ -52,6 +52,13 @@ std::string render_exe();
 void expect_same_image(const exr::testing::RawExr& a, const exr::testing::RawExr& b);
 void expect_same_image(const std::string& path_a, const std::string& path_b);
 
+// Two renders of the same samples where one was continued from a file of
+// means only (a finished render, or an older Orb's): its sums were rebuilt
+// from the means, so the shown channels agree within float rounding (a few
+// dozen float ulps; more for the variance, whose (sum_sq/n - mean^2)
+// cancels). Exact sums are not compared.
+void expect_same_within_float_rounding(const exr::testing::RawExr& a, const exr::testing::RawExr& b);
+
 // Whether a file carries its film's exact sums (orb:exactSums, orb.sum.* channels).
 bool has_exact_sums(const exr::testing::RawExr& image);
 

@@ -13,6 +13,13 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// "frame 8" (its label without the ": "), or the output's name.
+std::string name_of(const BackgroundWriter::Job& job) {
+    std::string label = job.label;
+    while (!label.empty() && (label.back() == ' ' || label.back() == ':')) label.pop_back();
+    return label.empty() ? job.output.display_name() : label;
+}
+
 }  // namespace
 
 BackgroundWriter::BackgroundWriter(std::size_t max_in_flight) : max_in_flight_(max_in_flight ? max_in_flight : 1) {}
@@ -25,11 +32,7 @@ BackgroundWriter::~BackgroundWriter() {
 void BackgroundWriter::wait_for_oldest() {
     Write& oldest = in_flight_.front();
     if (oldest.thread.joinable()) oldest.thread.join();
-    if (*oldest.error) {
-        std::string label = oldest.job->label;
-        while (!label.empty() && (label.back() == ' ' || label.back() == ':')) label.pop_back();
-        failed_.push_back(label.empty() ? oldest.job->output.display_name() : label);
-    }
+    if (*oldest.error) failed_.push_back(name_of(*oldest.job));
     spare_.push_back(std::move(oldest.job->image.film));
     spare_encodings_.push_back(std::move(oldest.encoding));
     in_flight_.pop_front();
@@ -54,10 +57,15 @@ void BackgroundWriter::finish() {
 void BackgroundWriter::submit(Job job) {
     const Clock::time_point start = Clock::now();
     while (in_flight_.size() >= max_in_flight_) wait_for_oldest();
-    // Frames written meanwhile: a failure among them ends the run now.
+    // Frames written meanwhile: a failure among them ends the run now, and
+    // this frame, rendered but not written, is named with them.
     while (!in_flight_.empty() && in_flight_.front().job.use_count() == 1) wait_for_oldest();
     waited_ += seconds_since(start);
-    throw_if_any_failed();
+    if (!failed_.empty()) {
+        cli::error(job.label + "not written: the run stops, since " + failed_.front() + " could not be written");
+        failed_.push_back(name_of(job));
+        throw_if_any_failed();
+    }
     std::shared_ptr<exr::ExrEncoding> encoding;
     if (spare_encodings_.empty()) {
         encoding = std::make_shared<exr::ExrEncoding>();

@@ -127,16 +127,18 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
 }
 
 // The host memory orb-render needs beside the renderer's: the film read
-// back and its EXR encoding (the values, the exact sums, the compressed
-// blocks), for every film a frame run holds at once (the one rendering and
-// BackgroundWriter's in flight).
-std::uint64_t host_bytes_beside_renderer(const RenderPlan& plan, bool frames) {
+// back and its EXR encoding (the values, the exact sums where the image
+// will carry them, the compressed blocks), for every film a frame run holds
+// at once (the one rendering and BackgroundWriter's in flight).
+std::uint64_t host_bytes_beside_renderer(const RenderPlan& plan, const RenderOptions& o) {
     const auto pixels = static_cast<std::uint64_t>(plan.config.width) * static_cast<std::uint64_t>(plan.config.height);
     std::uint64_t film = 0;
     for (const film::ChannelInfo& info : film::kChannels)
         if ((plan.config.film_channels & film::channel_bit(info.channel)) != 0) film += film::pixel_bytes(info) * pixels;
-    const std::uint64_t image = film + 2 * exr::encoding_bytes(plan.passes, !plan.half, pixels);
-    return frames ? (1 + BackgroundWriter::kDefaultInFlight) * image : image;
+    // Checkpoints, slices and renders that --time will stop short carry their exact sums (render_film.cpp).
+    const bool exact_sums = !plan.half && (o.checkpoint || plan.slice || o.time_limit);
+    const std::uint64_t image = film + 2 * exr::encoding_bytes(plan.passes, exact_sums, pixels);
+    return renders_frames(o) ? (1 + BackgroundWriter::kDefaultInFlight) * image : image;
 }
 
 RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& knobs);
@@ -145,7 +147,7 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
 
 RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
     RenderPlan plan = plan_render(o, knobs);
-    plan.config.caller_host_bytes = host_bytes_beside_renderer(plan, renders_frames(o));
+    plan.config.caller_host_bytes = host_bytes_beside_renderer(plan, o);
     return plan;
 }
 
