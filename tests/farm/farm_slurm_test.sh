@@ -78,7 +78,7 @@ for f in 1 2 3 4; do
     [[ -f shots/beauty.000$f.exr ]] || problem "frame $f did not arrive"
     [[ -s shots/beauty.000$f.png ]] || problem "frame $f has no png"
 done
-[[ -z $("$bin/orb-frames" 1-4 shots/beauty.%04d.exr --missing --spp 16 --width 64 --height 48) ]] ||
+[[ -z $("$bin/orb-frames" 1-4 shots/beauty.%04d.exr --missing --spp 16 --width 64 --height 48 --passes all) ]] ||
     problem "some frames are not complete 16-sample 64x48 renders"
 [[ -z $(ls shots/orb-farm/slices) ]] || problem "slices were left after merging: $(ls shots/orb-farm/slices)"
 ls shots/orb-farm/logs/render-*_*.log >/dev/null 2>&1 || problem "no render logs next to the outputs"
