@@ -23,16 +23,19 @@
 // std::max(0.0, x) of the host: 0 for a NaN as well.
 double at_least_zero(double x) { return 0.0 < x ? x : 0.0; }
 
+// The value of a Fixed sum (film_channels.h): its units times 2^-ORB_FILM_FIXED_BITS, exactly.
+double fixed_sum_value(long sum) { return (double)sum * (1.0 / (double)(1 << ORB_FILM_FIXED_BITS)); }
+
 // The expected relMSE of one pixel's mean (orb::film::pixel_relmse): over
 // R, G, B the variance of the mean over (A^2 + epsilon), A^2 estimated as
 // mean^2 - Var[mean]; infinity with fewer than two samples.
-double pixel_relmse(__global const float* radiance, __global const float* radiance_sq, uint pixel, double n)
+double pixel_relmse(__global const long* radiance, __global const long* radiance_sq, uint pixel, double n)
 {
     if (n < 2.0) return (double)INFINITY;
     double sum = 0.0;
     for (uint c = 0; c < 3; ++c) {
-        const double mean = (double)radiance[pixel * 3 + c] / n;
-        const double mean_sq = (double)radiance_sq[pixel * 3 + c] / n;
+        const double mean = fixed_sum_value(radiance[pixel * 3 + c]) / n;
+        const double mean_sq = fixed_sum_value(radiance_sq[pixel * 3 + c]) / n;
         const double variance_of_mean = at_least_zero(mean_sq - mean * mean) / (n - 1.0);
         const double converged_sq = at_least_zero(mean * mean - variance_of_mean);
         sum += variance_of_mean / (converged_sq + ORB_RELMSE_EPSILON);
@@ -101,7 +104,7 @@ uint candidate_pixel(__global const uint* candidates, uint entry, int every_pixe
 // `noisy_from` (the noise threshold squared; no threshold: never, and
 // `noisy` is not written).
 __kernel __attribute__((reqd_work_group_size(ORB_DECISION_GROUP, 1, 1))) void estimate_pixel_errors(
-    __global const float* radiance, __global const float* radiance_sq, __global const float* sample_count,
+    __global const long* radiance, __global const long* radiance_sq, __global const long* sample_count,
     int per_pixel_counts, double uniform_samples, uint pixel_count, double noisy_from, int mark_noisy,
     __global uchar* noisy, __global double* group_error_sums)
 {

@@ -350,7 +350,8 @@ inline FilmCentre film_centre_ray(const SceneView* scene, const CameraParams* ca
 // The signature is generated from ORB_RENDER_PASS_ARGUMENTS (device_types.h),
 // the list the host binds from: film buffers (one per row of the channel
 // table), scene tables, then the parameters.
-#define ORB_KERNEL_FILM_ARG(name, components, clear, accumulate, merge, layer, stored_as, paired, names) __global float* film_##name,
+#define ORB_KERNEL_FILM_ARG(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names) \
+    __global ORB_FILM_ELEMENT_##accumulate* film_##name,
 #define ORB_KERNEL_TABLE_ARG(type, name) SCENE_MEM const type* name,
 #define ORB_KERNEL_PARAMS_ARG(type, name) type name
 // Inside a kernel with those arguments (render_pass, trace_rays):

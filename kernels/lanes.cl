@@ -12,6 +12,8 @@
 //   lv3                  a 3-vector per lane (float3 at width 1, so the GPU
 //                        code is plain float3 arithmetic; a struct of three
 //                        lfloat otherwise). Both have fields .x .y .z.
+//   llong                a 64-bit integer per lane (long at width 1): the
+//                        film's sums (film.cl)
 //
 // Masks follow OpenCL C: a scalar comparison gives 1 (true as a bool), a
 // vector comparison -1 in each true lane. Shared code touches masks only through the helpers
@@ -27,6 +29,7 @@
 typedef float lfloat;
 typedef int lint;
 typedef uint luint;
+typedef long llong;
 // A bool, not an int: with an int mask NVIDIA's OpenCL compiler (driver
 // 580) combined the masks as 32-bit integers (and.b32) and compared them
 // with 0 again before each select and branch, and the program ran 13%
@@ -49,6 +52,7 @@ typedef float3 lv3;
 #define to_lfloat(x) ((float)(x))
 #define to_lint(x) ((int)(x))
 #define to_luint(x) ((uint)(x))
+#define to_llong(x) convert_long(x)
 
 #define lv3_make(x, y, z) ((float3)((x), (y), (z)))
 #define lv3_splat(v) (v)
@@ -66,6 +70,7 @@ typedef float3 lv3;
 // Lane l of a value, and setting it (l is 0).
 #define lane_f(v, l) (v)
 #define lane_i(v, l) (v)
+#define lane_l(v, l) (v)
 #define lane_v3(v, l) (v)
 #define lane_on(m, l) ((m) != 0)
 #define set_lane_f(v, l, value) ((v) = (value))
@@ -86,6 +91,7 @@ typedef float3 lv3;
 typedef ORB_LANE_TYPE(float, ORB_LANES) lfloat;
 typedef ORB_LANE_TYPE(int, ORB_LANES) lint;
 typedef ORB_LANE_TYPE(uint, ORB_LANES) luint;
+typedef ORB_LANE_TYPE(long, ORB_LANES) llong;
 typedef lint lmask;  // -1 or 0 per lane
 typedef struct {
     lfloat x, y, z;
@@ -144,6 +150,7 @@ ORB_DEFINE_LANES_REDUCE(&, lanes_all)
 #define to_lfloat(x) ORB_LANE_TYPE(convert_float, ORB_LANES)(x)
 #define to_lint(x) ORB_LANE_TYPE(convert_int, ORB_LANES)(x)
 #define to_luint(x) ORB_LANE_TYPE(convert_uint, ORB_LANES)(x)
+#define to_llong(x) ORB_LANE_TYPE(convert_long, ORB_LANES)(x)
 
 LANE_FN lv3 lv3_make(lfloat x, lfloat y, lfloat z)
 {
@@ -178,6 +185,7 @@ LANE_FN lv3 lv3_select(lv3 a, lv3 b, lmask m)
 // LLVM keeps in registers where l is a loop counter it unrolls.
 #define lane_f(v, l) (((const float*)&(v))[l])
 #define lane_i(v, l) (((const int*)&(v))[l])
+#define lane_l(v, l) (((const long*)&(v))[l])
 #define lane_v3(v, l) ((float3)(lane_f((v).x, l), lane_f((v).y, l), lane_f((v).z, l)))
 #define lane_on(m, l) (lane_i(m, l) != 0)
 #define set_lane_f(v, l, value) (((float*)&(v))[l] = (value))

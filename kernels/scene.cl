@@ -18,7 +18,7 @@
 
 // One pointer per scene table of render_pass's argument list, plus the
 // tables' lengths; generated from the list so that a new table needs no edit here.
-#define ORB_SCENE_VIEW_FILM(name, components, clear, accumulate, merge, layer, stored_as, paired, names)
+#define ORB_SCENE_VIEW_FILM(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names)
 #define ORB_SCENE_VIEW_TABLE(type, name) SCENE_MEM const type* name;
 #define ORB_SCENE_VIEW_PARAMS(type, name)
 typedef struct {

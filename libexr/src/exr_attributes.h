@@ -24,5 +24,6 @@ inline constexpr const char* kFps = "orb:fps";
 inline constexpr const char* kNoiseThreshold = "orb:noiseThreshold";
 inline constexpr const char* kTargetError = "orb:targetError";
 inline constexpr const char* kAdaptiveStop = "orb:adaptiveStop";
+inline constexpr const char* kExactSums = "orb:exactSums";
 
 }  // namespace orb::exr::attr

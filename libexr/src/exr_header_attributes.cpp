@@ -22,7 +22,7 @@ int checked_count(std::uint64_t value, const char* what) {
 }  // namespace
 
 std::vector<HeaderAttribute> header_attributes(const Film& film, const ExrMetadata& m,
-                                               const std::vector<Pass>& passes) {
+                                               const ExrWriteOptions& options) {
     std::vector<HeaderAttribute> a{
         {attr::kFilmFormat, kFilmFormatVersion},
         {attr::kSpp, checked_count(film.samples_per_pixel, attr::kSpp)},
@@ -38,7 +38,7 @@ std::vector<HeaderAttribute> header_attributes(const Film& film, const ExrMetada
         {attr::kSceneHash, m.scene_hash},
         {attr::kSceneTime, m.scene_time},
         {attr::kVersion, m.version},
-        {attr::kPasses, format_passes(passes)},
+        {attr::kPasses, format_passes(options.passes)},
         {attr::kEnvironmentSeen, m.environment_seen ? 1 : 0},
     };
     if (m.frame) {
@@ -48,6 +48,7 @@ std::vector<HeaderAttribute> header_attributes(const Film& film, const ExrMetada
     if (m.noise_threshold) a.push_back({attr::kNoiseThreshold, *m.noise_threshold});
     if (m.target_error) a.push_back({attr::kTargetError, *m.target_error});
     if (m.adaptive_stop) a.push_back({attr::kAdaptiveStop, std::string(adaptive_stop_name(*m.adaptive_stop))});
+    if (options.exact_sums) a.push_back({attr::kExactSums, kExactSumsEncoding});
     // OpenEXR's standard names and types (ImfStandardAttributes.h).
     a.push_back({"worldToCamera", m.world_to_camera});
     a.push_back({"worldToNDC", m.world_to_ndc});

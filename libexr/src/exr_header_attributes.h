@@ -18,6 +18,6 @@ struct HeaderAttribute {
 
 // Throws std::invalid_argument for a value an EXR int cannot hold.
 std::vector<HeaderAttribute> header_attributes(const Film& film, const ExrMetadata& metadata,
-                                               const std::vector<Pass>& passes);
+                                               const ExrWriteOptions& options);
 
 }  // namespace orb::exr::detail

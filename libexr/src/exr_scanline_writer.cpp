@@ -93,7 +93,9 @@ struct Channel {
 };
 
 // Within a block, OpenEXR stores each scanline's channels one after another,
-// in the channel list's order (sorted by name), each a row of values.
+// in the channel list's order (sorted by name), each a row of values: 4
+// bytes a value for FLOAT and UINT (whose bits an exact-sum plane holds),
+// 2 for HALF.
 void pack_block(const std::vector<Channel>& channels, int width, int first_row, int rows,
                 std::vector<std::uint8_t>& out) {
     std::size_t bytes_per_row = 0;
@@ -148,7 +150,7 @@ bool scanline_writer_handles(ExrCompression compression) {
            compression == ExrCompression::Zip;
 }
 
-void write_scanline_exr(const Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
+void write_scanline_exr(const Film& film, const PlaneSet& set, const std::vector<Plane>& planes,
                         bool filled, bool half, ExrCompression compression, const std::vector<HeaderAttribute>& attributes,
                         ScanlineBuffers& buffers, std::string& bytes, std::size_t& size) {
     size = 0;
@@ -170,10 +172,13 @@ void write_scanline_exr(const Film& film, const std::vector<Pass>& passes, const
     for (const Plane& plane : planes) channels.push_back({&plane, half && !plane.always_float});
     std::sort(channels.begin(), channels.end(),
               [](const Channel& a, const Channel& b) { return a.plane->name < b.plane->name; });
-    for (const Channel& c : channels)
-        if (exr_add_channel(context, part, c.plane->name.c_str(), c.half ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT,
-                            EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1) < 0)
+    for (const Channel& c : channels) {
+        const exr_pixel_type_t type = c.plane->exact_sum ? EXR_PIXEL_UINT : c.half ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT;
+        const exr_perceptual_treatment_t treatment =
+            c.plane->exact_sum ? EXR_PERCEPTUALLY_LINEAR : EXR_PERCEPTUALLY_LOGARITHMIC;
+        if (exr_add_channel(context, part, c.plane->name.c_str(), type, treatment, 1, 1) < 0)
             check(EXR_ERR_INVALID_ARGUMENT, c.plane->name.c_str());
+    }
     add_attributes(context, attributes);
     check(exr_write_header(context), "header");
 
@@ -186,7 +191,7 @@ void write_scanline_exr(const Film& film, const std::vector<Pass>& passes, const
         const int first_row = block * rows_per_block;
         const int rows = std::min(rows_per_block, film.height - first_row);
         if (!filled)
-            fill_planes(film, passes, planes, static_cast<std::size_t>(first_row) * width,
+            fill_planes(film, set, planes, static_cast<std::size_t>(first_row) * width,
                         static_cast<std::size_t>(first_row + rows) * width);
         std::vector<std::uint8_t>& stored = buffers.blocks[static_cast<std::size_t>(block)];
         if (compression == ExrCompression::None) {

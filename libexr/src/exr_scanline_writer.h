@@ -22,12 +22,13 @@ struct ScanlineBuffers {
     std::vector<std::vector<std::uint8_t>> blocks;  // each block's bytes as stored
 };
 
-// `compression` is None, Zips or Zip. `planes` as plane_layout made them:
+// `compression` is None, Zips or Zip. `planes` as plane_layout made them for `set`:
 // `filled` says whether their values are set already (else each block fills
 // its rows; planes after plane_layout's, a post layer's, must be filled);
-// `half` stores the planes not marked always_float as HALF. The file goes to
+// `half` stores the planes not marked always_float as HALF; exact-sum planes
+// are UINT. The file goes to
 // `bytes` (grown as needed), its length to `size`.
-void write_scanline_exr(const Film& film, const std::vector<Pass>& passes, const std::vector<Plane>& planes,
+void write_scanline_exr(const Film& film, const PlaneSet& set, const std::vector<Plane>& planes,
                         bool filled, bool half, ExrCompression compression, const std::vector<HeaderAttribute>& attributes,
                         ScanlineBuffers& buffers, std::string& bytes, std::size_t& size);
 

@@ -171,6 +171,13 @@ ExrFilmSummary read_summary(const Imf::Header& header, const std::string& path) 
             const Imf::Channel* channel = header.channels().findChannel(name);
             if (channel && channel->type == Imf::HALF) summary.half = true;
         }
+    if (const auto* exact = header.findTypedAttribute<Imf::IntAttribute>(attr::kExactSums)) {
+        if (exact->value() != kExactSumsEncoding)
+            fail(path, std::string(attr::kExactSums) + " " + std::to_string(exact->value()) +
+                           " is an encoding of exact sums this Orb does not read (" +
+                           std::to_string(kExactSumsEncoding) + "); a later Orb wrote it");
+        summary.exact_sums = true;
+    }
     return summary;
 }
 
@@ -229,24 +236,39 @@ ExrFilm read_film_exr(const std::string& path) {
         ExrFilm result;
         result.metadata = summary.metadata;
         result.passes = summary.passes;
+        result.exact = summary.exact_sums;
 
-        // Every channel the listed passes need, read as FLOAT whatever it is stored as.
-        std::map<std::string, std::vector<float>> planes;
+        // Every channel the listed passes need, read as FLOAT whatever it is
+        // stored as, and their exact sums as UINT.
+        detail::ReadPlanes planes;
         Imf::FrameBuffer frame;
         const std::size_t pixels = static_cast<std::size_t>(width * height);
+        const std::size_t row = static_cast<std::size_t>(width);
+        const auto find = [&](const std::string& name, Pass pass) {
+            const Imf::Channel* channel = header.channels().findChannel(name);
+            if (!channel) fail(path, "channel " + name + " of pass " + pass_name(pass) + " is missing");
+            if (channel->xSampling != 1 || channel->ySampling != 1) fail(path, "channel " + name + " is subsampled");
+            return channel;
+        };
         for (Pass pass : result.passes) {
             std::vector<std::string> names = pass_channels(pass);
             for (const auto& helper : pass_resume_channels(pass)) names.push_back(helper);
             for (const std::string& name : names) {
-                const Imf::Channel* channel = header.channels().findChannel(name);
-                if (!channel) fail(path, "channel " + name + " of pass " + pass_name(pass) + " is missing");
+                const Imf::Channel* channel = find(name, pass);
                 if (channel->type == Imf::HALF) result.half = true;
                 if (channel->type == Imf::UINT) fail(path, "channel " + name + " is UINT, expected FLOAT or HALF");
-                if (channel->xSampling != 1 || channel->ySampling != 1) fail(path, "channel " + name + " is subsampled");
-                auto& values = planes[name];
+                auto& values = planes.values[name];
                 values.assign(pixels, 0.0f);
                 frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
-                                              sizeof(float) * static_cast<std::size_t>(width)));
+                                              sizeof(float) * row));
+            }
+            if (!result.exact) continue;
+            for (const std::string& name : pass_exact_sum_channels(pass)) {
+                if (find(name, pass)->type != Imf::UINT) fail(path, "channel " + name + " is not UINT");
+                auto& halves = planes.exact[name];
+                halves.assign(pixels, 0u);
+                frame.insert(name, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(halves.data()),
+                                              sizeof(std::uint32_t), sizeof(std::uint32_t) * row));
             }
         }
         if (!file.isComplete()) fail(path, "truncated EXR (some scanlines are missing)");
@@ -257,7 +279,11 @@ ExrFilm read_film_exr(const std::string& path) {
         film.resize(static_cast<int>(width), static_cast<int>(height));
         film.samples_per_pixel = summary.samples_per_pixel;
         film.sample_ranges = summary.sample_ranges;
-        detail::planes_to_film(planes, result.passes, film);
+        try {
+            detail::planes_to_film(planes, detail::PlaneSet{result.passes, result.exact}, film);
+        } catch (const std::invalid_argument& e) {
+            fail(path, e.what());
+        }
         return result;
     } catch (const InputError&) {
         throw;

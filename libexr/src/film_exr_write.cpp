@@ -108,7 +108,7 @@ void use_all_cores_for_compression() {
 
 // Fills every pixel of `planes` on every core: a post layer is computed from
 // the whole image before any block is written.
-void fill_all_planes(const Film& film, const std::vector<Pass>& passes, const std::vector<detail::Plane>& planes) {
+void fill_all_planes(const Film& film, const detail::PlaneSet& set, const std::vector<detail::Plane>& planes) {
     const auto width = static_cast<std::size_t>(film.width);
     const auto rows = static_cast<std::size_t>(film.height);
     const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, rows);
@@ -116,7 +116,7 @@ void fill_all_planes(const Film& film, const std::vector<Pass>& passes, const st
     std::mutex error_lock;
     const auto work = [&](std::size_t worker) {
         try {
-            detail::fill_planes(film, passes, planes, rows * worker / workers * width,
+            detail::fill_planes(film, set, planes, rows * worker / workers * width,
                                 rows * (worker + 1) / workers * width);
         } catch (...) {
             const std::lock_guard<std::mutex> lock(error_lock);
@@ -211,7 +211,7 @@ void ExrEncoder::add_post_layers(const Film& film, bool half, std::span<const Po
 
     std::vector<StoredImage::Channel> channels;
     for (const detail::Plane& plane : planes)
-        channels.push_back({plane.name, plane.values, half && !plane.always_float});
+        if (!plane.exact_sum) channels.push_back({plane.name, plane.values, half && !plane.always_float});
     const StoredImage stored(film.width, film.height, std::move(channels));
 
     std::size_t next = 0;
@@ -226,7 +226,7 @@ void ExrEncoder::add_post_layers(const Film& film, bool half, std::span<const Po
         for (std::size_t c = 0; c < count; ++c, ++next) {
             const std::span<float> plane(storage.data() + next * pixels, pixels);
             for (std::size_t i = 0; i < pixels; ++i) plane[i] = values[i * count + c];
-            planes.push_back({info.exr_names[c], false, plane});
+            planes.push_back({info.exr_names[c], false, false, plane});
         }
         for (const auto& [name, value] : layer.attributes) attributes.push_back({name, value});
     }
@@ -237,27 +237,30 @@ void ExrEncoder::encode(const Film& film, const ExrMetadata& metadata, const Exr
     if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("cannot write an empty film");
     if (options.passes.empty()) throw std::invalid_argument("no passes to write");
     if (film.samples_per_pixel == 0) throw std::invalid_argument("the film holds no samples");
+    if (options.exact_sums && options.half)
+        throw std::invalid_argument("exact sums are written beside FLOAT values only, not with HALF");
     ExrEncoding::Buffers& buffers = *into.buffers_;
-    std::vector<detail::HeaderAttribute> attributes = detail::header_attributes(film, metadata, options.passes);
-    std::vector<detail::Plane> planes = detail::plane_layout(film, options.passes, buffers.planes);
+    std::vector<detail::HeaderAttribute> attributes = detail::header_attributes(film, metadata, options);
+    const detail::PlaneSet set{options.passes, options.exact_sums};
+    std::vector<detail::Plane> planes = detail::plane_layout(film, set, buffers.planes);
     const auto width = static_cast<std::size_t>(film.width);
     const std::size_t pixels = width * static_cast<std::size_t>(film.height);
     // Post layers need the whole image first; without them the scanline
     // writer fills each block as it packs it.
     const bool filled = !post.empty();
     if (filled) {
-        fill_all_planes(film, options.passes, planes);
+        fill_all_planes(film, set, planes);
         add_post_layers(film, options.half, post, planes, buffers.post_planes, attributes);
     }
     if (detail::scanline_writer_handles(options.compression)) {
-        detail::write_scanline_exr(film, options.passes, planes, filled, options.half, options.compression,
+        detail::write_scanline_exr(film, set, planes, filled, options.half, options.compression,
                                    attributes, buffers.scanlines, into.bytes_, into.size_);
         return;
     }
 
     // RLE and PIZ through OpenEXR's C++ writer, which compresses blocks on its thread pool.
     use_all_cores_for_compression();
-    if (!filled) detail::fill_planes(film, options.passes, planes, 0, pixels);
+    if (!filled) detail::fill_planes(film, set, planes, 0, pixels);
     Imf::Header header(film.width, film.height);
     header.compression() = to_imf(options.compression);
     add_attributes(header, attributes);
@@ -268,7 +271,11 @@ void ExrEncoder::encode(const Film& film, const ExrMetadata& metadata, const Exr
     if (options.half && buffers.halfs.size() < planes.size() * pixels) buffers.halfs.resize(planes.size() * pixels);
     for (std::size_t p = 0; p < planes.size(); ++p) {
         const detail::Plane& plane = planes[p];
-        if (options.half && !plane.always_float) {
+        if (plane.exact_sum) {
+            header.channels().insert(plane.name, Imf::Channel(Imf::UINT));
+            frame.insert(plane.name, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(plane.values.data()),
+                                                sizeof(std::uint32_t), sizeof(std::uint32_t) * width));
+        } else if (options.half && !plane.always_float) {
             Imath::half* copy = buffers.halfs.data() + p * pixels;
             std::copy(plane.values.begin(), plane.values.end(), copy);
             header.channels().insert(plane.name, Imf::Channel(Imf::HALF));
@@ -301,6 +308,10 @@ std::string encode_film_exr(const Film& film, const ExrMetadata& metadata, const
     ExrEncoding encoding;
     encode_film_exr(film, metadata, options, encoding, post);
     return std::string(encoding.bytes());
+}
+
+std::uint64_t encoding_bytes(const std::vector<Pass>& passes, bool exact_sums, std::uint64_t pixels) {
+    return detail::plane_count(detail::PlaneSet{passes, exact_sums}) * pixels * sizeof(float);
 }
 
 void write_film_exr(const std::string& path, const Film& film, const ExrMetadata& metadata,

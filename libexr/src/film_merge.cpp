@@ -58,8 +58,9 @@ ExrFilm merge_films(std::vector<MergeInput> inputs) {
                  "was written with --half; merging within float rounding needs FLOAT channels (render the slices "
                  "without --half)");
 
-    // In sample order, so the result does not depend on the order of the
-    // arguments (float additions are not associative).
+    // In sample order: the slice holding the lowest sample index is the
+    // reference (its header, and the centre-ray channels), whatever the
+    // order of the arguments; the sums add exactly in any order.
     std::stable_sort(inputs.begin(), inputs.end(), [](const MergeInput& a, const MergeInput& b) {
         return a.file.film.sample_ranges.first() < b.file.film.sample_ranges.first();
     });
@@ -78,6 +79,7 @@ ExrFilm merge_films(std::vector<MergeInput> inputs) {
         merged.film.accumulate(inputs[i].file.film);
         merged.metadata.target_spp += inputs[i].file.metadata.target_spp;
         merged.metadata.render_seconds += inputs[i].file.metadata.render_seconds;
+        merged.exact = merged.exact && inputs[i].file.exact;
     }
     merged.metadata.device = joined_devices(inputs);
     return merged;

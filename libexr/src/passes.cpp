@@ -49,6 +49,23 @@ std::vector<std::string> pass_resume_channels(Pass pass) {
     return names;
 }
 
+std::string exact_sum_channel_name(const film::ChannelInfo& channel, int component, bool high) {
+    std::string name = "orb.sum.";
+    name += channel.exr_names[static_cast<std::size_t>(component)];
+    name += high ? ".hi" : ".lo";
+    return name;
+}
+
+std::vector<std::string> pass_exact_sum_channels(Pass pass) {
+    std::vector<std::string> names;
+    for (const film::ChannelInfo* channel : pass_film_channels(pass)) {
+        if (channel->accumulation != film::Accumulation::Sum) continue;
+        for (int c = 0; c < channel->components; ++c)
+            for (bool high : {false, true}) names.push_back(exact_sum_channel_name(*channel, c, high));
+    }
+    return names;
+}
+
 bool contains(const std::vector<Pass>& passes, Pass pass) {
     return std::find(passes.begin(), passes.end(), pass) != passes.end();
 }

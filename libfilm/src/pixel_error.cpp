@@ -12,7 +12,7 @@ namespace orb::film {
 
 double pixel_samples(const Film& film, std::size_t pixel)
 {
-    if (!film.sample_count.empty()) return film.sample_count[pixel];
+    if (!film.sample_count.empty()) return static_cast<double>(film.sample_count[pixel]);
     return static_cast<double>(film.samples_per_pixel);
 }
 
@@ -24,8 +24,9 @@ bool pixel_moments(const Film& film, std::size_t pixel, double mean[3], double v
     const double n = pixel_samples(film, pixel);
     if (n < 2) return false;
     for (std::size_t c = 0; c < 3; ++c) {
-        mean[c] = film.radiance[pixel * 3 + c] / n;
-        const double mean_sq = film.radiance_sq[pixel * 3 + c] / n;
+        // As the device's decision computes them (kernels/adaptive.cl, fixed_sum_value).
+        mean[c] = sum_value(Units::Fixed, film.radiance[pixel * 3 + c]) / n;
+        const double mean_sq = sum_value(Units::Fixed, film.radiance_sq[pixel * 3 + c]) / n;
         variance_of_mean[c] = std::max(0.0, mean_sq - mean[c] * mean[c]) / (n - 1.0);
     }
     return true;
@@ -55,6 +56,9 @@ void check_channels(const Film& film)
 }
 
 }  // namespace
+
+static_assert(info(Channel::radiance).units == Units::Fixed && info(Channel::radiance_sq).units == Units::Fixed,
+              "the error estimate and kernels/adaptive.cl read radiance and radiance_sq as Fixed sums");
 
 double pixel_relmse(const Film& film, std::size_t pixel)
 {

@@ -204,8 +204,10 @@ std::vector<std::string> available_passes(const Image& image) {
     }
     claimed_layers.insert("n");
     claimed_layers.insert("normals");
-    claimed_layers.insert("orb");  // orb-render's own bookkeeping channels, not a picture
     for (const std::string& channel : image.channel_names) {
+        // orb-render's own bookkeeping (orb.normalLength, the exact sums
+        // orb.sum.R.lo, ...), not a picture.
+        if (lower(channel).rfind("orb.", 0) == 0) continue;
         const auto dot = channel.rfind('.');
         if (dot == std::string::npos) continue;
         const std::string layer = channel.substr(0, dot);

@@ -86,6 +86,7 @@ std::vector<DeviceInfo> list_devices()
         info.compute_units = device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
         info.max_clock_mhz = device.getInfo<CL_DEVICE_MAX_CLOCK_FREQUENCY>();
         info.global_memory_bytes = device.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+        info.max_allocation_bytes = device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
         out.push_back(std::move(info));
     }
     if (out.empty()) throw NoOpenCLError(kInstallPocl);

@@ -1,5 +1,7 @@
 // The film's sums in device buffers: one buffer per row of the channel table
-// (ORB_FILM_CHANNELS), in its order, which is render_pass's film arguments'.
+// (ORB_FILM_CHANNELS), in its order, which is render_pass's film arguments':
+// 64-bit integer sums for a Sum channel, floats for a CentreRay channel
+// (kernels/film.cl).
 // Only the channels the kernels compute (RenderConfig::film_channels) have
 // buffers of the film's size and travel between host and device; on the
 // host the others are empty (Film::resize with the channel mask).
@@ -41,6 +43,11 @@ public:
     void write(cl::CommandQueue& queue, const Film& film);
 
     static constexpr int kBufferCount = film::kChannelCount;
+
+    // The bytes of each buffer a film of this size computing `channels`
+    // allocates (before any read_later, which adds copies of the computed
+    // ones), for checking that it fits before allocating it.
+    static std::vector<std::uint64_t> buffer_bytes(int width, int height, std::uint32_t channels);
     const std::array<cl::Buffer, kBufferCount>& buffers() const { return buffers_; }
 
     bool computes(film::Channel channel) const { return (channels_ & film::channel_bit(channel)) != 0; }
@@ -48,8 +55,8 @@ public:
     std::uint64_t bytes() const;
 
 private:
-    std::size_t floats_in(const film::ChannelInfo& info) const;     // of the whole film
-    std::size_t buffer_floats(const film::ChannelInfo& info) const;  // of its buffer: the film's or a placeholder's
+    std::size_t bytes_in(const film::ChannelInfo& info) const;      // of the whole film
+    std::size_t buffer_bytes(const film::ChannelInfo& info) const;  // of its buffer: the film's or a placeholder's
     bool has_this_shape(const Film& film) const;
     void enqueue_reads(cl::CommandQueue& queue, Film& film) const;  // the computed channels, into `film`
     void check_shape(const Film& film) const;  // for write(): size and computed channels

@@ -478,6 +478,14 @@ void DeviceRenderer::load_film(const Film& film)
     centre_ray_pending_ = film.samples_per_pixel == 0;
 }
 
+int DeviceRenderer::suggested_samples_per_pass() const
+{
+    // The development knob ORB_PASS_SPP, after the first pass (which still
+    // times the device), in place of the tuner's choice.
+    if (config_.development.pass_spp && tuner_.seconds_per_sample() > 0) return *config_.development.pass_spp;
+    return tuner_.suggested();
+}
+
 std::uint64_t DeviceRenderer::device_memory_bytes() const { return film_.bytes() + scene_bytes_; }
 
 }  // namespace orb::render

@@ -98,7 +98,7 @@ public:
     // Samples per pixel a pass should take to last the pass length aimed at
     // on this device, and the measured seconds per sample per pixel (0 until
     // a slice has been timed).
-    int suggested_samples_per_pass() const { return tuner_.suggested(); }
+    int suggested_samples_per_pass() const;
     double seconds_per_sample() const { return tuner_.seconds_per_sample(); }
 
     std::uint64_t device_memory_bytes() const;

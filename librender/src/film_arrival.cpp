@@ -11,7 +11,7 @@ PinnedChannels::PinnedChannels(const cl::Context& context, cl::CommandQueue& map
     for (int c = 0; c < film::kChannelCount; ++c) {
         if (bytes[c] == 0) continue;
         buffers[c] = cl::Buffer(context, CL_MEM_ALLOC_HOST_PTR | CL_MEM_READ_WRITE, bytes[c]);
-        mapped[c] = static_cast<float*>(queue.enqueueMapBuffer(buffers[c], CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0, bytes[c]));
+        mapped[c] = static_cast<std::byte*>(queue.enqueueMapBuffer(buffers[c], CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0, bytes[c]));
     }
 }
 
@@ -76,17 +76,17 @@ void FilmArrival::wait_into(Film& film)
     transfers_.clear();
     bool shaped = film.width == width_ && film.height == height_;
     for (const film::ChannelInfo& info : film::kChannels) {
-        const std::size_t floats = (channels_ & film::channel_bit(info.channel))
-                                       ? film.pixel_count() * static_cast<std::size_t>(info.components)
-                                       : 0;
-        shaped = shaped && film.channel(info.channel).size() == floats;
+        const std::size_t entries = (channels_ & film::channel_bit(info.channel))
+                                        ? film.pixel_count() * static_cast<std::size_t>(info.components)
+                                        : 0;
+        shaped = shaped && film.entries(info.channel) == entries;
     }
     if (!shaped) film.resize(width_, height_, channels_);
     for (const film::ChannelInfo& info : film::kChannels) {
-        const float* from = landing_->mapped[static_cast<int>(info.channel)];
+        const std::byte* from = landing_->mapped[static_cast<int>(info.channel)];
         if (!from) continue;
-        std::vector<float>& into = film.channel(info.channel);
-        std::memcpy(into.data(), from, into.size() * sizeof(float));
+        const std::span<std::byte> into = film.bytes(info.channel);
+        std::memcpy(into.data(), from, into.size());
     }
     landing_.reset();  // back to the pool
 }

@@ -27,7 +27,7 @@ struct PinnedChannels {
 
     cl::CommandQueue queue;  // the one they were mapped on
     std::array<cl::Buffer, film::kChannelCount> buffers;
-    std::array<float*, film::kChannelCount> mapped{};  // null for a channel not computed
+    std::array<std::byte*, film::kChannelCount> mapped{};  // null for a channel not computed
 };
 
 // Sets of pinned buffers, one per film on its way: a set goes back to the

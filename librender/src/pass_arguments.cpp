@@ -27,16 +27,23 @@ cl::Buffer read_only_buffer(const cl::Context& context, const std::vector<T>& re
 
 }  // namespace
 
-std::uint64_t scene_table_bytes(const SceneTables& tables)
+std::vector<std::uint64_t> scene_table_buffer_bytes(const SceneTables& tables)
 {
-    std::uint64_t total = 0;
+    std::vector<std::uint64_t> bytes;
 #define ORB_BYTES_FILM(...)
-#define ORB_BYTES_TABLE(type, name) total += buffer_bytes(tables.name);
+#define ORB_BYTES_TABLE(type, name) bytes.push_back(buffer_bytes(tables.name));
 #define ORB_BYTES_PARAMS(type, name)
     ORB_RENDER_PASS_ARGUMENTS(ORB_BYTES_FILM, ORB_BYTES_TABLE, ORB_BYTES_PARAMS)
 #undef ORB_BYTES_FILM
 #undef ORB_BYTES_TABLE
 #undef ORB_BYTES_PARAMS
+    return bytes;
+}
+
+std::uint64_t scene_table_bytes(const SceneTables& tables)
+{
+    std::uint64_t total = 0;
+    for (std::uint64_t bytes : scene_table_buffer_bytes(tables)) total += bytes;
     return total;
 }
 

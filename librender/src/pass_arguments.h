@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "device_film.h"
 #include "opencl.h"
@@ -62,6 +63,8 @@ struct SceneBuffers {
 // Bytes the tables take on the device (an empty table still takes one
 // placeholder record: OpenCL has no empty buffers).
 std::uint64_t scene_table_bytes(const SceneTables& tables);
+// The same table by table, in the list's order.
+std::vector<std::uint64_t> scene_table_buffer_bytes(const SceneTables& tables);
 
 SceneBuffers upload_scene(const cl::Context& context, const SceneTables& tables);
 

@@ -12,6 +12,7 @@
 #include "animation_tree.h"
 #include "device_renderer.h"
 #include "device_session.h"
+#include "memory_check.h"
 #include "sample_split.h"
 #include "scene_layout.h"
 
@@ -124,6 +125,16 @@ Renderer::Renderer(const Scene& scene, const RenderConfig& config) : impl_(std::
     // The scene is checked before any device is touched, so bad input fails fast.
     PreparedScene prepared = prepare_scene(scene);
     r.infos = choose_devices(config.device);
+    // And the memory the render needs, before a driver is asked for it.
+    {
+        std::vector<DeviceNeeds> needs(r.infos.size());
+        const std::vector<std::uint64_t> scene_buffers = scene_table_buffer_bytes(prepared.data_->layout.tables);
+        for (DeviceNeeds& device : needs) {
+            device.buffers = DeviceFilm::buffer_bytes(config.width, config.height, config.film_channels);
+            device.buffers.insert(device.buffers.end(), scene_buffers.begin(), scene_buffers.end());
+        }
+        require_memory(r.infos, needs, config.caller_host_bytes, host_bytes_available());
+    }
     const SessionOptions options{config.development.kernel_dir, config.use_binary_cache,
                                  config.development.show_build_log};
     for (const DeviceInfo& info : r.infos)
@@ -219,6 +230,9 @@ void Renderer::render_samples(std::uint64_t first_sample, int count)
     if (first_sample > std::numeric_limits<std::uint64_t>::max() - range.count)
         throw std::invalid_argument("samples " + std::to_string(first_sample) + " + " + std::to_string(count) +
                                     " run past the last sample index 2^64-1");
+    if (r.ranges.total() + range.count > film::kMaxSamplesPerPixel)
+        throw std::invalid_argument("a film holds at most 2^39 samples per pixel; " + std::to_string(count) +
+                                    " more would make " + std::to_string(r.ranges.total() + range.count));
     if (r.ranges.overlaps(range))
         throw std::invalid_argument("the film already holds some of the samples " + std::to_string(first_sample) +
                                     ":" + std::to_string(count) + " (it holds " + r.ranges.format() + ")");
@@ -392,13 +406,13 @@ void Renderer::load_film(const Film& film)
     r.device_ranges.front() = held;
     r.ranges = held;
     r.cursor = held.end();
-    const std::vector<float>& counts = film.sample_count;
+    const std::vector<film::Sum>& counts = film.sample_count;
     if (counts.empty()) {
         r.pixel_samples = held.total() * pixel_count();
     } else {
-        double total = 0;
-        for (float count : counts) total += count;
-        r.pixel_samples = static_cast<std::uint64_t>(total);
+        std::uint64_t total = 0;
+        for (const film::Sum count : counts) total += static_cast<std::uint64_t>(count);
+        r.pixel_samples = total;
     }
     if (r.config.adaptive) r.all_pixels_active();
 }

@@ -176,7 +176,8 @@ tinygltf::Model load_model(std::string_view bytes, const std::string& source, co
         while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
         for (char& ch : error)
             if (ch == '\n') ch = ';';
-        throw InputError(source + ": not a valid glTF 2.0 asset: " + error);
+        // The parsers quote what they read, which may be any byte of the input.
+        throw InputError(source + ": not a valid glTF 2.0 asset: " + printable(error));
     }
     return model;
 }

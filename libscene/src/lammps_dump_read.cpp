@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <unordered_map>
 
 #include "orb/scene/error.h"
 #include "text_trajectory.h"
@@ -167,7 +168,7 @@ AtomFrame read_dump_frame(LineReader& lines, const std::string& source) {
     frame.positions.resize(count);
     // The other columns: element (the atoms' elements), type (a category),
     // radius or diameter (the atoms' sizes), anything else a number.
-    std::optional<std::size_t> element_column, type_column, radius_column, diameter_column;
+    std::optional<std::size_t> element_column, type_column, radius_column, diameter_column, id_column;
     std::vector<std::pair<std::size_t, SphereProperty>> numeric;
     for (std::size_t c = 0; c < names.size(); ++c) {
         if (std::find(positions->columns.begin(), positions->columns.end(), c) != positions->columns.end()) continue;
@@ -176,6 +177,7 @@ AtomFrame read_dump_frame(LineReader& lines, const std::string& source) {
         else {
             if (names[c] == "radius") radius_column = c;
             if (names[c] == "diameter") diameter_column = c;
+            if (names[c] == "id") id_column = c;
             numeric.push_back({c, SphereProperty{std::string(names[c]), {}, {}}});
             numeric.back().second.values.reserve(count);
         }
@@ -188,6 +190,11 @@ AtomFrame read_dump_frame(LineReader& lines, const std::string& source) {
     }
     if (type_column) types.emplace("type");
     if (radius_column || diameter_column) frame.radii.resize(count);
+
+    // An atom id names one atom of the frame: two lines with one id are a
+    // broken dump (chemfiles refuses it too), not two atoms.
+    std::unordered_map<long long, std::uint64_t> id_lines;
+    if (id_column) id_lines.reserve(count);
 
     std::string_view line;
     std::vector<std::string_view> fields;
@@ -212,6 +219,14 @@ AtomFrame read_dump_frame(LineReader& lines, const std::string& source) {
             p = q;
         }
         frame.positions[i] = p;
+        // (An id that is not a whole number stays a number like any other column's.)
+        if (long long id = 0; id_column && parse_long(fields[*id_column], id)) {
+            const auto [first, fresh] = id_lines.emplace(id, lines.line_number());
+            if (!fresh)
+                fail_at(source, lines.line_number(),
+                        "atom id " + std::to_string(id) + " appears twice in the frame (first on line " +
+                            std::to_string(first->second) + "); each atom of a dump frame has its own id");
+        }
         if (elements) {
             frame.elements[i] = &element_of_symbol(fields[*element_column], unknown);
             elements->add(frame.elements[i]->number ? frame.elements[i]->symbol : fields[*element_column]);

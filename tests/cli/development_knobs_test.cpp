@@ -51,6 +51,7 @@ TEST(DevelopmentKnobsParser, NothingSetIsTheDefaults)
     EXPECT_FALSE(knobs.simd_lanes);
     EXPECT_FALSE(knobs.local_size);
     EXPECT_FALSE(knobs.refit_cost_limit);
+    EXPECT_FALSE(knobs.pass_spp);
     EXPECT_FALSE(knobs.show_build_log);
     EXPECT_FALSE(knobs.pass_observer);
     EXPECT_TRUE(warnings.empty());
@@ -62,6 +63,7 @@ TEST(DevelopmentKnobsParser, ReadsEveryKnob)
                                           {"ORB_CL_OPTIONS", "-DORB_SCALAR_TRAVERSAL=1 -cl-nv-verbose"},
                                           {"ORB_SIMD_LANES", "8"},
                                           {"ORB_LOCAL_SIZE", "32x4"},
+                                          {"ORB_PASS_SPP", "7"},
                                           {"ORB_REFIT_COST_LIMIT", "1.5"},
                                           {"ORB_SHOW_BUILD_LOG", "1"},
                                           {"ORB_DEVICE_DECISIONS", "1"}});
@@ -69,6 +71,7 @@ TEST(DevelopmentKnobsParser, ReadsEveryKnob)
     EXPECT_EQ(knobs.cl_options, "-DORB_SCALAR_TRAVERSAL=1 -cl-nv-verbose");
     EXPECT_EQ(knobs.simd_lanes, 8);
     EXPECT_EQ(knobs.local_size, (orb::render::LocalSize{32, 4}));
+    EXPECT_EQ(knobs.pass_spp, 7);
     EXPECT_EQ(knobs.refit_cost_limit, 1.5);
     EXPECT_TRUE(knobs.show_build_log);
     EXPECT_EQ(knobs.device_decisions, true);
@@ -105,6 +108,11 @@ TEST(DevelopmentKnobsParser, AMalformedValueNamesTheVariableAndWhatWasExpected)
     EXPECT_NE(lanes.find("ORB_SIMD_LANES='6'"), std::string::npos) << lanes;
     EXPECT_NE(lanes.find("0 (one path per work-item), 4, 8 or 16"), std::string::npos) << lanes;
     for (const char* bad : {"eight", "-8", "8.0", " 8", "32"}) EXPECT_NE(refusal({{"ORB_SIMD_LANES", bad}}), "") << bad;
+
+    const std::string pass = refusal({{"ORB_PASS_SPP", "0"}});
+    EXPECT_NE(pass.find("ORB_PASS_SPP='0'"), std::string::npos) << pass;
+    EXPECT_NE(pass.find("a whole number of samples from 1 to 4096"), std::string::npos) << pass;
+    for (const char* bad : {"4097", "-1", "two", "1.5"}) EXPECT_NE(refusal({{"ORB_PASS_SPP", bad}}), "") << bad;
 
     const std::string limit = refusal({{"ORB_REFIT_COST_LIMIT", "2x"}});
     EXPECT_NE(limit.find("ORB_REFIT_COST_LIMIT='2x'"), std::string::npos) << limit;

@@ -35,12 +35,19 @@ std::map<std::string, std::vector<float>> read_channels(const std::string& path)
     return orb::exr::testing::read_raw_exr(path).channels;
 }
 
-void expect_sums_near(const std::vector<float>& expected, const std::vector<float>& actual, const char* what) {
+// Sums rebuilt from stored means: within a few float roundings, plus the
+// rounding to whole units.
+void expect_sums_near(const std::vector<orb::film::Sum>& expected, const std::vector<orb::film::Sum>& actual,
+                      const char* what, double ulps = 4) {
     ASSERT_EQ(expected.size(), actual.size()) << what;
-    for (std::size_t i = 0; i < expected.size(); ++i)
-        ASSERT_TRUE(within_float_rounding(expected[i], actual[i])) << what << "[" << i << "]: " << expected[i]
-                                                                   << " vs " << actual[i];
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const double a = static_cast<double>(expected[i]), b = static_cast<double>(actual[i]);
+        ASSERT_TRUE(std::fabs(a - b) <= 1.0 || within_float_rounding(a, b, ulps))
+            << what << "[" << i << "]: " << expected[i] << " vs " << actual[i];
+    }
 }
+
+double value_of(orb::film::Sum sum) { return orb::film::sum_value(orb::film::Units::Fixed, sum); }
 
 }  // namespace
 
@@ -55,6 +62,7 @@ TEST(FilmExr, RoundTripRecoversEverySumWithinFloatRounding) {
     EXPECT_EQ(back.film.samples_per_pixel, 37u);
     EXPECT_EQ(back.passes, image_passes());  // the default: every layer but the sample counts
     EXPECT_FALSE(back.half);
+    EXPECT_FALSE(back.exact);  // means only: the sums are rebuilt from them
     expect_sums_near(film.radiance, back.film.radiance, "radiance");
     expect_sums_near(film.direct, back.film.direct, "direct");
     expect_sums_near(film.indirect, back.film.indirect, "indirect");
@@ -66,9 +74,110 @@ TEST(FilmExr, RoundTripRecoversEverySumWithinFloatRounding) {
     EXPECT_EQ(film.object_id, back.film.object_id);
     // sum_sq comes back through the variance of the mean and the mean: a
     // subtraction that can cost a few more roundings than the plain sums.
-    for (std::size_t i = 0; i < film.radiance_sq.size(); ++i)
-        ASSERT_TRUE(within_float_rounding(film.radiance_sq[i], back.film.radiance_sq[i], 16))
-            << i << ": " << film.radiance_sq[i] << " vs " << back.film.radiance_sq[i];
+    expect_sums_near(film.radiance_sq, back.film.radiance_sq, "radiance_sq", 16);
+}
+
+// A file that may be continued or merged carries the film's exact sums:
+// they come back bit for bit, and its visible channels are the very values
+// of a file without them.
+TEST(FilmExr, ExactSumsComeBackBitForBit) {
+    auto film = synthetic_film(kWidth, kHeight, 37);
+    film.radiance[5] = orb::film::kSumRangeEnd;  // beyond a float's and a double's integers
+    film.normal[7] = -12345;                     // a signed sum
+    for (const char* passes : {"all", "beauty,normal,variance,samples", "variance"}) {
+        ExrWriteOptions options;
+        options.passes = parse_passes(passes);
+        options.exact_sums = true;
+        const std::string path = scratch_path("exact.exr");
+        write_film_exr(path, film, synthetic_metadata(), options);
+        const ExrFilm back = read_film_exr(path);
+        EXPECT_TRUE(back.exact) << passes;
+        for (const orb::film::ChannelInfo& info : orb::film::kChannels) {
+            const bool stored = orb::exr::contains(options.passes, info.layer);
+            if (!stored || info.accumulation != orb::film::Accumulation::Sum) continue;
+            EXPECT_EQ(back.film.sums(info.channel), film.sums(info.channel)) << passes << " " << info.name;
+        }
+        options.exact_sums = false;
+        const std::string plain = scratch_path("plain.exr");
+        write_film_exr(plain, film, synthetic_metadata(), options);
+        const auto with = read_channels(path), without = read_channels(plain);
+        for (const auto& [name, values] : without) {
+            ASSERT_TRUE(with.count(name)) << name;
+            EXPECT_EQ(with.at(name), values) << passes << " " << name;
+        }
+        for (const auto& [name, values] : with) {
+            if (!without.count(name)) {
+                EXPECT_EQ(name.rfind("orb.sum.", 0), 0u) << name;
+            }
+        }
+    }
+}
+
+TEST(FilmExr, ExactSumsAreTwoUintChannelsPerComponent) {
+    const std::string path = scratch_path("exact.exr");
+    ExrWriteOptions options;
+    options.passes = {Pass::Beauty, Pass::Depth};
+    options.exact_sums = true;
+    write_film_exr(path, synthetic_film(kWidth, kHeight, 3), synthetic_metadata(), options);
+    Imf::InputFile file(path.c_str());
+    std::set<std::string> names;
+    for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
+        names.insert(it.name());
+        EXPECT_EQ(it.channel().type, std::string(it.name()).rfind("orb.sum.", 0) == 0 ? Imf::UINT : Imf::FLOAT)
+            << it.name();
+    }
+    EXPECT_EQ(names, (std::set<std::string>{"A", "B", "G", "R", "Z", "orb.sum.A.hi", "orb.sum.A.lo", "orb.sum.B.hi",
+                                            "orb.sum.B.lo", "orb.sum.G.hi", "orb.sum.G.lo", "orb.sum.R.hi",
+                                            "orb.sum.R.lo"}));
+    EXPECT_EQ(file.header().typedAttribute<Imf::IntAttribute>("orb:exactSums").value(), kExactSumsEncoding);
+    ExrWriteOptions half = options;
+    half.half = true;
+    EXPECT_THROW(write_film_exr(scratch_path("half.exr"), synthetic_film(kWidth, kHeight, 3), synthetic_metadata(), half),
+                 std::invalid_argument);
+}
+
+// Exact sums that do not give the stored values (an image edited after it
+// was written, keeping the hidden channels) are refused: continuing them
+// would continue another image than the one the file shows.
+TEST(FilmExrRead, ExactSumsThatDisagreeWithTheImageAreRefused) {
+    const std::string path = scratch_path("edited.exr");
+    ExrWriteOptions options;
+    options.passes = {Pass::Beauty};
+    options.exact_sums = true;
+    auto film = synthetic_film(kWidth, kHeight, 3);
+    write_film_exr(path, film, synthetic_metadata(), options);
+    // The same file with one sum changed: its R no longer matches.
+    const auto edited_sums = [&] {
+        orb::Film other = film;
+        other.radiance[3 * 10] += 1000;
+        return other;
+    }();
+    const std::string other_path = scratch_path("other.exr");
+    write_film_exr(other_path, edited_sums, synthetic_metadata(), options);
+    // Splice: the other file's exact sums of R with this file's R.
+    auto raw = orb::exr::testing::read_raw_exr(path);
+    const auto other_raw = orb::exr::testing::read_raw_exr(other_path);
+    raw.uints.at("orb.sum.R.lo") = other_raw.uints.at("orb.sum.R.lo");
+    raw.uints.at("orb.sum.R.hi") = other_raw.uints.at("orb.sum.R.hi");
+    const std::string spliced = scratch_path("spliced.exr");
+    orb::exr::testing::write_raw_exr(spliced, raw);
+    const std::string message = message_of([&] { read_film_exr(spliced); });
+    EXPECT_NE(message.find("do not give channel R at pixel (2, 1)"), std::string::npos) << message;
+}
+
+TEST(FilmExrRead, ExactSumsOfALaterEncodingAreRefused) {
+    const std::string path = scratch_path("later.exr");
+    ExrWriteOptions options;
+    options.exact_sums = true;
+    options.passes = {Pass::Beauty};
+    write_film_exr(path, synthetic_film(kWidth, kHeight, 3), synthetic_metadata(), options);
+    auto raw = orb::exr::testing::read_raw_exr(path);
+    raw.int_attributes["orb:exactSums"] = kExactSumsEncoding + 1;
+    const std::string later = scratch_path("later2.exr");
+    orb::exr::testing::write_raw_exr(later, raw);
+    const std::string message = message_of([&] { read_film_exr(later); });
+    EXPECT_NE(message.find("orb:exactSums 2 is an encoding of exact sums this Orb does not read"), std::string::npos)
+        << message;
 }
 
 // With the samples layer (adaptive sampling) every mean is over its pixel's
@@ -78,7 +187,7 @@ TEST(FilmExr, PerPixelCountsNormaliseEachPixelAndComeBack) {
     auto film = synthetic_film(kWidth, kHeight, 40);
     film.samples_per_pixel = 64;
     film.sample_ranges = orb::SampleRanges(orb::SampleRange{0, 64});
-    for (std::size_t i = 0; i < film.sample_count.size(); ++i) film.sample_count[i] = static_cast<float>(40 + i % 25);
+    for (std::size_t i = 0; i < film.sample_count.size(); ++i) film.sample_count[i] = static_cast<orb::film::Sum>(40 + i % 25);
     const std::string path = scratch_path("film.exr");
     ExrWriteOptions options;
     options.passes = parse_passes("beauty,normal,variance,samples");
@@ -87,13 +196,13 @@ TEST(FilmExr, PerPixelCountsNormaliseEachPixelAndComeBack) {
     EXPECT_EQ(back.film.sample_count, film.sample_count);
     expect_sums_near(film.radiance, back.film.radiance, "radiance");
     expect_sums_near(film.normal, back.film.normal, "normal");
-    for (std::size_t i = 0; i < film.radiance_sq.size(); ++i)
-        ASSERT_TRUE(within_float_rounding(film.radiance_sq[i], back.film.radiance_sq[i], 16)) << i;
+    expect_sums_near(film.radiance_sq, back.film.radiance_sq, "radiance_sq", 16);
     // The stored mean is the sum over the pixel's count, not over orb:spp.
     const orb::exr::testing::RawExr raw = orb::exr::testing::read_raw_exr(path);
     const std::vector<float>& red = raw.channels.at("R");
     for (std::size_t i = 0; i < red.size(); ++i)
-        ASSERT_FLOAT_EQ(red[i], static_cast<float>(static_cast<double>(film.radiance[i * 3]) / film.sample_count[i])) << i;
+        ASSERT_FLOAT_EQ(red[i], static_cast<float>(value_of(film.radiance[i * 3]) / static_cast<double>(film.sample_count[i])))
+            << i;
 }
 
 TEST(FilmExr, RoundTripKeepsEveryAttribute) {
@@ -165,13 +274,13 @@ TEST(FilmExr, StoresMeansVarianceOfTheMeanAndUnitNormals) {
     const char* var[3] = {"variance.R", "variance.G", "variance.B"};
     for (std::size_t i = 0; i < film.pixel_count(); ++i) {
         for (int c = 0; c < 3; ++c) {
-            const double mean = double(film.radiance[i * 3 + c]) / n;
+            const double mean = value_of(film.radiance[i * 3 + c]) / n;
             EXPECT_TRUE(within_float_rounding(channels[rgb[c]][i], mean, 1)) << i;
-            const double sample_variance = (double(film.radiance_sq[i * 3 + c]) / n - mean * mean) * n / (n - 1);
+            const double sample_variance = (value_of(film.radiance_sq[i * 3 + c]) / n - mean * mean) * n / (n - 1);
             EXPECT_TRUE(within_float_rounding(channels[var[c]][i], sample_variance / n, 8))
                 << i << ": " << channels[var[c]][i] << " vs " << sample_variance / n;
         }
-        EXPECT_TRUE(within_float_rounding(channels["A"][i], double(film.alpha[i]) / n, 1));
+        EXPECT_TRUE(within_float_rounding(channels["A"][i], static_cast<double>(film.alpha[i]) / n, 1));
         const double nx = channels["N.X"][i], ny = channels["N.Y"][i], nz = channels["N.Z"][i];
         const double length = std::sqrt(nx * nx + ny * ny + nz * nz);
         if (film.normal[i * 3] != 0 || film.normal[i * 3 + 1] != 0 || film.normal[i * 3 + 2] != 0)
@@ -214,7 +323,8 @@ TEST(FilmExr, HalfStoresColourAsHalfButDepthIdAndHelpersAsFloat) {
     const ExrFilm back = read_film_exr(path);
     EXPECT_TRUE(back.half);
     for (std::size_t i = 0; i < film.radiance.size(); ++i)  // half keeps 11 significant bits
-        EXPECT_NEAR(back.film.radiance[i], film.radiance[i], 1e-3 * std::fabs(film.radiance[i]) + 1e-6) << i;
+        EXPECT_NEAR(value_of(back.film.radiance[i]), value_of(film.radiance[i]), 1e-3 * value_of(film.radiance[i]) + 1e-6)
+            << i;
     EXPECT_EQ(back.film.depth, film.depth);
     EXPECT_NE(message_of([&] { require_resumable(back, back.passes, path); }).find("--half"), std::string::npos);
 }
@@ -251,8 +361,11 @@ TEST(FilmExr, OneSampleRecoversSumOfSquaresExactly) {
     const ExrFilm back = read_film_exr(path);
     // With one sample sum_sq is the square of the sum (the synthetic film's
     // sum_sq is not, so compare with what one sample implies).
-    for (std::size_t i = 0; i < film.radiance.size(); ++i)
-        EXPECT_TRUE(within_float_rounding(back.film.radiance_sq[i], double(film.radiance[i]) * film.radiance[i], 2));
+    for (std::size_t i = 0; i < film.radiance.size(); ++i) {
+        const double square = value_of(film.radiance[i]) * value_of(film.radiance[i]);
+        const double back_sq = value_of(back.film.radiance_sq[i]);
+        EXPECT_TRUE(std::fabs(back_sq - square) <= 0x1p-24 || within_float_rounding(back_sq, square, 2)) << i;
+    }
 }
 
 TEST(FilmExr, RefusesAFilmWithoutSamples) {

@@ -1,4 +1,5 @@
-// merge_films: slices of one render add up, in any order of the inputs.
+// merge_films: slices of one render add up to the same bits, in any order of
+// the inputs and any grouping of merges.
 #include <gtest/gtest.h>
 
 #include "orb/exr/film_merge.h"
@@ -21,6 +22,7 @@ MergeInput slice(const char* name, const char* ranges, unsigned seed) {
     file.metadata.render_seconds = 1.5;
     file.metadata.device = name;
     file.passes = all_passes();
+    file.exact = true;
     return {name, file};
 }
 
@@ -32,18 +34,30 @@ TEST(FilmMerge, SlicesAddUpWhateverTheOrderOfTheInputs) {
     const ExrFilm shuffled = merge_films({c, a, b});
     EXPECT_EQ(forward.film.samples_per_pixel, 10u);
     EXPECT_EQ(forward.film.sample_ranges.format(), "0:10");
-    // Added in sample order both times: the very same floats.
+    // Integer sums: the very same bits in any order, and in any grouping.
     EXPECT_EQ(forward.film.radiance, shuffled.film.radiance);
     EXPECT_EQ(forward.film.radiance_sq, shuffled.film.radiance_sq);
     for (std::size_t i = 0; i < forward.film.radiance.size(); ++i)
-        EXPECT_EQ(forward.film.radiance[i],
-                  (a.file.film.radiance[i] + b.file.film.radiance[i]) + c.file.film.radiance[i]);
+        EXPECT_EQ(forward.film.radiance[i], a.file.film.radiance[i] + b.file.film.radiance[i] + c.file.film.radiance[i]);
+    const ExrFilm bc = merge_films({b, c});
+    const ExrFilm grouped = merge_films({MergeInput{"bc", bc}, a});
+    EXPECT_EQ(grouped.film.radiance, forward.film.radiance);
+    EXPECT_EQ(grouped.film.normal, forward.film.normal);
+    EXPECT_EQ(grouped.film.sample_ranges, forward.film.sample_ranges);
+    EXPECT_TRUE(grouped.exact);
     // The centre-ray channels come from the slice holding sample 0.
     EXPECT_EQ(shuffled.film.depth, a.file.film.depth);
     EXPECT_EQ(shuffled.film.object_id, a.file.film.object_id);
     EXPECT_EQ(forward.metadata.target_spp, 10u);
     EXPECT_EQ(forward.metadata.render_seconds, 4.5);
     EXPECT_EQ(shuffled.metadata.device, "a; b; c");
+}
+
+TEST(FilmMerge, AMergeIsExactOnlyWhenEveryInputWas) {
+    MergeInput means_only = slice("b", "3:5", 2);
+    means_only.file.exact = false;
+    EXPECT_TRUE(merge_films({slice("a", "0:3", 1), slice("b", "3:5", 2)}).exact);
+    EXPECT_FALSE(merge_films({slice("a", "0:3", 1), means_only}).exact);
 }
 
 TEST(FilmMerge, NamesTheFileThatDiffersOrOverlaps) {

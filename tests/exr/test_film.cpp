@@ -18,24 +18,27 @@ Film synthetic_film(int width, int height, std::uint64_t spp, unsigned seed) {
     film.resize(width, height);
     film.samples_per_pixel = spp;
     std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    const float n = static_cast<float>(spp);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double n = static_cast<double>(spp);
+    const auto fixed = [](double value) { return film::sum_units(film::Units::Fixed, value); };
     for (std::size_t i = 0; i < film.pixel_count(); ++i) {
         const bool miss = i % 7 == 3;
-        film.alpha[i] = miss ? 0.0f : n * (i % 5 == 0 ? 0.5f : 1.0f);
-        film.depth[i] = miss ? std::numeric_limits<float>::infinity() : 1.0f + 10.0f * unit(rng);
+        film.alpha[i] = miss ? 0 : static_cast<film::Sum>(spp / (i % 5 == 0 ? 2 : 1));
+        film.depth[i] = miss ? std::numeric_limits<float>::infinity() : 1.0f + 10.0f * static_cast<float>(unit(rng));
         film.object_id[i] = miss ? -1.0f : static_cast<float>(i % 4);
+        film.sample_count[i] = static_cast<film::Sum>(spp);
         for (int c = 0; c < 3; ++c) {
             const std::size_t k = i * 3 + c;
             if (miss) continue;
-            film.direct[k] = n * unit(rng);
-            film.indirect[k] = n * 0.3f * unit(rng);
-            film.emission[k] = (i % 11 == 0) ? n * 5.0f : 0.0f;
+            film.direct[k] = fixed(n * unit(rng));
+            film.indirect[k] = fixed(n * 0.3 * unit(rng));
+            film.emission[k] = (i % 11 == 0) ? fixed(n * 5.0) : 0;
             film.radiance[k] = film.direct[k] + film.indirect[k] + film.emission[k];
-            const float mean = film.radiance[k] / n;
-            film.radiance_sq[k] = n * mean * mean * (1.0f + unit(rng));
-            film.albedo[k] = n * unit(rng);
-            film.normal[k] = n * (unit(rng) - 0.5f);
+            const double mean = film::sum_value(film::Units::Fixed, film.radiance[k]) / n;
+            film.radiance_sq[k] = fixed(n * mean * mean * (1.0 + unit(rng)));
+            film.albedo[k] = fixed(n * unit(rng));
+            film.normal[k] = film::sum_units(film::Units::SignedFixed, n * (unit(rng) - 0.5));
+            film.background[k] = 0;
         }
     }
     return film;

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # orb-farm on a real one-node Slurm cluster that lives in a temporary folder
-# (tests/farm/local-slurm.sh): a 4-frame x 2-slice animation at 64x48 must
-# arrive whole, equal to local renders of the same samples; a re-run submits
+# (tests/farm/local-slurm.sh): a 4-frame x 2-slice animation at 64x48, every
+# layer, must arrive whole, equal bit for bit to local renders of the same
+# samples (orb-diff --fail-threshold 0: no value may differ); a re-run submits
 # nothing; a task that fails is reported and a re-run finishes just that; a
 # task cancelled mid-render leaves its slice partial, and a re-run submits
 # just that slice, whose task continues it from its samples to a frame equal
-# to an uninterrupted local render.
+# bit for bit to an uninterrupted local render.
 #
 #   farm_slurm_test.sh BIN_DIR SCENES_DIR
 #
@@ -58,8 +59,9 @@ LOCAL_SLURM_EXTRA_CONF="MaxArraySize=5" local_slurm_start "$work/cluster" >/dev/
 cd "$work" || exit 1
 farm=("$bin/orb-farm" "$scene" --frames 1-4 -o shots/beauty.%04d.exr --slices 2 --spp 16 --width 64 --height 48
     --tonemap png --poll 1)
+layers=(-- --passes all) # every layer, the variance included, for every render task
 # Bounded: orb-farm --wait returns when every job has left the queue.
-farm_wait() { timeout 150 "${farm[@]}" --wait "$@"; }
+farm_wait() { timeout 150 "${farm[@]}" --wait "$@" "${layers[@]}"; }
 
 # ---- the whole animation ----
 submitted=$EPOCHREALTIME
@@ -76,19 +78,20 @@ for f in 1 2 3 4; do
     [[ -f shots/beauty.000$f.exr ]] || problem "frame $f did not arrive"
     [[ -s shots/beauty.000$f.png ]] || problem "frame $f has no png"
 done
-[[ -z $("$bin/orb-frames" 1-4 shots/beauty.%04d.exr --missing --spp 16 --width 64 --height 48) ]] ||
+[[ -z $("$bin/orb-frames" 1-4 shots/beauty.%04d.exr --missing --spp 16 --width 64 --height 48 --passes all) ]] ||
     problem "some frames are not complete 16-sample 64x48 renders"
 [[ -z $(ls shots/orb-farm/slices) ]] || problem "slices were left after merging: $(ls shots/orb-farm/slices)"
 ls shots/orb-farm/logs/render-*_*.log >/dev/null 2>&1 || problem "no render logs next to the outputs"
 
-# Every frame equals a local render of the same 16 samples, within float rounding of the sums.
+# Every frame equals a local render of the same 16 samples bit for bit, in
+# every layer: the slices' sums are integers, merged exactly.
 compare_with_local() { # FRAME
-    "$bin/orb-render" "$scene" --frame "$1" --spp 16 --width 64 --height 48 -q -o "ref.%04d.exr" ||
+    "$bin/orb-render" "$scene" --frame "$1" --spp 16 --width 64 --height 48 --passes all -q -o "ref.%04d.exr" ||
         { problem "local render of frame $1 failed"; return; }
     local ref farm_frame
     ref=$("$bin/orb-frames" "$1" ref.%04d.exr --paths)
     farm_frame=$("$bin/orb-frames" "$1" shots/beauty.%04d.exr --paths)
-    "$bin/orb-diff" "$ref" "$farm_frame" --all-passes -q >"$work/diff" 2>&1 ||
+    "$bin/orb-diff" "$ref" "$farm_frame" --all-passes --fail-threshold 0 -q >"$work/diff" 2>&1 ||
         problem "frame $1 differs from the local render: $(cat "$work/diff")"
 }
 for f in 1 2 3 4; do compare_with_local "$f"; done
@@ -97,7 +100,7 @@ for f in 1 2 3 4; do compare_with_local "$f"; done
 
 # ---- the same command again submits nothing ----
 jobs_before=$(ls shots/orb-farm/logs/*.sh | wc -l)
-timeout 60 "${farm[@]}" >"$work/out" 2>"$work/err" || problem "the re-run failed: $(cat "$work/err")"
+timeout 60 "${farm[@]}" "${layers[@]}" >"$work/out" 2>"$work/err" || problem "the re-run failed: $(cat "$work/err")"
 grep -q "all 4 frames are finished, with their png images; nothing to submit" "$work/err" ||
     problem "the re-run did not say there is nothing to do: $(cat "$work/err")"
 [[ -z $(cat "$work/out") ]] || problem "the re-run printed job ids: $(cat "$work/out")"
@@ -171,7 +174,7 @@ grep -q "holds the samples 12000:$held of 12000:12000: continuing it" "$continue
     problem "the task did not continue the slice: $(head -n 5 "$continued_log")"
 "$bin/orb-render" "$scene" --frame 5 --spp 24000 --width 64 --height 48 -q -o "ref.%04d.exr" ||
     problem "local render of frame 5 failed"
-"$bin/orb-diff" ref.0005.exr long/beauty.0005.exr --all-passes -q >"$work/diff" 2>&1 ||
+"$bin/orb-diff" ref.0005.exr long/beauty.0005.exr --all-passes --fail-threshold 0 -q >"$work/diff" 2>&1 ||
     problem "the continued frame 5 differs from an uninterrupted local render: $(cat "$work/diff")"
 
 local_slurm_stop "$work/cluster"

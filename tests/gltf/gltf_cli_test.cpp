@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 
 #include "gltf_test_util.h"
@@ -183,6 +184,23 @@ TEST(GltfCli, ErrorsAndUsage) {
     EXPECT_EQ(run.status, 2) << run.err;
     run = run_import(quote(generated("nested.gltf")) + " --light-units lumens", out);
     EXPECT_EQ(run.status, 2) << run.err;
+}
+
+// Bytes that are not text, quoted by the JSON parser in its message, come
+// out escaped (\xFF): the message stays valid UTF-8 on any terminal.
+TEST(GltfCli, RandomBytesAreQuotedEscaped) {
+    const fs::path input = scratch("random.gltf");
+    std::ofstream(input, std::ios::binary) << std::string("{\"asset\": \xff\xfe\x01}", 14);
+    const fs::path out = scratch("random.json");
+    const ToolRun run = run_import(quote(input.string()), out);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_NE(run.err.find("not a valid glTF 2.0 asset"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("\\xFF"), std::string::npos) << run.err;
+    for (char c : run.err) {
+        const auto byte = static_cast<unsigned char>(c);
+        EXPECT_TRUE(byte == '\n' || (byte >= 0x20 && byte < 0x7f)) << "byte " << int(byte) << " in: " << run.err;
+    }
+    EXPECT_FALSE(fs::exists(out));
 }
 
 TEST(GltfCli, WholeValidatorCorpus) {

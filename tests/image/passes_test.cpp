@@ -14,6 +14,17 @@ TEST(Passes, FindsEveryOrbRenderPass) {
     EXPECT_EQ(passes, expected);
 }
 
+// orb-render's bookkeeping channels (the normal's length, the exact sums of
+// a file that may be continued) are not pictures: never listed as passes.
+TEST(Passes, OrbsBookkeepingChannelsAreNoPasses) {
+    const Image multipass = test::make_multipass(4, 2);
+    std::vector<std::string> names = multipass.channel_names;
+    for (const char* extra : {"orb.normalLength", "orb.sum.R.lo", "orb.sum.R.hi", "orb.sum.variance.G.lo"})
+        names.push_back(extra);
+    const Image img(4, 2, names);
+    EXPECT_EQ(available_passes(img), available_passes(multipass));
+}
+
 TEST(Passes, ExtractsChannelsByName) {
     const Image img = test::make_multipass(8, 4);
     const Pass beauty = extract_pass(img, "beauty", "x.exr");

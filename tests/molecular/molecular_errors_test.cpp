@@ -66,6 +66,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "bad:11: expected a radius > 0, got '-1'"},
         ErrorCase{"DumpValueBeyondFloat", "lammps-dump", kDumpHead + "ITEM: ATOMS id x y z c_e\n1 0 0 0 1\n2 0 0 1 1e39\n",
                   "bad:11: column 'c_e': 1e+39 does not fit a 32-bit float (about 3.4e38 at most)"},
+        ErrorCase{"DumpDuplicateId", "lammps-dump", kDumpHead + "ITEM: ATOMS id x y z\n7 0 0 0\n7 0 0 1\n",
+                  "bad:11: atom id 7 appears twice in the frame (first on line 10); each atom of a dump frame has its own id"},
         ErrorCase{"DumpAtomsBeforeCount", "lammps-dump", "ITEM: TIMESTEP\n0\nITEM: ATOMS id x y z\n",
                   "bad:3: ITEM: ATOMS before ITEM: NUMBER OF ATOMS"},
         ErrorCase{"GroCountNotANumber", "gro", "title\nmany\n", "bad:2: expected the number of atoms (the second line of a .gro frame), got 'many'"},

@@ -142,7 +142,7 @@ TEST(DeviceDecision, DecidesAsTheHostOnRandomSums)
         // 1% of the pixels hold 0 or 1 sample, the others 2 to 40.
         const float n = unit(random) < 0.01f ? static_cast<float>(unit(random) < 0.5f)
                                              : 2.0f + static_cast<float>(static_cast<int>(unit(random) * 39.0f));
-        film.sample_count[i] = n;
+        film.sample_count[i] = static_cast<film::Sum>(n);
         // 3% noisy (a sample variance up to the mean's square), 2% with a
         // square below the mean's (no variance), the others quiet, some
         // of those near the lowest threshold (a relative error of 1% at
@@ -153,8 +153,8 @@ TEST(DeviceDecision, DecidesAsTheHostOnRandomSums)
             const float spread = kind < 0.03f   ? 1.0f + unit(random)
                                  : kind < 0.05f ? 0.999f
                                                 : 1.0f + 2e-4f * unit(random) * unit(random);
-            film.radiance[i * 3 + c] = mean * n;
-            film.radiance_sq[i * 3 + c] = mean * mean * spread * n;
+            film.radiance[i * 3 + c] = film::sum_units(film::Units::Fixed, mean * n);
+            film.radiance_sq[i * 3 + c] = film::sum_units(film::Units::Fixed, mean * mean * spread * n);
         }
     }
     for (double threshold : {0.01, 0.05, 0.2}) {
@@ -205,13 +205,13 @@ TEST(DeviceDecision, AnAdaptiveRenderIsTheSameWithDecisionsOnEitherSide)
         estimates.push_back(sampler.estimated_relmse().value_or(-1));
     }
     // The passes between decisions follow the pass timer, so the sums may
-    // be grouped differently: the same up to float rounding.
+    // be grouped differently: the same bits all the same.
     EXPECT_EQ(films[0].sample_count, films[1].sample_count);
-    expect_same_films_up_to_rounding(films[0], films[1]);
+    expect_same_films(films[0], films[1]);
     EXPECT_NEAR(estimates[0], estimates[1], 1e-4 * estimates[1]);
-    float fewest = 1e9f;
-    for (float count : films[0].sample_count) fewest = std::min(fewest, count);
-    EXPECT_LT(fewest, 200.0f);  // some pixels did stop
+    film::Sum fewest = 200;
+    for (film::Sum count : films[0].sample_count) fewest = std::min(fewest, count);
+    EXPECT_LT(fewest, 200);  // some pixels did stop
 }
 
 }  // namespace orb::render::test

@@ -114,8 +114,9 @@ TEST(PixelError, IsTheVarianceOfTheMeanOverOrbDiffsDenominator)
     film.samples_per_pixel = 4;
     film.sample_count = {4};
     // Samples 1, 1, 3, 3 in every channel: mean 2, sample variance 4/3, variance of the mean 1/3.
-    film.radiance = {8, 8, 8};
-    film.radiance_sq = {20, 20, 20};
+    const film::Sum one = film::Sum{1} << ORB_FILM_FIXED_BITS;  // 1 in a Fixed sum's units
+    film.radiance = {8 * one, 8 * one, 8 * one};
+    film.radiance_sq = {20 * one, 20 * one, 20 * one};
     EXPECT_NEAR(film::pixel_relmse(film, 0), (1.0 / 3.0) / (4.0 - 1.0 / 3.0 + film::kRelMseEpsilon), 1e-12);
     film.sample_count = {1};
     EXPECT_TRUE(std::isinf(film::pixel_relmse(film, 0)));
@@ -139,16 +140,16 @@ TEST(AdaptiveRender, TheSkyStopsAtTheFirstDecisionAndTheOutlineKeepsSampling)
     // it stops at the first decision, 16 samples.
     const auto coverage = [&](int x, int y) {
         const std::size_t i = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
-        return film.alpha[i] / film.sample_count[i];
+        return static_cast<float>(film.alpha[i]) / static_cast<float>(film.sample_count[i]);
     };
     int outline = 0, open_sky = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            const float count = film.sample_count[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)];
+            const film::Sum count = film.sample_count[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)];
             const float a = coverage(x, y);
             if (a > 0.05f && a < 0.95f) {
                 ++outline;
-                EXPECT_EQ(count, static_cast<float>(spp)) << "outline pixel " << x << "," << y << " coverage " << a;
+                EXPECT_EQ(count, static_cast<film::Sum>(spp)) << "outline pixel " << x << "," << y << " coverage " << a;
             }
             bool near_ball = false;
             for (int dy = -2; dy <= 2; ++dy)
@@ -158,13 +159,13 @@ TEST(AdaptiveRender, TheSkyStopsAtTheFirstDecisionAndTheOutlineKeepsSampling)
                 }
             if (!near_ball) {
                 ++open_sky;
-                EXPECT_EQ(count, 16.0f) << "sky pixel " << x << "," << y;
+                EXPECT_EQ(count, 16) << "sky pixel " << x << "," << y;
             }
         }
     EXPECT_GT(outline, 20);
     EXPECT_GT(open_sky, 200);
     // The samples drawn are the counts' sum, fewer than every pixel at 96.
-    const double drawn = std::accumulate(film.sample_count.begin(), film.sample_count.end(), 0.0);
+    const double drawn = static_cast<double>(std::accumulate(film.sample_count.begin(), film.sample_count.end(), film::Sum{0}));
     EXPECT_EQ(renderer.pixel_samples(), static_cast<std::uint64_t>(drawn));
     EXPECT_LT(drawn, 0.75 * spp * width * height);
 }
@@ -191,17 +192,18 @@ TEST(AdaptiveRender, TheFurnaceStaysWithinTheNoiseOfTheSamplesDrawn)
     const std::vector<std::size_t> pixels = interior_pixels_of(run.film, ball);
     ASSERT_GT(pixels.size(), 200u);
     // The stopping rule did stop the ball's pixels at different counts.
-    float fewest = 1e9f, most = 0;
+    film::Sum fewest = 256, most = 0;
     for (std::size_t p : pixels) {
         fewest = std::min(fewest, run.film.sample_count[p]);
         most = std::max(most, run.film.sample_count[p]);
     }
     EXPECT_LT(fewest, most);
-    EXPECT_LT(fewest, 256.0f);
+    EXPECT_LT(fewest, 256);
     for (int c = 0; c < 3; ++c) {
         const PixelStatistics stats = radiance_statistics(run.film, pixels, c);
         const double l = radiance[static_cast<std::size_t>(c)];
-        EXPECT_NEAR(stats.mean, l, 5.0 * stats.standard_error + l * most * 0x1p-24) << "channel " << c;
+        // Each sample rounds to the film's units (2^-24) by at most half of one.
+        EXPECT_NEAR(stats.mean, l, 5.0 * stats.standard_error + 0x1p-24) << "channel " << c;
     }
 }
 
@@ -231,8 +233,10 @@ TEST(AdaptiveRender, TheTargetErrorsEstimateMatchesTheErrorAgainstAConvergedRend
     const std::size_t pixels = run.film.pixel_count();
     for (std::size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < 3; ++c) {
-            const double a = reference.radiance[i * 3 + c] / static_cast<double>(reference.samples_per_pixel);
-            const double b = run.film.radiance[i * 3 + c] / static_cast<double>(run.film.samples_per_pixel);
+            const double a = film::sum_value(film::Units::Fixed, reference.radiance[i * 3 + c]) /
+                             static_cast<double>(reference.samples_per_pixel);
+            const double b = film::sum_value(film::Units::Fixed, run.film.radiance[i * 3 + c]) /
+                             static_cast<double>(run.film.samples_per_pixel);
             sum += (b - a) * (b - a) / (a * a + film::kRelMseEpsilon);
         }
     const double measured = sum / static_cast<double>(pixels * 3);
@@ -260,7 +264,7 @@ TEST(AdaptiveRender, AContinuedRenderDecidesAsTheUninterruptedOne)
     const Film continued = render_adaptively(second, settings, 80, settings.noise_threshold).film;
 
     EXPECT_EQ(continued.sample_count, uninterrupted.sample_count);
-    expect_same_films_up_to_rounding(uninterrupted, continued);
+    expect_same_films(uninterrupted, continued);
 }
 
 }  // namespace orb::render::test
@@ -287,9 +291,9 @@ TEST(AdaptiveRender, EveryWidthRendersTheSamePixelsFromTheList)
         EXPECT_EQ(films[i].sample_count, films[0].sample_count) << i;
         expect_same_films_up_to_rounding(films[0], films[i]);
     }
-    float fewest = 1e9f;
-    for (float count : films[0].sample_count) fewest = std::min(fewest, count);
-    EXPECT_LT(fewest, 64.0f);  // some pixels did stop
+    film::Sum fewest = 64;
+    for (film::Sum count : films[0].sample_count) fewest = std::min(fewest, count);
+    EXPECT_LT(fewest, 64);  // some pixels did stop
 }
 
 }  // namespace orb::render::test

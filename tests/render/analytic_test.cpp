@@ -12,9 +12,11 @@ namespace {
 
 constexpr double kSigmas = 5.0;
 
+// A mean of n samples of `expected`: its float arithmetic (n * 2^-24 of it at
+// most) and each sample rounded to the film's units (2^-25 at most).
 double float_rounding_bound(double expected, std::uint64_t samples)
 {
-    return std::abs(expected) * static_cast<double>(samples) * std::ldexp(1.0, -24);
+    return std::abs(expected) * static_cast<double>(samples) * std::ldexp(1.0, -24) + std::ldexp(1.0, -25);
 }
 
 void expect_mean_radiance(const Film& film, const std::vector<std::size_t>& pixels, const Vec3& expected,

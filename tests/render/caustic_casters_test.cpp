@@ -32,8 +32,9 @@ double mean_variance_of_mean(const Film& film, const std::vector<std::size_t>& p
     const double n = static_cast<double>(film.samples_per_pixel);
     double sum = 0;
     for (std::size_t p : pixels) {
-        const double mean = film.radiance[3 * p] / n;
-        const double variance = (film.radiance_sq[3 * p] / n - mean * mean) * n / (n - 1.0);
+        const double mean = film::sum_value(film::Units::Fixed, film.radiance[3 * p]) / n;
+        const double variance =
+            (film::sum_value(film::Units::Fixed, film.radiance_sq[3 * p]) / n - mean * mean) * n / (n - 1.0);
         sum += std::max(0.0, variance) / n;
     }
     return sum / static_cast<double>(pixels.size());

@@ -3,8 +3,9 @@
 // albedo is the mirror's tint times the colour of the diffuse surface it
 // shows, and the normal is the mirror's own, at the first hit, facing the
 // camera. Every sample of the pixels checked sees the same surfaces, so the
-// means are exact up to float rounding of the sums (n * 2^-24 relative) and,
-// for the normal, the spread of directions within one pixel.
+// means are exact up to each sample's float rounding and its rounding to
+// the film's units (2^-25 at most) and, for the normal, the spread of
+// directions within one pixel.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,8 +15,9 @@
 namespace orb::render::test {
 namespace {
 
-Vec3 pixel_mean(const std::vector<float>& sums, std::size_t pixel, std::uint64_t samples)
+Vec3 pixel_mean(const Film& film, film::Channel channel, std::size_t pixel, std::uint64_t samples)
 {
+    const std::vector<double> sums = sum_values(film, channel);
     return {sums[pixel * 3] / static_cast<double>(samples), sums[pixel * 3 + 1] / static_cast<double>(samples),
             sums[pixel * 3 + 2] / static_cast<double>(samples)};
 }
@@ -41,16 +43,16 @@ TEST(DenoiseGuides, AlbedoAndNormalBehindAMirror)
     ASSERT_GT(on_mirror.size(), 50u);
     ASSERT_GT(on_wall.size(), 50u);
     for (std::size_t p : on_mirror) {
-        const Vec3 albedo = pixel_mean(film.albedo, p, n);
+        const Vec3 albedo = pixel_mean(film, film::Channel::albedo, p, n);
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(albedo[c], tint[c] * wall[c], tint[c] * wall[c] * rounding + 1e-6) << "mirror pixel " << p;
         // The mirror's normal faces the camera, which looks down -z from the
         // origin: every normal the pixel sees has z > 0.
-        const Vec3 normal = pixel_mean(film.normal, p, n);
+        const Vec3 normal = pixel_mean(film, film::Channel::normal, p, n);
         EXPECT_GT(normal[2], 0.0) << "mirror pixel " << p;
     }
     for (std::size_t p : on_wall) {
-        const Vec3 albedo = pixel_mean(film.albedo, p, n);
+        const Vec3 albedo = pixel_mean(film, film::Channel::albedo, p, n);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(albedo[c], wall[c], wall[c] * rounding + 1e-6) << "wall pixel " << p;
     }
 
@@ -59,7 +61,7 @@ TEST(DenoiseGuides, AlbedoAndNormalBehindAMirror)
     // degrees a pixel; seen from the ball's centre, 2 units behind a surface
     // 8 units away, the normals turn by up to (8 + 2) / 2 = 5 times that).
     const std::size_t centre = static_cast<std::size_t>(size / 2) * size + size / 2;
-    const Vec3 normal = pixel_mean(film.normal, centre, n);
+    const Vec3 normal = pixel_mean(film, film::Channel::normal, centre, n);
     const double spread = std::sin(1.25 * 5.0 * M_PI / 180.0);
     EXPECT_NEAR(normal[0], 0.0, spread);
     EXPECT_NEAR(normal[1], 0.0, spread);

@@ -13,9 +13,11 @@ namespace {
 
 constexpr double kSigmas = 5.0;
 
+// A mean of n samples of `value`: its float arithmetic (n * 2^-24 of it at
+// most) and each sample rounded to the film's units (2^-25 at most).
 double float_rounding_bound(double value, std::uint64_t samples)
 {
-    return std::abs(value) * static_cast<double>(samples) * std::ldexp(1.0, -24);
+    return std::abs(value) * static_cast<double>(samples) * std::ldexp(1.0, -24) + std::ldexp(1.0, -25);
 }
 
 // The mean over `pixels` of (pixel mean radiance - expected(pixel)) is 0
@@ -30,7 +32,7 @@ void expect_pixels_match(const Film& film, const std::vector<std::size_t>& pixel
         double difference = 0, rounding = 0;
         for (std::size_t p : pixels) {
             const double e = expected(p)[c];
-            difference += film.radiance[p * 3 + c] / n - e;
+            difference += film::sum_value(film::Units::Fixed, film.radiance[p * 3 + c]) / n - e;
             rounding += float_rounding_bound(e, film.samples_per_pixel);
         }
         const double count = static_cast<double>(pixels.size());
@@ -100,8 +102,10 @@ void expect_background(const Film& film, const Vec3& radiance, const std::string
     for (std::size_t p : missed) {
         for (int c = 0; c < 3; ++c) {
             const double tolerance = float_rounding_bound(radiance[c], film.samples_per_pixel);
-            ASSERT_NEAR(film.radiance[p * 3 + c] / n, radiance[c], tolerance) << what << ", pixel " << p;
-            ASSERT_NEAR(film.emission[p * 3 + c] / n, radiance[c], tolerance) << what << ", pixel " << p;
+            ASSERT_NEAR(film::sum_value(film::Units::Fixed, film.radiance[p * 3 + c]) / n, radiance[c], tolerance)
+                << what << ", pixel " << p;
+            ASSERT_NEAR(film::sum_value(film::Units::Fixed, film.emission[p * 3 + c]) / n, radiance[c], tolerance)
+                << what << ", pixel " << p;
         }
         ASSERT_EQ(film.alpha[p], 0.0f) << what << ", pixel " << p;
         ASSERT_EQ(film.albedo[p * 3], 0.0f) << what << ", pixel " << p;
@@ -152,11 +156,12 @@ TEST_P(BallUnderUniformEnvironment, BackgroundIsTheSkyWhereTheBallDoesNotCover)
     const double n = static_cast<double>(film.samples_per_pixel);
     std::size_t edges = 0;
     for (std::size_t p = 0; p < film.alpha.size(); ++p) {
-        const double uncovered = n - film.alpha[p];
-        if (film.alpha[p] > 0.0f && uncovered > 0.0) ++edges;
+        const double uncovered = n - static_cast<double>(film.alpha[p]);
+        if (film.alpha[p] > 0 && uncovered > 0.0) ++edges;
         for (int c = 0; c < 3; ++c)
-            ASSERT_NEAR(film.background[p * 3 + c], uncovered * sky[c], float_rounding_bound(n * sky[c], film.samples_per_pixel))
-                << "pixel " << p << ", coverage " << film.alpha[p] / n;
+            ASSERT_NEAR(film::sum_value(film::Units::Fixed, film.background[p * 3 + c]), uncovered * sky[c],
+                        float_rounding_bound(n * sky[c], film.samples_per_pixel))
+                << "pixel " << p << ", coverage " << static_cast<double>(film.alpha[p]) / n;
     }
     EXPECT_GT(edges, 20u) << "the ball's edge pixels, partly covered";
 }
@@ -255,7 +260,8 @@ TEST_P(BallUnderOneBrightTexel, IsLitLikeADistantLightFromTheTexelsDirection)
     // (within 69.5 degrees) sees all of it, one with n . w_sun < -0.35 none.
     const auto mean_normal = [&](std::size_t p) {
         const double n = static_cast<double>(film.samples_per_pixel);
-        return Vec3{film.normal[p * 3] / n, film.normal[p * 3 + 1] / n, film.normal[p * 3 + 2] / n};
+        const auto value = [&](std::size_t k) { return film::sum_value(film::Units::SignedFixed, film.normal[k]) / n; };
+        return Vec3{value(p * 3), value(p * 3 + 1), value(p * 3 + 2)};
     };
     const auto facing = [&](std::size_t p) {
         const Vec3 n = mean_normal(p);

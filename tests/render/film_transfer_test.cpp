@@ -32,12 +32,11 @@ void expect_computed_equal_and_rest_clear(const Film& film, const Film& expected
     ASSERT_EQ(film.height, expected.height);
     for (const film::ChannelInfo& c : film::kChannels) {
         SCOPED_TRACE(c.name);
-        const std::vector<float>& values = film.channel(c.channel);
         if (computed(config, c.channel)) {
-            ASSERT_EQ(values.size(), film.pixel_count() * static_cast<std::size_t>(c.components));
-            EXPECT_EQ(values, expected.channel(c.channel));
+            ASSERT_EQ(film.entries(c.channel), film.pixel_count() * static_cast<std::size_t>(c.components));
+            EXPECT_EQ(channel_bytes(film, c.channel), channel_bytes(expected, c.channel));
         } else {
-            EXPECT_TRUE(values.empty());
+            EXPECT_EQ(film.entries(c.channel), 0u);
         }
     }
 }
@@ -48,10 +47,7 @@ void expect_computed_equal_and_rest_clear(const Film& film, const Film& expected
 Film stale_film()
 {
     Film film = render(cornell(), small_config(24, 18, 5), {2});
-    for (const film::ChannelInfo& c : film::kChannels) {
-        std::vector<float>& values = film.channel(c.channel);
-        std::fill(values.begin(), values.end(), 42.0f);
-    }
+    for (const film::ChannelInfo& c : film::kChannels) fill_channel(film, c.channel, 42);
     return film;
 }
 
@@ -79,7 +75,7 @@ TEST(FilmTransfer, AReusedFilmKeepsNothingOfWhatItHeld)
     const Film next_expected = render(moved, beauty_config(), {2});
     renderer.set_scene(moved);
     renderer.render_pass(2);
-    const float* memory = reused.radiance.data();
+    const film::Sum* memory = reused.radiance.data();
     renderer.read_film(reused);
     EXPECT_EQ(reused.radiance.data(), memory);  // the same memory, no fresh pages
     expect_computed_equal_and_rest_clear(reused, next_expected, beauty_config());
@@ -100,10 +96,8 @@ TEST(FilmTransfer, ResumingABeautyOnlyFilmContinuesExactly)
 {
     const Film uninterrupted = render(cornell(), beauty_config(), {3, 5});
     Film checkpoint = render(cornell(), beauty_config(), {3});
-    for (film::Channel channel : {film::Channel::direct, film::Channel::depth, film::Channel::object_id}) {
-        std::vector<float>& values = checkpoint.channel(channel);
-        std::fill(values.begin(), values.end(), 42.0f);  // never uploaded
-    }
+    for (film::Channel channel : {film::Channel::direct, film::Channel::depth, film::Channel::object_id})
+        fill_channel(checkpoint, channel, 42);  // never uploaded
     Renderer resumed(cornell(), beauty_config());
     resumed.load_film(checkpoint);
     resumed.render_pass(5);
@@ -136,7 +130,7 @@ TEST(FilmTransfer, DeviceMemoryHoldsOnlyTheComputedChannels)
     std::uint64_t saved = 0;
     for (const film::ChannelInfo& c : film::kChannels)
         if (!computed(config, c.channel))
-            saved += (24u * 18u - 1u) * static_cast<std::uint64_t>(c.components) * sizeof(float);
+            saved += (24u * 18u - 1u) * film::pixel_bytes(c);
     EXPECT_EQ(every.device_memory_bytes() - beauty.device_memory_bytes(), saved);
 }
 

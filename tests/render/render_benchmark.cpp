@@ -5,9 +5,11 @@
 //                        [--device SEL] [--max-depth D] [--mode global|direct]
 //                        [--cpu-spp N [--pass-spp K]]  (N samples in passes of K, reports samples
 //                                                       per CPU-second instead)
+//                        [--channels beauty|all]  (the film channels computed; default all)
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -43,6 +45,9 @@ int main(int argc, char** argv)
             else if (flag == "--device") config.device = value;
             else if (flag == "--cpu-spp") cpu_spp = std::stoi(value);
             else if (flag == "--pass-spp") pass_spp = std::max(1, std::stoi(value));
+            else if (flag == "--channels")  // beauty: only what orb-render's default output computes; all: every channel
+                config.film_channels = value == "beauty" ? orb::film::channels_for(std::array{orb::film::Layer::Beauty})
+                                                         : orb::film::kAllChannels;
             else if (flag == "--max-depth") config.max_depth = std::stoi(value);
             else if (flag == "--mode") config.mode = value == "direct" ? orb::render::IntegratorMode::Direct
                                                                        : orb::render::IntegratorMode::Global;

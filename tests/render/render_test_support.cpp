@@ -123,8 +123,8 @@ PixelStatistics radiance_statistics(const Film& film, const std::vector<std::siz
     for (std::size_t p : pixels) {
         const double n = film::pixel_samples(film, p);  // each pixel's own count (adaptive sampling)
         if (n < 2) throw std::invalid_argument("need at least two samples in every pixel");
-        const double sum = film.radiance[p * 3 + channel];
-        const double sum_sq = film.radiance_sq[p * 3 + channel];
+        const double sum = film::sum_value(film::Units::Fixed, film.radiance[p * 3 + channel]);
+        const double sum_sq = film::sum_value(film::Units::Fixed, film.radiance_sq[p * 3 + channel]);
         const double mean = sum / n;
         const double sample_variance = std::max(0.0, (sum_sq - n * mean * mean) / (n - 1));
         sum_of_means += mean;
@@ -161,14 +161,59 @@ std::vector<std::size_t> all_pixels(const Film& film)
     return out;
 }
 
-void expect_same_up_to_rounding(const std::vector<float>& a, const std::vector<float>& b, std::uint64_t samples,
-                                const char* what, double magnitude_bound)
+std::vector<double> sum_values(const Film& film, film::Channel channel)
 {
-    ASSERT_EQ(a.size(), b.size()) << what;
-    const double relative = static_cast<double>(samples) * std::ldexp(1.0, -24);
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        const double magnitude = std::max({magnitude_bound, std::abs(double(a[i])), std::abs(double(b[i]))});
-        ASSERT_NEAR(a[i], b[i], relative * magnitude + 1e-30) << what << " [" << i << "]";
+    const std::vector<film::Sum>& sums = film.sums(channel);
+    std::vector<double> values(sums.size());
+    for (std::size_t i = 0; i < sums.size(); ++i) values[i] = film::sum_value(film::info(channel).units, sums[i]);
+    return values;
+}
+
+std::vector<std::byte> channel_bytes(const Film& film, film::Channel channel)
+{
+    const std::span<const std::byte> bytes = film.bytes(channel);
+    return {bytes.begin(), bytes.end()};
+}
+
+void fill_channel(Film& film, film::Channel channel, double value)
+{
+    if (film::info(channel).accumulation == film::Accumulation::Sum) {
+        std::vector<film::Sum>& sums = film.sums(channel);
+        std::fill(sums.begin(), sums.end(), static_cast<film::Sum>(value));
+    } else {
+        std::vector<float>& values = film.values(channel);
+        std::fill(values.begin(), values.end(), static_cast<float>(value));
+    }
+}
+
+bool channel_is_clear(const Film& film, film::Channel channel)
+{
+    const film::ChannelInfo& info = film::info(channel);
+    if (info.accumulation == film::Accumulation::Sum) {
+        const std::vector<film::Sum>& sums = film.sums(channel);
+        return std::all_of(sums.begin(), sums.end(), [](film::Sum s) { return s == 0; });
+    }
+    const std::vector<float>& values = film.values(channel);
+    return std::all_of(values.begin(), values.end(), [&](float v) { return v == info.clear; });
+}
+
+void expect_same_films(const Film& a, const Film& b)
+{
+    ASSERT_EQ(a.samples_per_pixel, b.samples_per_pixel);
+    EXPECT_EQ(a.held_ranges(), b.held_ranges());
+    for (const film::ChannelInfo& info : film::kChannels) {
+        if (info.accumulation == film::Accumulation::CentreRay) {
+            EXPECT_EQ(a.values(info.channel), b.values(info.channel)) << info.name;
+            continue;
+        }
+        const std::vector<film::Sum>& x = a.sums(info.channel);
+        const std::vector<film::Sum>& y = b.sums(info.channel);
+        ASSERT_EQ(x.size(), y.size()) << info.name;
+        std::size_t differing = 0, first = 0;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            if (x[i] != y[i] && differing++ == 0) first = i;
+        EXPECT_EQ(differing, 0u) << info.name << ": " << differing << " sums differ, the first [" << first << "] "
+                                 << (differing ? x[first] : 0) << " against " << (differing ? y[first] : 0);
     }
 }
 
@@ -176,18 +221,25 @@ void expect_same_films_up_to_rounding(const Film& a, const Film& b)
 {
     ASSERT_EQ(a.samples_per_pixel, b.samples_per_pixel);
     const std::uint64_t n = a.samples_per_pixel;
+    const double relative = static_cast<double>(n) * std::ldexp(1.0, -24);
     for (const film::ChannelInfo& info : film::kChannels) {
         if (info.accumulation == film::Accumulation::CentreRay) {
-            EXPECT_EQ(a.channel(info.channel), b.channel(info.channel)) << info.name;
+            EXPECT_EQ(a.values(info.channel), b.values(info.channel)) << info.name;
             continue;
         }
         // Normals are unit vectors, whose components cancel in the sum.
         const double bound = info.stored_as == film::StoredAs::UnitVector ? static_cast<double>(n) : 0.0;
-        expect_same_up_to_rounding(a.channel(info.channel), b.channel(info.channel), n, info.name, bound);
+        const std::vector<double> x = sum_values(a, info.channel), y = sum_values(b, info.channel);
+        ASSERT_EQ(x.size(), y.size()) << info.name;
+        const double units = static_cast<double>(n) * film::unit_value(info.units);
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            const double magnitude = std::max({bound, std::abs(x[i]), std::abs(y[i])});
+            ASSERT_NEAR(x[i], y[i], relative * magnitude + units) << info.name << " [" << i << "]";
+        }
     }
 }
 
-void expect_mostly_same_paths(const std::vector<float>& a, const std::vector<float>& b, const std::string& what)
+void expect_mostly_same_paths(const std::vector<double>& a, const std::vector<double>& b, const std::string& what)
 {
     ASSERT_EQ(a.size(), b.size()) << what;
     std::size_t apart = 0;  // differ by more than the same path's rounding

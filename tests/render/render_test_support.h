@@ -66,14 +66,29 @@ std::vector<std::size_t> interior_pixels_of(const Film& film, int id);
 
 std::vector<std::size_t> all_pixels(const Film& film);
 
-// Sums of the same samples added in a different grouping (passes, slices,
-// devices) differ only by float rounding: at most about n * 2^-24 of the sum
-// of the magnitudes. For non-negative sets that is the sum itself; for
-// normals (components in [-1, 1], which cancel) pass magnitude_bound = n.
-void expect_same_up_to_rounding(const std::vector<float>& a, const std::vector<float>& b, std::uint64_t samples,
-                                const char* what, double magnitude_bound = 0);
+// The values a Sum channel's sums stand for (sum times its unit), in double.
+std::vector<double> sum_values(const Film& film, film::Channel channel);
 
-// Every channel of two films of the same samples, as above; the centre-ray
+// A channel's storage, sums or values, as bytes (to compare any channel).
+std::vector<std::byte> channel_bytes(const Film& film, film::Channel channel);
+
+// Every entry of a channel set to `value`: units for a sum, the float for a value.
+void fill_channel(Film& film, film::Channel channel, double value);
+
+// Whether every entry of a channel is at its clear value (a sum at 0).
+bool channel_is_clear(const Film& film, film::Channel channel);
+
+// Every channel of two films of the same samples, bit for bit: the film's
+// integer sums make any grouping of the samples (passes, slices, resumed
+// runs, devices, adaptive decisions on the host or the device) the same.
+void expect_same_films(const Film& a, const Film& b);
+
+// Two films whose samples are the same paths computed by programs whose
+// float arithmetic may round differently (lane widths, per-sphere colour
+// tables): each sample's value may differ in its last float bits and then
+// round to another unit, so the sums may differ by about n * 2^-24 of the
+// sum of the magnitudes plus n units. For non-negative sums that is the sum
+// itself; normals' components cancel, so their bound is n. The centre-ray
 // channels exactly.
 void expect_same_films_up_to_rounding(const Film& a, const Film& b);
 
@@ -85,6 +100,6 @@ void expect_same_films_up_to_rounding(const Film& a, const Film& b);
 // channel) apart by more than the same path's rounding, and the mean
 // difference within 4 standard errors of the paired differences (no bias
 // between the kernels).
-void expect_mostly_same_paths(const std::vector<float>& a, const std::vector<float>& b, const std::string& what);
+void expect_mostly_same_paths(const std::vector<double>& a, const std::vector<double>& b, const std::string& what);
 
 }  // namespace orb::render::test

@@ -45,16 +45,21 @@ protected:
 
 std::string render_exe();
 
-// Mean-valued channels of two renders agree within float rounding: the
-// relative difference allowed covers the sums' different addition order
-// (resume, pass splits) and the mean*n recovery, a few dozen float ulps.
+// Two renders of the same samples (in any passes, runs, slices merged in
+// any grouping, devices, load): every channel the images show is the same
+// bit for bit, and so are the exact sums where both files carry them (a
+// finished render has none: its other channels are what count).
+void expect_same_image(const exr::testing::RawExr& a, const exr::testing::RawExr& b);
+void expect_same_image(const std::string& path_a, const std::string& path_b);
+
+// Two renders of the same samples where one was continued from a file of
+// means only (a finished render, or an older Orb's): its sums were rebuilt
+// from the means, so the shown channels agree within float rounding (a few
+// dozen float ulps; more for the variance, whose (sum_sq/n - mean^2)
+// cancels). Exact sums are not compared.
 void expect_same_within_float_rounding(const exr::testing::RawExr& a, const exr::testing::RawExr& b);
 
-// Every channel of two films of the same samples, summed in different
-// groupings: equal for the pixel-centre channels (no sums), else within
-// `relative_bound` of the sum of magnitudes per value (the value itself for
-// the non-negative channels, n samples for normals, |component| <= 1).
-// Each test derives its bound from how its films were summed.
-void expect_sums_within(const exr::ExrFilm& a, const exr::ExrFilm& b, double relative_bound);
+// Whether a file carries its film's exact sums (orb:exactSums, orb.sum.* channels).
+bool has_exact_sums(const exr::testing::RawExr& image);
 
 }  // namespace orb::test

@@ -68,7 +68,7 @@ TEST_F(RenderCli, EachFrameIsAnAdaptiveRenderOfItsOwn) {
     const auto alone = read_film_exr(path("alone.exr"));
     const auto second = read_film_exr(frame_file(path(""), 2));
     EXPECT_EQ(alone.film.sample_count, second.film.sample_count);
-    expect_same_within_float_rounding(read_raw_exr(path("alone.exr")), read_raw_exr(frame_file(path(""), 2)));
+    expect_same_image(read_raw_exr(path("alone.exr")), read_raw_exr(frame_file(path(""), 2)));
 }
 
 // --skip-existing, --claim and --missing: a frame that ended on its
@@ -121,6 +121,9 @@ TEST_F(RenderCli, AdaptiveFramesAreFinishedWhenTheyStoppedOnTheirRule) {
                           strict))
                   .exit_code,
               0);
+    // Finished at 40, the frame kept its means only: continued from them
+    // (said in a warning), within float rounding of the uninterrupted render.
+    EXPECT_NE(more.err.find("holds means only"), std::string::npos) << more.err;
     const auto whole = read_film_exr(path("whole.exr"));
     const auto continued = read_film_exr(frame_file(path(""), 5));
     EXPECT_EQ(continued.film.sample_count, whole.film.sample_count);
@@ -160,14 +163,15 @@ TEST_F(RenderCli, AnAdaptiveRenderResumesToTheUninterruptedImage) {
         return args;
     };
     ASSERT_EQ(render(with({scene, "-o", path("whole.exr"), "--spp", "72"})).exit_code, 0);
-    ASSERT_EQ(render(with({scene, "-o", path("part.exr"), "--spp", "40"})).exit_code, 0);
+    // Stopped by --time after its first pass: its exact sums go on.
+    ASSERT_EQ(render(with({scene, "-o", path("part.exr"), "--spp", "72", "--time", "0.000001"})).exit_code, 0);
     // The threshold comes from the file's orb:noiseThreshold.
     const auto resumed = render({scene, "--resume", path("part.exr"), "-o", path("resumed.exr"), "--spp", "72"});
     ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
     const auto whole = read_film_exr(path("whole.exr"));
     const auto again = read_film_exr(path("resumed.exr"));
     EXPECT_EQ(again.film.sample_count, whole.film.sample_count);
-    expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("resumed.exr")));
+    expect_same_image(read_raw_exr(path("whole.exr")), read_raw_exr(path("resumed.exr")));
 }
 
 TEST_F(RenderCli, AdaptiveSlicesMergeByAddingTheirCounts) {
@@ -183,10 +187,8 @@ TEST_F(RenderCli, AdaptiveSlicesMergeByAddingTheirCounts) {
     ASSERT_EQ(merged.film.sample_count.size(), a.film.sample_count.size());
     for (std::size_t i = 0; i < merged.film.sample_count.size(); ++i) {
         ASSERT_EQ(merged.film.sample_count[i], a.film.sample_count[i] + b.film.sample_count[i]) << "pixel " << i;
-        // Each pixel's mean is over its own count: the slices' sums added, over the counts added.
-        const double expected =
-            (static_cast<double>(a.film.radiance[i * 3]) + b.film.radiance[i * 3]) / merged.film.sample_count[i];
-        EXPECT_NEAR(merged.film.radiance[i * 3] / merged.film.sample_count[i], expected, 1e-5 * (expected + 1e-3));
+        // Each pixel's mean is over its own count: the slices' sums added exactly, over the counts added.
+        ASSERT_EQ(merged.film.radiance[i * 3], a.film.radiance[i * 3] + b.film.radiance[i * 3]) << "pixel " << i;
     }
     // A slice rendered without adaptive sampling is another render (its layers differ).
     ASSERT_EQ(render({scene, "--sample-range", "96:8", "-o", path("c.exr")}).exit_code, 0);

@@ -4,6 +4,7 @@
 // from its samples to the image an uninterrupted render makes; anything else
 // is rendered again, with one line saying why.
 #include <signal.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <functional>
@@ -77,11 +78,15 @@ TEST_F(RenderFinish, APreviewThenAFinalRenderInTheSameFolder) {
         EXPECT_EQ(file.film.sample_ranges.format(), "0:6");
     }
 
-    // A preview at the final size with fewer samples is the start of the final render: continued.
+    // A preview at the final size with fewer samples is the start of the
+    // final render: continued. Finished, the preview kept its means only
+    // (no exact sums), so the final image is the uninterrupted one within
+    // float rounding, and a warning says so.
     ASSERT_EQ(frames("4-5", {"--spp", "2"}).exit_code, 0);
     const auto more = frames("4-5", {"--spp", "6", "--skip-existing"});
     ASSERT_EQ(more.exit_code, 0) << more.err;
     EXPECT_EQ(count_lines(more.err, ": holds 2 of 6 spp: continuing it"), 2) << more.err;
+    EXPECT_EQ(count_lines(more.err, ": holds means only, no exact sums"), 2) << more.err;
     ASSERT_EQ(frames("4-5", {"--spp", "6"}, "reference").exit_code, 0);
     for (int frame = 4; frame <= 5; ++frame)
         expect_same_within_float_rounding(read_raw_exr(frame_file(path("shots"), frame)),
@@ -184,8 +189,8 @@ TEST_F(RenderFinish, FramesStoppedByTimeOrSigtermAreContinuedToTheUninterruptedI
     for (int frame = 1; frame <= 3; ++frame) {
         const auto file = read_film_exr(frame_file(path("shots"), frame));
         EXPECT_EQ(file.film.sample_ranges.format(), "0:1000") << frame;
-        expect_same_within_float_rounding(read_raw_exr(frame_file(path("shots"), frame)),
-                                          read_raw_exr(frame_file(path("reference"), frame)));
+        expect_same_image(read_raw_exr(frame_file(path("shots"), frame)),
+                          read_raw_exr(frame_file(path("reference"), frame)));
     }
 }
 
@@ -199,7 +204,7 @@ TEST_F(RenderFinish, ASliceIsContinuedOnlyToItsOwnSamples) {
     EXPECT_EQ(count_lines(run.err, "of 4:400: continuing it"), 1) << run.err;
     EXPECT_EQ(read_film_exr(path("shots/b.0001.exr")).film.sample_ranges.format(), "4:400");
     ASSERT_EQ(frames("1", {"--sample-range", "4:400"}, "reference").exit_code, 0);
-    expect_same_within_float_rounding(read_raw_exr(path("shots/b.0001.exr")), read_raw_exr(path("reference/b.0001.exr")));
+    expect_same_image(read_raw_exr(path("shots/b.0001.exr")), read_raw_exr(path("reference/b.0001.exr")));
 
     // Another slice of the same frame is not this one: rendered again.
     const auto other = frames("1", {"--sample-range", "0:4", "--skip-existing"});
@@ -240,4 +245,48 @@ TEST_F(RenderFinish, MissingListsWhatSkipExistingRendersAndRendersNothing) {
     // Usage: --missing writes nothing, so it takes no -o - and no --resume.
     EXPECT_EQ(render({kBounce, "--frame", "1", "-o", "-", "--missing"}).exit_code, 2);
     EXPECT_EQ(frames("1", {"--missing", "--claim"}).exit_code, 2);
+}
+
+// A run killed while writing a frame leaves that frame's lock; a later
+// --skip-existing run that finds the frame finished (and so never takes the
+// lock) removes it when its holder is gone from this host, and leaves the
+// locks of live processes and of other hosts alone.
+TEST_F(RenderFinish, StaleLocksOfFinishedFramesAreRemoved) {
+    ASSERT_EQ(frames("1-3", {"--spp", "2"}).exit_code, 0);
+    char host[256] = {};
+    ASSERT_EQ(::gethostname(host, sizeof host - 1), 0);
+    // A pid that no longer exists: a child of ours, run and reaped.
+    const auto gone = run_process({"/bin/sh", "-c", "echo $$"});
+    const std::string dead_pid = gone.out.substr(0, gone.out.find('\n'));
+    const auto write_lock = [&](int frame, const std::string& holder) {
+        std::ofstream(path("shots/.b.000" + std::to_string(frame) + ".exr.lock")) << holder << "\n";
+    };
+    write_lock(1, dead_pid + " " + host);                                  // a killed run of this host
+    write_lock(2, std::to_string(::getpid()) + " " + host);                // a live process (this test)
+    write_lock(3, dead_pid + " another-host-" + std::string(host));        // another host's
+    const auto run = frames("1-3", {"--spp", "2", "--skip-existing"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(count_lines(run.err, "; skipped"), 3) << run.err;
+    EXPECT_FALSE(fs::exists(path("shots/.b.0001.exr.lock")));
+    EXPECT_TRUE(fs::exists(path("shots/.b.0002.exr.lock")));
+    EXPECT_TRUE(fs::exists(path("shots/.b.0003.exr.lock")));
+}
+
+// The lock names its holder, pid and host: what the message of a second
+// writer says, and what tells a stale lock.
+TEST_F(RenderFinish, ALockNamesItsProcessAndHost) {
+    Child child(with({render_exe()}, {kBounce, "--frames", "1", "--width", "32", "--height", "24", "--spp", "100000000",
+                                      "-o", path("shots/b.%04d.exr")}),
+                path("running.txt"));
+    ASSERT_TRUE(eventually([&] { return fs::exists(path("shots/.b.0001.exr.lock")); }, 60))
+        << read_text(path("running.txt"));
+    char host[256] = {};
+    ASSERT_EQ(::gethostname(host, sizeof host - 1), 0);
+    EXPECT_TRUE(eventually([&] { return read_text(path("shots/.b.0001.exr.lock")).find(host) != std::string::npos; }, 10))
+        << read_text(path("shots/.b.0001.exr.lock"));
+    const auto second = frames("1", {"--spp", "2"});
+    EXPECT_EQ(second.exit_code, 1);
+    EXPECT_NE(second.err.find(" on " + std::string(host) + ") is writing this output"), std::string::npos) << second.err;
+    child.send_signal(SIGKILL);
+    child.wait(60);
 }

@@ -74,7 +74,7 @@ TEST_F(RenderCli, OneFrameEqualsTheSameFrameOfASequence) {
     const auto b = read_film_exr(path("one.exr"));
     EXPECT_EQ(a.metadata.seed, b.metadata.seed);
     EXPECT_EQ(a.metadata.scene_hash, b.metadata.scene_hash);
-    expect_same_within_float_rounding(read_raw_exr(path("seq.0012.exr")), read_raw_exr(path("one.exr")));
+    expect_same_image(read_raw_exr(path("seq.0012.exr")), read_raw_exr(path("one.exr")));
 
     // --same-seed keeps --seed for every frame; --fps sets the time.
     ASSERT_EQ(render({scene, "--frame", "12", "--fps", "48", "--same-seed", "--spp", "1", "--seed", "8", "-o",
@@ -95,7 +95,7 @@ TEST_F(RenderCli, FrameSlicesMergeToTheWholeFrame) {
     ASSERT_EQ(render({scene, "--frame", "5", "--sample-range", "2:4", "-o", path("s1.%04d.exr")}).exit_code, 0);
     const auto merged = merge({path("s0.0005.exr"), path("s1.0005.exr"), "-o", path("merged.exr")});
     ASSERT_EQ(merged.exit_code, 0) << merged.err;
-    expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("merged.exr")));
+    expect_same_image(read_raw_exr(path("whole.exr")), read_raw_exr(path("merged.exr")));
 }
 
 TEST_F(RenderCli, SkipExistingLeavesFinishedFramesContinuesPartialOnesAndRendersTheOthersAgain) {

@@ -1,5 +1,7 @@
-// --resume: continuing a render gives the uninterrupted render's image, and
-// a file that is not the same render is refused.
+// --resume: continuing a render gives the uninterrupted render's image (bit
+// for bit from a file with exact sums: a render stopped short; within float
+// rounding from a finished render's means), and a file that is not the same
+// render is refused.
 #include <OpenEXR/ImfRgbaFile.h>
 
 #include <filesystem>
@@ -12,31 +14,59 @@ using orb::exr::testing::read_raw_exr;
 
 TEST_F(RenderCli, ResumeEndsAtTheUninterruptedImage) {
     const std::string scene = write_scene(small_scene());
-    ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "9", "--seed", "5"}).exit_code, 0);
-    ASSERT_EQ(render({scene, "-o", path("part.exr"), "--spp", "4", "--seed", "5"}).exit_code, 0);
-    const auto resumed = render({scene, "--resume", path("part.exr"), "-o", path("resumed.exr"), "--spp", "9"});
+    ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "9", "--seed", "5", "--passes", "all"}).exit_code, 0);
+    // Stopped by --time after its first pass: it keeps its exact sums.
+    ASSERT_EQ(render({scene, "-o", path("part.exr"), "--spp", "9", "--seed", "5", "--passes", "all", "--time", "0.000001"})
+                  .exit_code,
+              0);
+    EXPECT_TRUE(has_exact_sums(read_raw_exr(path("part.exr"))));
+    EXPECT_EQ(orb::exr::read_film_exr(path("part.exr")).film.samples_per_pixel, 1u);
+    const auto resumed = render({scene, "--resume", path("part.exr"), "-o", path("resumed.exr")});
     ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_EQ(resumed.err.find("means only"), std::string::npos) << resumed.err;
 
     const auto film = orb::exr::read_film_exr(path("resumed.exr"));
     EXPECT_EQ(film.film.samples_per_pixel, 9u);
     EXPECT_EQ(film.metadata.seed, 5u);
+    // Finished: the output holds no exact sums, as the uninterrupted one.
+    EXPECT_FALSE(has_exact_sums(read_raw_exr(path("resumed.exr"))));
+    expect_same_image(path("whole.exr"), path("resumed.exr"));
+}
+
+// A finished render keeps its means only (exact sums would double its size
+// and its encoding time): continued to more samples, its sums are rebuilt
+// from them, said in a warning, and the image is the uninterrupted one's
+// within float rounding.
+TEST_F(RenderCli, ResumeExtendsAFinishedRenderWithinFloatRounding) {
+    const std::string scene = write_scene(small_scene());
+    ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "9", "--seed", "5"}).exit_code, 0);
+    ASSERT_EQ(render({scene, "-o", path("part.exr"), "--spp", "4", "--seed", "5"}).exit_code, 0);
+    EXPECT_FALSE(has_exact_sums(read_raw_exr(path("part.exr"))));
+    const auto resumed = render({scene, "--resume", path("part.exr"), "-o", path("resumed.exr"), "--spp", "9"});
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_NE(resumed.err.find("warning: " + path("part.exr") + ": holds means only, no exact sums"), std::string::npos)
+        << resumed.err;
     expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("resumed.exr")));
 }
 
 TEST_F(RenderCli, ResumeInPlaceContinuesToTheStoredTarget) {
     const std::string scene = write_scene(small_scene());
     ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "6", "--mode", "direct", "--max-depth", "2"}).exit_code, 0);
-    // Two resumes in place (the output replacing its input), mode and depth
-    // coming from the header each time.
-    ASSERT_EQ(render({scene, "-o", path("out.exr"), "--spp", "2", "--mode", "direct", "--max-depth", "2"}).exit_code, 0);
-    ASSERT_EQ(render({scene, "--resume", path("out.exr"), "-o", path("out.exr"), "--spp", "3"}).exit_code, 0);
-    const auto last = render({scene, "--resume", path("out.exr"), "-o", path("out.exr"), "--spp", "6"});
+    // Two resumes in place (the output replacing its input), mode, depth and
+    // target (orb:targetSpp) coming from the header each time; the render
+    // stopped short by --time each time but the last.
+    ASSERT_EQ(render({scene, "-o", path("out.exr"), "--spp", "6", "--mode", "direct", "--max-depth", "2", "--time",
+                      "0.000001"})
+                  .exit_code,
+              0);
+    ASSERT_EQ(render({scene, "--resume", path("out.exr"), "-o", path("out.exr"), "--time", "0.000001"}).exit_code, 0);
+    const auto last = render({scene, "--resume", path("out.exr"), "-o", path("out.exr")});
     ASSERT_EQ(last.exit_code, 0) << last.err;
     const auto film = orb::exr::read_film_exr(path("out.exr"));
     EXPECT_EQ(film.film.samples_per_pixel, 6u);
     EXPECT_EQ(film.metadata.mode, "direct");  // from the header, not the defaults
     EXPECT_EQ(film.metadata.max_depth, 2);
-    expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("out.exr")));
+    expect_same_image(read_raw_exr(path("whole.exr")), read_raw_exr(path("out.exr")));
     EXPECT_EQ(files(), (std::vector<std::string>{"out.exr", "scene.json", "whole.exr"}));
 }
 
@@ -91,7 +121,9 @@ TEST_F(RenderCli, ResumeRefusesAHalfFile) {
 TEST_F(RenderCli, ResumeKeepsTheSamplerAndRefusesAnother) {
     const std::string scene = write_scene(small_scene());
     ASSERT_EQ(render({scene, "-o", path("whole.exr"), "--spp", "5", "--sampler", "independent"}).exit_code, 0);
-    ASSERT_EQ(render({scene, "-o", path("part.exr"), "--spp", "2", "--sampler", "independent"}).exit_code, 0);
+    ASSERT_EQ(
+        render({scene, "-o", path("part.exr"), "--spp", "5", "--sampler", "independent", "--time", "0.000001"}).exit_code,
+        0);
     const auto other = render({scene, "--resume", path("part.exr"), "-o", path("out.exr"), "--sampler", "sobol"});
     EXPECT_EQ(other.exit_code, 1);
     EXPECT_NE(other.err.find("--sampler sobol differs from the resumed render's orb:sampler independent"),
@@ -102,7 +134,7 @@ TEST_F(RenderCli, ResumeKeepsTheSamplerAndRefusesAnother) {
     const auto resumed = render({scene, "--resume", path("part.exr"), "-o", path("out.exr"), "--spp", "5"});
     ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
     EXPECT_EQ(orb::exr::read_film_exr(path("out.exr")).metadata.sampler, "independent");
-    expect_same_within_float_rounding(read_raw_exr(path("whole.exr")), read_raw_exr(path("out.exr")));
+    expect_same_image(read_raw_exr(path("whole.exr")), read_raw_exr(path("out.exr")));
 
     ASSERT_EQ(render({scene, "-o", path("sobol.exr"), "--spp", "5"}).exit_code, 0);
     EXPECT_EQ(orb::exr::read_film_exr(path("sobol.exr")).metadata.sampler, "sobol");

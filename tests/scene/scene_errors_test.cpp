@@ -137,3 +137,14 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
 
 }  // namespace
+
+// What a message may quote of an input: text as it is, every other byte escaped.
+TEST(Printable, KeepsTextAndEscapesEveryOtherByte) {
+    EXPECT_EQ(orb::printable("plain text, tab\tand\nline"), "plain text, tab\tand\nline");
+    EXPECT_EQ(orb::printable("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80"), "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80");
+    EXPECT_EQ(orb::printable(std::string("a\0b\x7f\x1b", 5)), "a\\x00b\\x7F\\x1B");
+    EXPECT_EQ(orb::printable("\xff\xfe"), "\\xFF\\xFE");
+    EXPECT_EQ(orb::printable("\xc3"), "\\xC3");                    // cut short
+    EXPECT_EQ(orb::printable("\xc0\x80"), "\\xC0\\x80");          // overlong
+    EXPECT_EQ(orb::printable("\xed\xa0\x80"), "\\xED\\xA0\\x80");  // a surrogate
+}

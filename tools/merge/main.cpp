@@ -54,11 +54,17 @@ int run(const Arguments& args) {
 
     std::vector<orb::exr::MergeInput> films;
     for (const std::string& input : args.inputs) films.push_back({input, orb::exr::read_film_exr(input)});
+    for (const orb::exr::MergeInput& film : films)
+        if (!film.file.exact && !film.file.half) orb::cli::warning(film.path + ": " + orb::exr::kMeansOnly);
     orb::exr::ExrFilm merged = orb::exr::merge_films(std::move(films));
     merged.metadata.version = orb::cli::version_string();
+    for (const orb::film::OutOfRange& out : orb::film::sums_out_of_range(merged.film))
+        orb::cli::warning(orb::film::describe(out, merged.film.width));
 
     orb::exr::ExrWriteOptions options;
     options.passes = merged.passes;
+    // A merge may be merged again or continued: its exact sums go with it.
+    options.exact_sums = true;
     // --denoise: the denoised layer is written by the merged film's one encode.
     std::vector<orb::exr::PostLayerPlanes> post;
     if (denoiser) post.push_back(orb::denoise::denoised_post_layer(*denoiser, "the merged image"));

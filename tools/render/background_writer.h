@@ -12,6 +12,7 @@
 #include <exception>
 #include <memory>
 #include <optional>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -27,6 +28,12 @@ public:
         FinalImage image;
         cli::OutputFile output;
         std::optional<FrameClaim> claim;  // released once the image is written
+        std::string label;                // "frame 8: ", starts its lines
+        // Said once the file is in place ("done: 64 spp ... -> b.0008.exr"),
+        // as a warning when `warn` (a frame cut short by a signal); a frame
+        // whose write fails says why instead, as an error.
+        std::string written;
+        bool warn = false;
     };
 
     // At most this many frames are written at once by default: enough to
@@ -39,10 +46,10 @@ public:
     ~BackgroundWriter();  // waits for every frame being written (their errors are finish()'s to report)
 
     // Starts writing this frame; first waits for the oldest frame in flight
-    // when `max_in_flight` are, and rethrows the first error of any frame
-    // written so far.
+    // when `max_in_flight` are. Throws (std::runtime_error, naming the
+    // frames) when a frame written so far failed, each of which said why.
     void submit(Job job);
-    // Waits for every frame being written; rethrows the first error.
+    // Waits for every frame being written; throws as submit() does.
     void finish();
     // Seconds submit() and finish() have spent waiting for writes.
     double seconds_waited() const { return waited_; }
@@ -59,11 +66,11 @@ private:
         std::thread thread;
     };
     void wait_for_oldest();
-    void rethrow_first_error();
+    void throw_if_any_failed();
 
     std::size_t max_in_flight_;
-    std::deque<Write> in_flight_;  // oldest first
-    std::exception_ptr error_;     // the first failure, reported once
+    std::deque<Write> in_flight_;      // oldest first
+    std::vector<std::string> failed_;  // the labels of frames not written, reported once
     std::vector<Film> spare_;
     std::vector<std::shared_ptr<exr::ExrEncoding>> spare_encodings_;
     double waited_ = 0;

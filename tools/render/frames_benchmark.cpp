@@ -83,7 +83,7 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
             read.add(seconds_since(t));
             const double waited_before = writer.seconds_waited();
             writer.submit({std::move(image), cli::OutputFile(folder + "/frame" + std::to_string(i) + ".exr", "-o"),
-                           std::nullopt});
+                           std::nullopt, "", "", false});
             wait.add(writer.seconds_waited() - waited_before);
         }
         writer.finish();

@@ -17,10 +17,14 @@ public:
         options_.half = plan.half;
         options_.passes = plan.passes;
         options_.compression = plan.compression;
+        slice_ = plan.slice;
     }
 
-    FinalImage image(double seconds_this_run, Film reuse = {}, bool read_later = false) {
+    // `finished`: the render reached its end (not stopped by a signal or
+    // --time), which decides whether the image keeps its exact sums.
+    FinalImage image(double seconds_this_run, bool finished, Film reuse = {}, bool read_later = false) {
         FinalImage image{std::move(reuse), metadata_, options_, std::nullopt};
+        image.options.exact_sums = keeps_exact_sums(finished);
         if (read_later)
             image.arriving = renderer_.read_film_later();
         else
@@ -28,17 +32,42 @@ public:
         image.metadata.render_seconds = previous_seconds_ + seconds_this_run;
         return image;
     }
-    void write(double seconds_this_run) { output_.write(image(seconds_this_run).encode()); }
+    void write(double seconds_this_run) {
+        FinalImage checkpoint = image(seconds_this_run, false);
+        checkpoint.checkpoint = true;
+        output_.write(checkpoint.encode());
+    }
 
 private:
+    // Every image that may be continued or merged carries the film's exact
+    // sums, so that doing so is bit for bit (docs/orb-render.md, "Exact
+    // sums"): checkpoints, renders stopped short, slices. A finished render
+    // of the samples [0, target) does not: they would triple a beauty
+    // file's size and double its encoding time, frame after frame
+    // (docs/design/exact-film-sums.md). HALF files never do (they are not
+    // continued).
+    bool keeps_exact_sums(bool finished) const {
+        if (options_.half) return false;
+        if (!finished || slice_) return true;
+        const SampleRanges& held = renderer_.sample_ranges();
+        return !(held.ranges().size() == 1 && held.first() == 0);
+    }
+
     cli::OutputFile& output_;
     const render::Renderer& renderer_;
     exr::ExrMetadata metadata_;
     exr::ExrWriteOptions options_;
     double previous_seconds_ = 0;
+    bool slice_ = false;
 };
 
 }  // namespace
+
+void FinalImage::warn_of_sums_out_of_range() const {
+    const std::string label = metadata.frame ? "frame " + std::to_string(metadata.frame->number) + ": " : "";
+    for (const film::OutOfRange& out : film::sums_out_of_range(film))
+        cli::warning(label + film::describe(out, film.width));
+}
 
 std::string device_label(const render::DeviceInfo& d) { return d.name + " (" + d.platform + ")"; }
 
@@ -107,7 +136,9 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     outcome.reason = render::render_progressively(renderer, limits, callbacks, interrupt_requested(), &final_state);
     progress.finish(final_state);
     if (renderer.samples_per_pixel() == 0) return outcome;
-    outcome.image = writer.image(final_state.elapsed_seconds, std::move(reuse), read_later);
+    const bool finished = outcome.reason != render::StopReason::Interrupted &&
+                          outcome.reason != render::StopReason::ReachedTime;
+    outcome.image = writer.image(final_state.elapsed_seconds, finished, std::move(reuse), read_later);
     outcome.image.denoiser = plan.denoiser;
     if (plan.denoiser) outcome.image.denoise_seconds = std::make_shared<double>(0.0);
     // Ended on its adaptive rule: finished, though short of orb:targetSpp (render_request.h).

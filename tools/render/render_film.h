@@ -45,10 +45,14 @@ struct FinalImage {
     std::shared_ptr<denoise::Denoiser> denoiser = nullptr;
     std::shared_ptr<double> denoise_seconds = nullptr;
 
-    // Waits for the film, if it is still on its way.
+    bool checkpoint = false;  // written while rendering: its sums' range is reported with the final image
+
+    // Waits for the film, if it is still on its way; a final image then
+    // warns of sums that reached the film's range.
     void wait_for_film() {
         if (arriving) arriving->wait(film);
         arriving.reset();
+        if (!checkpoint) warn_of_sums_out_of_range();
     }
     std::string encode() {
         wait_for_film();
@@ -62,6 +66,8 @@ struct FinalImage {
     }
 
 private:
+    void warn_of_sums_out_of_range() const;
+
     // The denoised layer is written by the one encode of the film.
     std::vector<exr::PostLayerPlanes> post_layers() const {
         if (!denoiser) return {};

@@ -59,6 +59,7 @@ bool continue_from(RenderPlan& plan, const std::string& label, const std::string
             held.total() >= plan.target_spp)
             throw InputError(output + ": holds the samples " + held.format() + " now");
         renderer.load_film(file.film);
+        if (!file.exact) cli::warning(label + output + ": " + exr::kMeansOnly);
         file.film = {};  // on the device now; the metadata stays for orb:renderSeconds
         plan.resumed = std::move(file);
         return true;
@@ -142,6 +143,8 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
             if (verdict->state != exr::OutputState::Finished) return false;
             cli::info(label + job.output + ": finished (" + std::to_string(verdict->held_spp) + " spp); skipped");
             if (job.frame) skipped.push_back(*job.frame);
+            // A run killed while writing it left its lock, which no later run would take and release.
+            cli::OutputFile::remove_stale_lock(job.output);
             return true;
         };
         if (finish_existing) {
@@ -180,14 +183,14 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
         rendered.push_back(outcome.stats);
         denoise_seconds.push_back(outcome.image.denoise_seconds);
         const std::string summary = film_summary(outcome, *renderer, image);
-        // Written while the next frame renders; a failed write ends the run at the next frame.
-        writer.submit({std::move(outcome.image), std::move(image), std::move(claim)});
-        if (outcome.reason == render::StopReason::Interrupted) {
-            cli::warning(label + "interrupted: wrote " + summary);
-            break;
-        }
-        cli::info(label + (outcome.reason == render::StopReason::ReachedTime ? "time limit reached: " : "done: ") +
-                  summary);
+        const bool interrupted = outcome.reason == render::StopReason::Interrupted;
+        const std::string written = interrupted ? "interrupted: wrote " + summary
+                                    : outcome.reason == render::StopReason::ReachedTime ? "time limit reached: " + summary
+                                                                                       : "done: " + summary;
+        // Written while the next frame renders, which says so once its file
+        // is in place; a failed write ends the run at the next frame.
+        writer.submit({std::move(outcome.image), std::move(image), std::move(claim), label, written, interrupted});
+        if (interrupted) break;
     }
     writer.finish();
     for (std::size_t i = 0; i < rendered.size(); ++i)

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "background_writer.h"
 #include "orb/cli/camera_options.h"
 #include "orb/cli/legend_output.h"
 #include "frame_warnings.h"
@@ -116,6 +117,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
             throw InputError(path + ": holds the samples " + held.format() + ", not the start of --sample-range " +
                              *o.sample_range + "; drop --sample-range to continue the file after its last sample");
         plan.target_spp = slice.count;
+        plan.slice = true;
     }
     if (plan.target_spp < file.film.samples_per_pixel)
         throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
@@ -154,9 +156,34 @@ PosedFrame pose_scene_at(const RenderPlan& plan, long frame) {
     return posed;
 }
 
+// The host memory orb-render needs beside the renderer's: the film read
+// back and its EXR encoding (the values, the exact sums where the image
+// will carry them, the compressed blocks), for every film a frame run holds
+// at once (the one rendering and BackgroundWriter's in flight).
+std::uint64_t host_bytes_beside_renderer(const RenderPlan& plan, const RenderOptions& o) {
+    const auto pixels = static_cast<std::uint64_t>(plan.config.width) * static_cast<std::uint64_t>(plan.config.height);
+    std::uint64_t film = 0;
+    for (const film::ChannelInfo& info : film::kChannels)
+        if ((plan.config.film_channels & film::channel_bit(info.channel)) != 0) film += film::pixel_bytes(info) * pixels;
+    // Checkpoints, slices and renders that --time will stop short carry their exact sums (render_film.cpp).
+    const bool exact_sums = !plan.half && (o.checkpoint || plan.slice || o.time_limit);
+    const std::uint64_t image = film + 2 * exr::encoding_bytes(plan.passes, exact_sums, pixels);
+    return renders_frames(o) ? (1 + BackgroundWriter::kDefaultInFlight) * image : image;
+}
+
+RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& knobs);
+
 }  // namespace
 
 RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
+    RenderPlan plan = plan_render(o, knobs);
+    plan.config.caller_host_bytes = host_bytes_beside_renderer(plan, o);
+    return plan;
+}
+
+namespace {
+
+RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
     RenderPlan plan;
     // Usage errors before the scene is read; kept for the frames a trajectory reads later.
     plan.style = cli::sphere_style_options(o.style);
@@ -207,6 +234,7 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     plan.config.max_depth = *s.max_depth;
     plan.target_spp = *s.spp;
     plan.first_sample = s.first_sample;
+    plan.slice = s.slice;
     set_passes(plan, s.passes);
     apply_adaptive(o, plan);
     if (renders_frames(o)) {
@@ -242,6 +270,8 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
     plan.scene_hash = scene_content_hash(plan.scene);
     return plan;
 }
+
+}  // namespace
 
 PosedFrame pose_at(const RenderPlan& plan, long frame) {
     return request::for_frame(frame, [&] { return pose_scene_at(plan, frame); });

@@ -49,6 +49,7 @@ struct RenderPlan {
     request::RequestSettings settings;  // the command line's settings, filled in from the scene
     std::uint64_t target_spp = 0;   // samples per pixel the film is to hold
     std::uint64_t first_sample = 0; // where a fresh render starts (--sample-range START)
+    bool slice = false;             // --sample-range: the output is a slice, to be merged
     std::vector<exr::Pass> passes;
     bool half = false;
     exr::ExrCompression compression = exr::ExrCompression::Zip;

@@ -51,6 +51,7 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
         renderer.load_film(plan.resumed->film);
         cli::info("resuming " + options.resume + " at " + std::to_string(plan.resumed->film.samples_per_pixel) +
                   " spp (samples " + plan.resumed->film.sample_ranges.format() + ")");
+        if (!plan.resumed->exact) cli::warning(options.resume + ": " + exr::kMeansOnly);
     } else {
         renderer.clear(plan.first_sample);
     }

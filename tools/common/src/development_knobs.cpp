@@ -40,6 +40,13 @@ int parse_simd_lanes(const std::string& text)
     return static_cast<int>(*lanes);
 }
 
+int parse_pass_spp(const std::string& text)
+{
+    const std::optional<unsigned long> spp = parse_count(text);
+    if (!spp || *spp == 0 || *spp > 4096) malformed("ORB_PASS_SPP", text, "a whole number of samples from 1 to 4096");
+    return static_cast<int>(*spp);
+}
+
 render::LocalSize parse_local_size(const std::string& text)
 {
     const std::size_t cross = text.find('x');
@@ -78,6 +85,7 @@ render::DevelopmentKnobs parse_development_knobs(const EnvironmentLookup& lookup
     if (auto options = value_of(lookup, "ORB_CL_OPTIONS")) knobs.cl_options = *options;
     if (auto lanes = value_of(lookup, "ORB_SIMD_LANES")) knobs.simd_lanes = parse_simd_lanes(*lanes);
     if (auto size = value_of(lookup, "ORB_LOCAL_SIZE")) knobs.local_size = parse_local_size(*size);
+    if (auto spp = value_of(lookup, "ORB_PASS_SPP")) knobs.pass_spp = parse_pass_spp(*spp);
     if (auto limit = value_of(lookup, "ORB_REFIT_COST_LIMIT")) knobs.refit_cost_limit = parse_refit_cost_limit(*limit);
     if (auto log = value_of(lookup, "ORB_SHOW_BUILD_LOG")) knobs.show_build_log = parse_switch("ORB_SHOW_BUILD_LOG", *log);
     if (auto decisions = value_of(lookup, "ORB_DEVICE_DECISIONS"))

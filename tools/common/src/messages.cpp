@@ -2,10 +2,19 @@
 
 #include <iostream>
 
+#include "orb/scene/error.h"
+
 namespace orb::cli {
 namespace {
 std::string g_tool_name = "orb";
 bool g_quiet = false;
+
+// Each line in one write, so that lines from several threads (orb-render's
+// frame writers) never interleave within a line; the bytes of an input a
+// message quotes are escaped where they are not text (orb::printable).
+void say(const char* kind, const std::string& message) {
+    std::cerr << (g_tool_name + ": " + kind + printable(message) + "\n") << std::flush;
+}
 }  // namespace
 
 void set_tool_name(std::string name) { g_tool_name = std::move(name); }
@@ -13,14 +22,14 @@ const std::string& tool_name() { return g_tool_name; }
 void set_quiet(bool q) { g_quiet = q; }
 bool quiet() { return g_quiet; }
 
-void error(const std::string& message) { std::cerr << g_tool_name << ": error: " << message << std::endl; }
+void error(const std::string& message) { say("error: ", message); }
 
 void warning(const std::string& message) {
-    if (!g_quiet) std::cerr << g_tool_name << ": warning: " << message << std::endl;
+    if (!g_quiet) say("warning: ", message);
 }
 
 void info(const std::string& message) {
-    if (!g_quiet) std::cerr << g_tool_name << ": " << message << std::endl;
+    if (!g_quiet) say("", message);
 }
 
 }  // namespace orb::cli

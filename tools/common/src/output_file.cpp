@@ -118,6 +118,25 @@ OutputFile::OutputFile(std::string path, std::string option) : path_(std::move(p
 
 OutputFile::~OutputFile() { release(); }
 
+void OutputFile::remove_stale_lock(const std::string& path) noexcept {
+    try {
+        struct stat existing {};
+        if (path.empty() || path == "-") return;
+        if (::stat(path.c_str(), &existing) == 0) {
+            if (!S_ISREG(existing.st_mode)) return;  // a stream takes no lock
+            char* real = ::realpath(path.c_str(), nullptr);
+            if (!real) return;
+            const std::string target = real;
+            std::free(real);
+            detail::remove_stale_lock(target);
+        } else {
+            detail::remove_stale_lock(detail::follow_dangling_links(path));
+        }
+    } catch (...) {
+        // Best effort: a lock left is only a file left.
+    }
+}
+
 OutputFile::OutputFile(OutputFile&& other) noexcept { *this = std::move(other); }
 
 OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {

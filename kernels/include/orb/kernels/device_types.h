@@ -277,10 +277,12 @@ typedef struct RenderPassParams {
  * The kernel's signature (kernels/integrator.cl), the host's argument indices,
  * its set of scene buffers and its count of __constant arguments
  * (librender/src/pass_arguments.h) are all generated from this one list:
- *   FILM(name, components, clear, accumulate, merge, layer, stored_as, paired, names)
- *                       __global float* film_<name>: one per row of the film's
- *                       channel table (ORB_FILM_CHANNELS, film_channels.h),
- *                       which passes the row's other columns along
+ *   FILM(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names)
+ *                       __global long* film_<name> (a Sum channel's sums) or
+ *                       __global float* (a CentreRay channel's values): one
+ *                       per row of the film's channel table
+ *                       (ORB_FILM_CHANNELS, film_channels.h), which passes
+ *                       the row's other columns along
  *   TABLE(type, name)   a read-only scene table of `type` records, in the
  *                       address space ORB_SCENE_SPACE (__constant or __global)
  *   PARAMS(type, name)  the parameter struct, by value; last, since it ends

@@ -22,15 +22,28 @@
  *
  * ORB_FILM_CHANNELS(CHANNEL): the film's per-pixel buffers, in the order of
  * render_pass's film arguments:
- *   CHANNEL(name, components, clear, accumulate, merge, layer, stored_as, paired, (exr channel names))
+ *   CHANNEL(name, components, clear, accumulate, units, merge, layer, stored_as, paired, (exr channel names))
  *   The EXR names are one parenthesised argument, so that every callback has
- *   exactly nine parameters: OpenCL C 1.2 has no variadic macros (NVIDIA's
+ *   exactly ten parameters: OpenCL C 1.2 has no variadic macros (NVIDIA's
  *   compiler refuses them; PoCL's accepts them).
- *     components  floats per pixel: 3 (a colour or a vector) or 1
+ *     components  values per pixel: 3 (a colour or a vector) or 1
  *     clear       the value of a pixel that holds no sample
  *     accumulate  Sum: every sample adds its value;
  *                 CentreRay: written once, by the first pass of a film, from
  *                 the ray through the pixel centre (the same for every sample)
+ *     units       what the film holds per component (docs/design/exact-film-sums.md):
+ *                 a Sum channel's sum is a 64-bit integer, so that adding
+ *                 samples is exact and gives the same bits in any grouping
+ *                 (passes, devices, resumed runs, merged slices):
+ *                 Fixed: whole units of 2^-ORB_FILM_FIXED_BITS; a sample's
+ *                   value is clamped to [0, ORB_FILM_FIXED_MAX] and rounded
+ *                   to the nearest unit once; sums saturate (reported,
+ *                   never wrapped: see below);
+ *                 SignedFixed: the same units for a value in [-1, 1] (a
+ *                   unit vector's component), whose sum cannot overflow
+ *                   (below film::kMaxSamplesPerPixel samples per pixel);
+ *                 Count: whole numbers (a sample adds 0 or 1), saturating;
+ *                 Float: a CentreRay channel's value, a float
  *     merge       how films of disjoint sample slices combine (passes,
  *                 resumed runs, devices, orb-merge): Sum: added;
  *                 Same: equal in every slice, since it depends on no sample;
@@ -93,20 +106,31 @@
  * sample_count the samples the pixel holds: with adaptive sampling pixels hold different counts, and every
  *              Mean, UnitVector and VarianceOfMean of a film that has this channel is over the pixel's own
  *              count instead of the film's samples_per_pixel (docs/design/adaptive-sampling.md) */
-#define ORB_FILM_CHANNELS(CHANNEL)                                                                                    \
-    CHANNEL(radiance, 3, 0.0f, Sum, Sum, Beauty, Mean, none, ("R", "G", "B"))                                           \
-    CHANNEL(alpha, 1, 0.0f, Sum, Sum, Beauty, Mean, none, ("A"))                                                        \
-    CHANNEL(direct, 3, 0.0f, Sum, Sum, Direct, Mean, none, ("direct.R", "direct.G", "direct.B"))                        \
-    CHANNEL(indirect, 3, 0.0f, Sum, Sum, Indirect, Mean, none, ("indirect.R", "indirect.G", "indirect.B"))              \
-    CHANNEL(emission, 3, 0.0f, Sum, Sum, Emission, Mean, none, ("emission.R", "emission.G", "emission.B"))              \
-    CHANNEL(albedo, 3, 0.0f, Sum, Sum, Albedo, Mean, none, ("albedo.R", "albedo.G", "albedo.B"))                        \
-    CHANNEL(normal, 3, 0.0f, Sum, Sum, Normal, UnitVector, none, ("N.X", "N.Y", "N.Z", "orb.normalLength"))             \
-    CHANNEL(depth, 1, ORB_FILM_INFINITY, CentreRay, Same, Depth, Value, none, ("Z"))                                    \
-    CHANNEL(radiance_sq, 3, 0.0f, Sum, Sum, Variance, VarianceOfMean, radiance, ("variance.R", "variance.G",           \
-            "variance.B"))                                                                                             \
-    CHANNEL(object_id, 1, -1.0f, CentreRay, Same, Id, Value, none, ("id"))                                              \
-    CHANNEL(background, 3, 0.0f, Sum, Sum, Background, Mean, none, ("background.R", "background.G", "background.B")) \
-    CHANNEL(sample_count, 1, 0.0f, Sum, Sum, Samples, Value, none, ("samples.count"))
+#define ORB_FILM_CHANNELS(CHANNEL)                                                                                                \
+    CHANNEL(radiance, 3, 0.0f, Sum, Fixed, Sum, Beauty, Mean, none, ("R", "G", "B"))                                              \
+    CHANNEL(alpha, 1, 0.0f, Sum, Count, Sum, Beauty, Mean, none, ("A"))                                                           \
+    CHANNEL(direct, 3, 0.0f, Sum, Fixed, Sum, Direct, Mean, none, ("direct.R", "direct.G", "direct.B"))                           \
+    CHANNEL(indirect, 3, 0.0f, Sum, Fixed, Sum, Indirect, Mean, none, ("indirect.R", "indirect.G", "indirect.B"))                 \
+    CHANNEL(emission, 3, 0.0f, Sum, Fixed, Sum, Emission, Mean, none, ("emission.R", "emission.G", "emission.B"))                 \
+    CHANNEL(albedo, 3, 0.0f, Sum, Fixed, Sum, Albedo, Mean, none, ("albedo.R", "albedo.G", "albedo.B"))                           \
+    CHANNEL(normal, 3, 0.0f, Sum, SignedFixed, Sum, Normal, UnitVector, none, ("N.X", "N.Y", "N.Z", "orb.normalLength"))          \
+    CHANNEL(depth, 1, ORB_FILM_INFINITY, CentreRay, Float, Same, Depth, Value, none, ("Z"))                                       \
+    CHANNEL(radiance_sq, 3, 0.0f, Sum, Fixed, Sum, Variance, VarianceOfMean, radiance, ("variance.R", "variance.G", "variance.B")) \
+    CHANNEL(object_id, 1, -1.0f, CentreRay, Float, Same, Id, Value, none, ("id"))                                                 \
+    CHANNEL(background, 3, 0.0f, Sum, Fixed, Sum, Background, Mean, none, ("background.R", "background.G", "background.B"))       \
+    CHANNEL(sample_count, 1, 0.0f, Sum, Count, Sum, Samples, Value, none, ("samples.count"))
+
+/* The units of Fixed and SignedFixed sums: 2^-24, so that a sample is
+ * rounded by at most 2^-25 (3e-8) and a pixel's sum holds up to 2^62 units,
+ * 2^38 (2.7e11), within the documented range (docs/design/exact-film-sums.md
+ * says why 24). A sample's Fixed value is clamped to ORB_FILM_FIXED_MAX
+ * (2^38), which converts to 2^62 units: a sum at or above that may hold a
+ * clamped sample and is reported (film::saturated_sums), and additions stop
+ * at the largest int64 instead of wrapping. A pixel holds at most
+ * film::kMaxSamplesPerPixel samples (2^39), below which a SignedFixed sum
+ * of values in [-1, 1] cannot overflow. */
+#define ORB_FILM_FIXED_BITS 24
+#define ORB_FILM_FIXED_MAX 274877906944.0f
 
 #ifdef __OPENCL_VERSION__
 
@@ -116,7 +140,7 @@
  * the channels in ORB_FILM_CHANNELS_BUILT (the host passes those of the
  * layers a run writes, film::channels_for); the others stay at their clear
  * value. */
-#define ORB_FILM_CHANNEL_INDEX(name, components, clear, accumulate, merge, layer, stored_as, paired, names) \
+#define ORB_FILM_CHANNEL_INDEX(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names) \
     FilmChannel_##name,
 enum FilmChannelIndex { ORB_FILM_CHANNELS(ORB_FILM_CHANNEL_INDEX) FilmChannel_count };
 #undef ORB_FILM_CHANNEL_INDEX
@@ -125,6 +149,11 @@ enum FilmChannelIndex { ORB_FILM_CHANNELS(ORB_FILM_CHANNEL_INDEX) FilmChannel_co
 #define ORB_FILM_CHANNELS_BUILT 0xffffffffu
 #endif
 #define ORB_FILM_BUILT(name) (((((uint)(ORB_FILM_CHANNELS_BUILT)) >> FilmChannel_##name) & 1u) != 0u)
+
+/* A channel's buffer element by its `accumulate` column: a Sum channel's
+ * sums are 64-bit integers, a CentreRay channel's values floats. */
+#define ORB_FILM_ELEMENT_Sum long
+#define ORB_FILM_ELEMENT_CentreRay float
 
 #else
 
@@ -154,6 +183,7 @@ enum class Channel : int {
 
 enum class LayerKind { Color, Normal, Depth, Id, Variance, Count };
 enum class Accumulation { Sum, CentreRay };
+enum class Units { Fixed, SignedFixed, Count, Float };
 enum class MergeRule { Sum, Same };
 enum class StoredAs { Mean, UnitVector, VarianceOfMean, Value };
 
@@ -171,6 +201,7 @@ struct ChannelInfo {
     int components;
     float clear;
     Accumulation accumulation;
+    Units units;
     MergeRule merge;
     Layer layer;
     StoredAs stored_as;
@@ -203,13 +234,13 @@ inline constexpr std::array kLayers{
 };
 
 inline constexpr std::array kChannels{
-#define ORB_FILM_CHANNEL_INFO(name, components, clear, accumulate, merge, layer, stored_as, paired, names)             \
-    ChannelInfo{Channel::name,           #name,                                                                    \
-                components,              clear,                                                                    \
-                Accumulation::accumulate, MergeRule::merge,                                                        \
-                Layer::layer,            StoredAs::stored_as,                                                      \
-                Channel::paired,         detail::exr_names names,                                           \
-                detail::exr_name_count names},
+#define ORB_FILM_CHANNEL_INFO(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names) \
+    ChannelInfo{Channel::name,            #name,                                                                   \
+                components,               clear,                                                                   \
+                Accumulation::accumulate, Units::units,                                                            \
+                MergeRule::merge,         Layer::layer,                                                            \
+                StoredAs::stored_as,      Channel::paired,                                                         \
+                detail::exr_names names,  detail::exr_name_count names},
     ORB_FILM_CHANNELS(ORB_FILM_CHANNEL_INFO)
 #undef ORB_FILM_CHANNEL_INFO
 };
@@ -267,9 +298,13 @@ constexpr bool table_is_consistent()
             const ChannelInfo& p = info(c.paired);
             if (p.components != c.components || p.stored_as != StoredAs::Mean || p.accumulation != Accumulation::Sum)
                 return false;
+            // A sum of squares in the units of its channel's sum.
+            if (p.units != Units::Fixed || c.units != Units::Fixed) return false;
         }
-        // A centre-ray value is the same in every slice; a sum adds up.
+        // A centre-ray value is the same in every slice; a sum adds up, in integer units.
         if ((c.accumulation == Accumulation::Sum) != (c.merge == MergeRule::Sum)) return false;
+        if ((c.accumulation == Accumulation::Sum) != (c.units != Units::Float)) return false;
+        if (c.accumulation == Accumulation::Sum && c.clear != 0.0f) return false;  // a sum of no samples
         if (c.accumulation == Accumulation::CentreRay && c.stored_as != StoredAs::Value) return false;
     }
     for (int i = 0; i < kLayerCount; ++i)
@@ -282,6 +317,33 @@ static_assert(kChannelCount <= 32, "one bit per channel in a channel mask");
 inline constexpr std::uint32_t kAllChannels = (kChannelCount == 32) ? ~0u : (1u << kChannelCount) - 1u;
 
 constexpr std::uint32_t channel_bit(Channel channel) { return 1u << static_cast<int>(channel); }
+
+// A Sum channel's sum: a whole number of units (the `units` column).
+using Sum = std::int64_t;
+
+// The value of one unit of a sum: 2^-ORB_FILM_FIXED_BITS for Fixed and
+// SignedFixed, 1 for Count (and for a Float channel, which holds values).
+constexpr double unit_value(Units units)
+{
+    return units == Units::Fixed || units == Units::SignedFixed ? 1.0 / static_cast<double>(1ull << ORB_FILM_FIXED_BITS)
+                                                                : 1.0;
+}
+
+// Units a Fixed sum reaches only past the documented range (a sample at
+// ORB_FILM_FIXED_MAX converts to this many): a sum at or above it may have
+// been clamped, and is reported (film::saturated_sums).
+inline constexpr Sum kSumRangeEnd = Sum{1} << 62;
+
+// Bytes of one entry of a channel's buffer (a sum or a float), and of one pixel.
+constexpr std::size_t entry_bytes(const ChannelInfo& c)
+{
+    return c.accumulation == Accumulation::Sum ? sizeof(Sum) : sizeof(float);
+}
+constexpr std::size_t pixel_bytes(const ChannelInfo& c) { return entry_bytes(c) * static_cast<std::size_t>(c.components); }
+
+// The most samples a pixel may hold: a SignedFixed sum of values in
+// [-1, 1] stays below 2^63 units up to here.
+inline constexpr std::uint64_t kMaxSamplesPerPixel = std::uint64_t{1} << 39;
 
 // The channels that writing `layers` needs: each layer's own, and the
 // channel a VarianceOfMean is the square of (its mean enters the variance).

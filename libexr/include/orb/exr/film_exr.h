@@ -81,10 +81,20 @@ const char* compression_name(ExrCompression compression);
 // Throws std::invalid_argument naming the choices.
 ExrCompression parse_compression(const std::string& name);
 
+// The encoding of the exact sums (orb:exactSums): each Sum channel's 64-bit
+// sums in their units (film_channels.h) as two UINT channels, orb.sum.NAME.lo
+// and .hi (exact_sum_channel_name). A file of a later encoding is refused.
+inline constexpr int kExactSumsEncoding = 1;
+
 struct ExrWriteOptions {
     bool half = false;  // HALF for colour layers; Z, id and orb.* stay FLOAT
     std::vector<Pass> passes = image_passes();
     ExrCompression compression = ExrCompression::Zip;
+    // The film's exact sums beside its values, so that the file continues
+    // (--resume, --skip-existing) and merges (orb-merge) bit for bit as if
+    // it had never been written: for every file that may be continued or
+    // merged (docs/orb-render.md, "Exact sums"). Not with `half`.
+    bool exact_sums = false;
 };
 
 // Memory an encoder keeps from one image to the next: a frame loop that
@@ -157,6 +167,12 @@ void encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWri
 std::string encode_film_exr(const Film& film, const ExrMetadata& metadata, const ExrWriteOptions& options,
                             std::span<const PostLayerPlanes> post = {});
 
+// The bytes of the values an encode of `pixels` pixels of these layers
+// fills (with their exact sums, when asked) before compressing them: what a
+// tool must find room for beside the film (the compressed blocks take about
+// as much again at most).
+std::uint64_t encoding_bytes(const std::vector<Pass>& passes, bool exact_sums, std::uint64_t pixels);
+
 // Writes `path` directly, for tests and simple callers. Throws
 // std::runtime_error on I/O errors and std::invalid_argument for an empty film.
 void write_film_exr(const std::string& path, const Film& film, const ExrMetadata& metadata,
@@ -167,7 +183,16 @@ struct ExrFilm {
     ExrMetadata metadata;
     std::vector<Pass> passes;  // from orb:passes, every one checked present
     bool half = false;         // some recovered channel is stored as HALF
+    // The sums came from the file's exact sums (ExrWriteOptions::exact_sums),
+    // checked against its values: continuing or merging it is bit for bit.
+    // Otherwise they were rebuilt from its means, within float rounding.
+    bool exact = false;
 };
+
+// What a tool says of a file it continues or merges without exact sums.
+inline constexpr const char* kMeansOnly =
+    "holds means only, no exact sums (a finished render, or one an older Orb wrote): its sums are rebuilt "
+    "from them, so the result equals an uninterrupted render within float rounding, not bit for bit";
 
 // What read_film_exr() learns from the header, checked the same way, and
 // that every block of pixels decodes (a file cut short or damaged inside is
@@ -181,6 +206,7 @@ struct ExrFilmSummary {
     ExrMetadata metadata;
     std::vector<Pass> passes;
     bool half = false;  // some channel of `passes` is stored as HALF (not resumable within float rounding)
+    bool exact_sums = false;  // the file carries its exact sums (orb:exactSums)
 };
 
 // Throws orb::InputError as read_film_exr() does, "truncated" included.

@@ -21,7 +21,9 @@ struct MergeInput {
 // same size, seed, scene hash, scene time, mode, max depth and passes, and
 // sample ranges that do not overlap. The result holds the union of the
 // ranges, the sum of the targets and render seconds, and the devices of all
-// inputs; its scene file and matrices are the first slice's. Throws
+// inputs; its scene file and matrices are the first slice's. The sums add
+// exactly (integers), so any grouping of merges gives the same bits; the
+// result is `exact` when every input was (ExrFilm::exact). Throws
 // orb::InputError naming the file and what differs.
 ExrFilm merge_films(std::vector<MergeInput> inputs);
 

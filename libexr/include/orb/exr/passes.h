@@ -34,6 +34,15 @@ std::vector<std::string> pass_resume_channels(Pass pass);
 // The film channels stored in a pass, in table order.
 std::vector<const film::ChannelInfo*> pass_film_channels(Pass pass);
 
+// The UINT channels that carry a Sum channel's exact sums in a file that
+// may be continued or merged (docs/orb-render.md, "Exact sums"): component
+// `component`'s 64-bit sum as its low and high 32 bits,
+// "orb.sum.<its channel name>.lo" and ".hi" (orb.sum.R.lo, orb.sum.R.hi).
+std::string exact_sum_channel_name(const film::ChannelInfo& channel, int component, bool high);
+
+// Those of every Sum channel of a pass (none for depth or id).
+std::vector<std::string> pass_exact_sum_channels(Pass pass);
+
 // Parses "beauty,albedo" (or "all": image_passes()); duplicates are dropped, the result is in
 // all_passes() order. Throws std::invalid_argument naming the bad entry.
 std::vector<Pass> parse_passes(const std::string& list);

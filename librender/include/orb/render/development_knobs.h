@@ -42,6 +42,12 @@ struct DevelopmentKnobs {
     // (halved while it exceeds what the kernel allows on the device). Unset:
     // 16x8 on GPUs, 8x1 on CPUs, 1x1 with lanes.
     std::optional<LocalSize> local_size;
+    // ORB_PASS_SPP: every pass after the first takes this many samples per
+    // pixel (fewer where the target or a decision comes sooner) instead of
+    // what fits the pass length aimed at: for tests that render one image
+    // in passes of other sizes (the image is the same bits). Unset: passes
+    // sized from the measured speed.
+    std::optional<int> pass_spp;
     // ORB_REFIT_COST_LIMIT: an animation keeps refitting its BVH while the
     // tree's SAH cost stays within this multiple of its built cost, whatever
     // the frames cost (0: never refit); replaces the rule that weighs the

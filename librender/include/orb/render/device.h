@@ -19,6 +19,7 @@ struct DeviceInfo {
     unsigned compute_units = 0;
     unsigned max_clock_mhz = 0;
     std::uint64_t global_memory_bytes = 0;
+    std::uint64_t max_allocation_bytes = 0;  // CL_DEVICE_MAX_MEM_ALLOC_SIZE: the largest one buffer
 };
 
 // No OpenCL platform at all; the message tells the user to install PoCL.

@@ -47,6 +47,10 @@ struct RenderConfig {
     // film::channels_for(layers) for the layers a run writes): the others
     // stay at their clear values and cost nothing.
     std::uint32_t film_channels = film::kAllChannels;
+    // Host memory the caller will need beside the renderer's, for the
+    // renderer's check that the render fits before anything is allocated
+    // (memory_check.h): orb-render's film read back and its EXR encoding.
+    std::uint64_t caller_host_bytes = 0;
     // Adaptive sampling: passes render only the pixels of
     // Renderer::set_active_pixels (the kernels' ORB_ACTIVE_PIXELS); false
     // renders every pixel, without the list's indirection.

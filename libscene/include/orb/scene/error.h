@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace orb {
 
@@ -14,5 +15,12 @@ struct InputError : std::runtime_error {
 
 // "name:line:column: message"
 [[noreturn]] void throw_at(const std::string& source, int line, int column, const std::string& message);
+
+// `text` safe to print: valid UTF-8 and line breaks and tabs kept, every
+// other control byte, DEL and every byte of an invalid UTF-8 sequence
+// written as \xNN. For messages that quote what a parser saw in the input
+// (a library's message about a file of random bytes would otherwise put
+// those bytes on the terminal).
+std::string printable(std::string_view text);
 
 }  // namespace orb

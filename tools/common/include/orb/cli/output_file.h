@@ -46,6 +46,12 @@ public:
     // What kind of file a Stream output is ("a character device", "a FIFO", ...).
     const std::string& stream_description() const { return stream_description_; }
 
+    // Removes the lock beside `path` that a process which died while writing
+    // it left (same host, pid gone), for a tool that finds an output it will
+    // not write (orb-render --skip-existing skipping a finished frame). Best
+    // effort: errors are ignored.
+    static void remove_stale_lock(const std::string& path) noexcept;
+
 private:
     void open_temporary();
     void discard_temporary() noexcept;
