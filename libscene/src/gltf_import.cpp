@@ -20,16 +20,13 @@ namespace orb::gltf {
 
 void Diagnostics::fail(const std::string& message) const { throw InputError(source_ + ": " + message); }
 
-void Diagnostics::warn(const std::string& message) { warnings_.push_back(message); }
+// Every warning names the asset: several may be imported at once (a farm's
+// log, orb-frames), and a warning without its file is a riddle.
+void Diagnostics::warn(const std::string& message) { warnings_.push_back(source_ + ": " + message); }
 
 void Diagnostics::lossy(const std::string& message) {
     if (strict_) fail(message + " (an error because of --strict)");
     warn(message);
-}
-
-void Diagnostics::lossy_for_asset(const std::string& message) {
-    if (strict_) fail(message + " (an error because of --strict)");
-    warn(source_ + ": " + message);
 }
 
 std::optional<double> number_at(const tinygltf::Value& object, const std::string& key) {
@@ -835,7 +832,7 @@ private:
         for (int material : materials_.used())
             ignored_.add_material(model_.materials[std::size_t(material)], textures_.active());
         const std::string summary = ignored_.summary(model_);
-        if (!summary.empty()) diagnostics_.lossy_for_asset(summary);
+        if (!summary.empty()) diagnostics_.lossy(summary);
     }
 
     void report_scales() {

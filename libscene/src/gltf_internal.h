@@ -35,11 +35,10 @@ class Diagnostics {
 public:
     Diagnostics(std::string source, bool strict) : source_(std::move(source)), strict_(strict) {}
     [[noreturn]] void fail(const std::string& message) const;
+    // A warning, named by the asset's file.
     void warn(const std::string& message);
     // A warning that loses information: an error under --strict.
     void lossy(const std::string& message);
-    // The same for a summary of the whole asset, whose warning names the file.
-    void lossy_for_asset(const std::string& message);
     const std::string& source() const { return source_; }
     std::vector<std::string> take_warnings() { return std::move(warnings_); }
 
