@@ -20,7 +20,7 @@
 
 #include "denoise_inputs.h"
 #include "exr_memory_streams.h"
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 #include "orb/scene/error.h"
 
 namespace orb::denoise {

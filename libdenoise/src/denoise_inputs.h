@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 
 namespace orb::denoise::detail {
 

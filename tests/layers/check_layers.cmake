@@ -8,7 +8,8 @@ include(${LINKS})
 set(opencl orb_kernels orb_render OpenCL::OpenCL)
 set(image_formats orb_exr orb_image OpenEXR::OpenEXR OpenEXR::OpenEXRCore OpenImageIO::OpenImageIO
     OpenColorIO::OpenColorIO)
-set(forbidden_orb_device_types orb_scene orb_film ${opencl} ${image_formats})
+# The shared tables are the floor: header-only, reaching nothing.
+set(forbidden_orb_tables orb_scene orb_film ${opencl} ${image_formats})
 set(forbidden_orb_scene orb_film ${opencl} ${image_formats})
 set(forbidden_orb_film orb_scene ${opencl} ${image_formats})
 set(forbidden_orb_kernels orb_scene orb_film orb_render ${image_formats})
@@ -48,6 +49,19 @@ foreach(library IN LISTS LIBRARIES)
     endif()
   endforeach()
 endforeach()
+# Below librender no source includes the kernels' folder: what those layers
+# share with the kernels is libtables/'s (orb/tables/). SOURCE_DIR and
+# BELOW_RENDER (folders of the source tree) come from tests/layers/CMakeLists.txt.
+foreach(folder IN LISTS BELOW_RENDER)
+  file(GLOB_RECURSE sources "${SOURCE_DIR}/${folder}/*.h" "${SOURCE_DIR}/${folder}/*.cpp")
+  foreach(source IN LISTS sources)
+    file(STRINGS "${source}" kernel_includes REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]orb/kernels/")
+    if(kernel_includes)
+      string(APPEND failures "\n  ${source} includes the kernels' folder: ${kernel_includes}")
+    endif()
+  endforeach()
+endforeach()
+
 if(failures)
   message(FATAL_ERROR "libraries reach what their layer must not:${failures}")
 endif()

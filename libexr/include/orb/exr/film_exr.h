@@ -15,7 +15,7 @@
 #include "orb/exr/camera_matrices.h"
 #include "orb/exr/passes.h"
 #include "orb/film/film.h"
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 
 namespace orb::exr {
 

@@ -13,8 +13,8 @@
  *     (librender/src/program_build.cpp, a hash of source and options)
  *     changes with every feature that changes.
  * Kernel files test the symbols (#if NAME) and define no defaults of their
- * own. Adding a feature is adding a row here (docs/rendering.md, "Kernel
- * features").
+ * own. Adding a feature is adding a row here (docs/design/kernel-features.md,
+ * "How the table is used").
  *
  * ORB_KERNEL_FEATURES(FEATURE): FEATURE(NAME, member, Type, default, meaning)
  *   NAME     the symbol the kernels read
@@ -24,14 +24,14 @@
  *            suffix), Token (a word of OpenCL C pasted as it is, such as an
  *            address space; std::string on the host)
  *   default  as both languages spell it (a Token: the word itself)
- *   meaning  one line, for readers (docs/rendering.md, "Kernel features")
+ *   meaning  one line, for readers (docs/design/kernel-features.md)
  *
  * Like film_channels.h this file is one text for both compilers: the OpenCL
  * program has it before device_types.h (kernels/CMakeLists.txt), where it
  * only checks the values; the host includes it as C++20. OpenCL C 1.2 has
  * no variadic macros, so every row has exactly five arguments. */
-#ifndef ORB_KERNELS_KERNEL_FEATURES_H
-#define ORB_KERNELS_KERNEL_FEATURES_H
+#ifndef ORB_TABLES_KERNEL_FEATURES_H
+#define ORB_TABLES_KERNEL_FEATURES_H
 
 #define ORB_KERNEL_FEATURES(FEATURE)                                                                                  \
     FEATURE(ORB_SCENE_SPACE, scene_space, Token, __constant,                                                          \
@@ -218,4 +218,4 @@ inline std::string kernel_feature_defaults()
 
 #endif
 
-#endif /* ORB_KERNELS_KERNEL_FEATURES_H */
+#endif /* ORB_TABLES_KERNEL_FEATURES_H */

@@ -5,7 +5,8 @@
  * The host compiles this file as C++20 (namespace orb::device). The OpenCL C
  * 1.2 program starts with it: kernels/CMakeLists.txt lists it first among the
  * kernel files, which are concatenated into one program (embedded, from
- * --kernel-dir, or from <prefix>/share/orb/kernels, which mirrors kernels/).
+ * --kernel-dir, or from <prefix>/share/orb/kernels, which holds this file as
+ * include/orb/tables/device_types.h).
  * It therefore includes nothing on the OpenCL side (film_channels.h and
  * material_kinds.h, which the host includes below, come before it in the
  * program).
@@ -23,10 +24,10 @@
  *    file): the host static_asserts them, and tests/render/device_layout_test.cpp
  *    has the device compiler report the same figures.
  *
- * docs/rendering.md ("Host and device layout") says how to add a field or a
+ * docs/design/host-and-device-layout.md says how to add a field or a
  * buffer. */
-#ifndef ORB_KERNELS_DEVICE_TYPES_H
-#define ORB_KERNELS_DEVICE_TYPES_H
+#ifndef ORB_TABLES_DEVICE_TYPES_H
+#define ORB_TABLES_DEVICE_TYPES_H
 
 #ifdef __OPENCL_VERSION__
 
@@ -40,8 +41,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "orb/kernels/film_channels.h"
-#include "orb/kernels/material_kinds.h"
+#include "orb/tables/film_channels.h"
+#include "orb/tables/material_kinds.h"
 
 namespace orb::device {
 
@@ -370,4 +371,4 @@ ORB_DEVICE_LAYOUT(ORB_CHECK_SIZE, ORB_CHECK_FIELD)
 #undef ORB_ENUM
 #undef ORB_ENUMERATOR
 
-#endif /* ORB_KERNELS_DEVICE_TYPES_H */
+#endif /* ORB_TABLES_DEVICE_TYPES_H */

@@ -63,8 +63,8 @@
  *                 the length channel)
  *
  * docs/rendering.md ("The film's channels") says what each one means. */
-#ifndef ORB_KERNELS_FILM_CHANNELS_H
-#define ORB_KERNELS_FILM_CHANNELS_H
+#ifndef ORB_TABLES_FILM_CHANNELS_H
+#define ORB_TABLES_FILM_CHANNELS_H
 
 #define ORB_FILM_LAYERS(LAYER)          \
     LAYER(Beauty, beauty, Color)        \
@@ -361,4 +361,4 @@ constexpr std::uint32_t channels_for(const Layers& layers)
 
 #endif
 
-#endif /* ORB_KERNELS_FILM_CHANNELS_H */
+#endif /* ORB_TABLES_FILM_CHANNELS_H */

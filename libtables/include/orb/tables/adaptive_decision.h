@@ -9,8 +9,8 @@
  * the host includes it as C++20 (namespace orb::device). The decision
  * computes in double precision on both sides (the device needs
  * cl_khr_fp64), so that the device decides exactly as the host would. */
-#ifndef ORB_KERNELS_ADAPTIVE_DECISION_H
-#define ORB_KERNELS_ADAPTIVE_DECISION_H
+#ifndef ORB_TABLES_ADAPTIVE_DECISION_H
+#define ORB_TABLES_ADAPTIVE_DECISION_H
 
 /* relMSE's floor in the denominator, (B - A)^2 / (A^2 + epsilon) (Rousselle
  * et al. 2011): below it an error counts absolutely, so dark pixels need no
@@ -52,4 +52,4 @@ static_assert((ORB_DECISION_GROUP & (ORB_DECISION_GROUP - 1)) == 0, "ORB_DECISIO
 }  // namespace orb::device
 #endif
 
-#endif /* ORB_KERNELS_ADAPTIVE_DECISION_H */
+#endif /* ORB_TABLES_ADAPTIVE_DECISION_H */

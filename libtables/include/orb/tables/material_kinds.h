@@ -22,8 +22,8 @@
  *
  * Plain C preprocessor text: the host includes it as C++20, and the OpenCL
  * program has it before device_types.h. */
-#ifndef ORB_KERNELS_MATERIAL_KINDS_H
-#define ORB_KERNELS_MATERIAL_KINDS_H
+#ifndef ORB_TABLES_MATERIAL_KINDS_H
+#define ORB_TABLES_MATERIAL_KINDS_H
 
 #define ORB_CASTER_NEVER(roughness, metallic) 0
 #define ORB_CASTER_ALWAYS(roughness, metallic) 1
