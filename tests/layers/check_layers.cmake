@@ -9,16 +9,19 @@ set(opencl orb_kernels orb_render OpenCL::OpenCL)
 set(image_formats orb_exr orb_image OpenEXR::OpenEXR OpenEXR::OpenEXRCore OpenImageIO::OpenImageIO
     OpenColorIO::OpenColorIO)
 # The shared tables are the floor: header-only, reaching nothing.
-set(forbidden_orb_tables orb_scene orb_film ${opencl} ${image_formats})
-set(forbidden_orb_scene orb_film ${opencl} ${image_formats})
-set(forbidden_orb_film orb_scene ${opencl} ${image_formats})
-set(forbidden_orb_kernels orb_scene orb_film orb_render ${image_formats})
-set(forbidden_orb_render ${image_formats})
-set(forbidden_orb_exr ${opencl} orb_image OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
+set(forbidden_orb_tables orb_scene orb_import orb_film ${opencl} ${image_formats})
+# The scene model reads no foreign format: its one parser is nlohmann_json.
+set(forbidden_orb_scene orb_import orb_film TinyGLTF::TinyGLTF CLI11::CLI11 ${opencl} ${image_formats})
+set(forbidden_orb_import orb_film ${opencl} ${image_formats})
+set(forbidden_orb_film orb_scene orb_import ${opencl} ${image_formats})
+set(forbidden_orb_kernels orb_scene orb_import orb_film orb_render ${image_formats})
+# The renderer takes scenes made already: it reads no file format.
+set(forbidden_orb_render orb_import ${image_formats})
+set(forbidden_orb_exr ${opencl} orb_import orb_image OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
 set(forbidden_orb_image ${opencl} orb_exr)
 # The denoiser reads and writes EXR through OpenEXR and loads OIDN at run time:
 # no OpenCL, no OpenImageIO or OpenColorIO, and it links no OIDN.
-set(forbidden_orb_denoise ${opencl} orb_image OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
+set(forbidden_orb_denoise ${opencl} orb_import orb_image OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
 
 # Everything `library` reaches: its links and, for Orb's own libraries, theirs.
 function(reach library out)

@@ -16,7 +16,7 @@
 #include "orb/render/renderer.h"
 #include "orb/request/request_settings.h"
 #include "orb/scene/scene.h"
-#include "orb/scene/sphere_styling.h"
+#include "orb/import/sphere_styling.h"
 #include "render_options.h"
 
 namespace orb::render_cli {
