@@ -130,6 +130,7 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
         if (!m.adaptive_stop)
             fail(path, std::string(attr::kAdaptiveStop) + " must be noise or error, got '" + stop->value() + "'");
     }
+    if (const auto* kernel = header.findTypedAttribute<Imf::StringAttribute>(attr::kKernel)) m.kernel = kernel->value();
     if (const auto* frame = header.findTypedAttribute<Imf::IntAttribute>(attr::kFrame)) {
         const auto& fps = required<Imf::DoubleAttribute>(header, attr::kFps, path);
         m.frame = FrameInfo{frame->value(), fps.value()};

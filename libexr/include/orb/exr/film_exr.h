@@ -70,6 +70,10 @@ struct ExrMetadata {
     // estimate below the target error, before orb:targetSpp; it is
     // finished (render_request.h). Absent: it did not (yet).
     std::optional<AdaptiveStop> adaptive_stop;
+    // orb:kernel: which kernels rendered it (orb/render/kernel_identity.h),
+    // so that the samples of different kernels are never combined. Empty:
+    // not known (a file an older Orb wrote, or a tool that renders nothing).
+    std::string kernel;
 };
 
 // Only lossless compressions: a resumed or merged render rebuilds the
