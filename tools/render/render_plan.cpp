@@ -16,25 +16,20 @@
 #include "orb/render/kernel_identity.h"
 #include "orb/request/scene_input.h"
 #include "orb/scene/error.h"
+#include "orb/tables/render_names.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::render_cli {
 namespace {
 
-const char* mode_name(render::IntegratorMode mode) {
-    return mode == render::IntegratorMode::Direct ? "direct" : "global";
-}
-
+// The names come from the command line or a film's header, both checked
+// against the same tables (orb/tables/render_names.h) before they get here.
 render::IntegratorMode parse_mode(const std::string& name) {
-    return name == "direct" ? render::IntegratorMode::Direct : render::IntegratorMode::Global;
-}
-
-const char* sampler_name(render::SamplerKind sampler) {
-    return sampler == render::SamplerKind::Independent ? "independent" : "sobol";
+    return device::value_in(device::kIntegratorModeNames, name).value();
 }
 
 render::SamplerKind parse_sampler(const std::string& name) {
-    return name == "independent" ? render::SamplerKind::Independent : render::SamplerKind::Sobol;
+    return device::value_in(device::kSamplerNames, name).value();
 }
 
 // A setting the resumed file fixes may be repeated on the command line, but
@@ -332,8 +327,8 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.target_spp = plan.target_spp;
     m.seed = plan.config.seed;
     m.max_depth = plan.config.max_depth;
-    m.mode = mode_name(plan.config.mode);
-    m.sampler = sampler_name(plan.config.sampler);
+    m.mode = device::name_in(device::kIntegratorModeNames, plan.config.mode);
+    m.sampler = device::name_in(device::kSamplerNames, plan.config.sampler);
     m.scene_file = plan.scene_label;
     m.scene_hash = plan.scene_hash;
     m.kernel = plan.kernel;
