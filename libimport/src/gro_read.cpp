@@ -6,7 +6,6 @@
 #include <cctype>
 
 #include "orb/scene/error.h"
-#include "import_option_groups.h"
 #include "importer_entries.h"
 #include "text_start.h"
 #include "text_trajectory.h"
@@ -155,6 +154,8 @@ AtomFrame read_gro_frame(LineReader& lines, const std::string& source) {
     return frame;
 }
 
+constexpr TextFormat kGroFormat{"gro", skip_gro_frame, read_gro_frame};
+
 }  // namespace
 
 }  // namespace orb::molecular
@@ -165,7 +166,7 @@ namespace {
 ContentMatch recognise_gro(std::string_view bytes) {
     // A title, a count alone, then fixed-column atoms with decimal points at
     // the coordinates' places.
-    const std::string_view text = skip_bom_and_space(bytes.substr(0, kRecognisedHead));
+    const std::string_view text = recognised_head(bytes);
     const std::vector<std::string_view> lines = head_lines(text, 3);
     if (lines.size() < 3) return ContentMatch::No;
     const std::vector<std::string_view> second = molecular::split_fields(lines[1]);
@@ -174,23 +175,15 @@ ContentMatch recognise_gro(std::string_view bytes) {
     return gro ? ContentMatch::Yes : ContentMatch::No;
 }
 
-std::unique_ptr<FrameSource> open_gro_frames(const FrameInput& input, const MolecularImportOptions& options) {
-    static const molecular::TextFormat format{"gro", molecular::skip_gro_frame, molecular::read_gro_frame};
-    return molecular::open_text_trajectory(format, input, options);
-}
-
 }  // namespace
 
 const SceneImporter& gro_importer() {
-    static const SceneImporter importer{
+    static const SceneImporter importer = molecular::text_trajectory_importer<molecular::kGroFormat>({
         .name = "gro",
         .description = "GROMACS .gro: an atom per sphere, each frame a frame (nm become angstrom)",
         .extensions = {".gro"},
         .extension_decides = true,
-        .recognise = recognise_gro,
-        .open_frames = open_gro_frames,
-        .reads_series = true,
-        .options = &kMolecularOptions};
+        .recognise = recognise_gro});
     return importer;
 }
 

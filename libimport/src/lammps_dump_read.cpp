@@ -8,7 +8,6 @@
 #include <unordered_map>
 
 #include "orb/scene/error.h"
-#include "import_option_groups.h"
 #include "importer_entries.h"
 #include "text_start.h"
 #include "text_trajectory.h"
@@ -255,6 +254,8 @@ AtomFrame read_dump_frame(LineReader& lines, const std::string& source) {
     return frame;
 }
 
+constexpr TextFormat kLammpsDumpFormat{"lammps-dump", skip_dump_frame, read_dump_frame};
+
 }  // namespace
 
 }  // namespace orb::molecular
@@ -263,28 +264,20 @@ namespace orb::detail {
 namespace {
 
 ContentMatch recognise_lammps_dump(std::string_view bytes) {
-    const std::string_view text = skip_bom_and_space(bytes.substr(0, kRecognisedHead));
+    const std::string_view text = recognised_head(bytes);
     return first_line(text).starts_with("ITEM:") ? ContentMatch::Yes : ContentMatch::No;
-}
-
-std::unique_ptr<FrameSource> open_lammps_dump_frames(const FrameInput& input, const MolecularImportOptions& options) {
-    static const molecular::TextFormat format{"lammps-dump", molecular::skip_dump_frame, molecular::read_dump_frame};
-    return molecular::open_text_trajectory(format, input, options);
 }
 
 }  // namespace
 
 const SceneImporter& lammps_dump_importer() {
-    static const SceneImporter importer{
+    static const SceneImporter importer = molecular::text_trajectory_importer<molecular::kLammpsDumpFormat>({
         .name = "lammps-dump",
         .aliases = {"lammpstrj"},
         .description = "LAMMPS text dump (atom or custom style): a particle per sphere, each timestep a frame",
         .extensions = {".lammpstrj", ".dump"},
         .extension_decides = true,
-        .recognise = recognise_lammps_dump,
-        .open_frames = open_lammps_dump_frames,
-        .reads_series = true,
-        .options = &kMolecularOptions};
+        .recognise = recognise_lammps_dump});
     return importer;
 }
 

@@ -20,12 +20,12 @@ bool is_pdb_record(std::string_view line) {
 }
 
 ContentMatch recognise_pdb(std::string_view bytes) {
-    const std::string_view text = skip_bom_and_space(bytes.substr(0, kRecognisedHead));
+    const std::string_view text = recognised_head(bytes);
     return !text.empty() && is_pdb_record(first_line(text)) ? ContentMatch::Yes : ContentMatch::No;
 }
 
 ContentMatch recognise_mmcif(std::string_view bytes) {
-    const std::string_view text = skip_bom_and_space(bytes.substr(0, kRecognisedHead));
+    const std::string_view text = recognised_head(bytes);
     return first_line(text).starts_with("data_") ? ContentMatch::Yes : ContentMatch::No;
 }
 

@@ -19,6 +19,12 @@ inline std::string_view skip_bom_and_space(std::string_view bytes) {
     return bytes;
 }
 
+// The start of an input as recognising reads it: its first kRecognisedHead
+// bytes after a byte-order mark and leading white space.
+inline std::string_view recognised_head(std::string_view bytes) {
+    return skip_bom_and_space(bytes.substr(0, kRecognisedHead));
+}
+
 // The first line of `text`, without its line end.
 inline std::string_view first_line(std::string_view text) {
     std::string_view line = text.substr(0, text.find('\n'));

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "atom_frame.h"
+#include "import_option_groups.h"
 #include "line_reader.h"
 #include "orb/import/importers.h"
 #include "orb/import/molecular.h"
@@ -29,5 +30,21 @@ struct TextFormat {
 // (xyz_read.cpp, lammps_dump_read.cpp, gro_read.cpp) opens its files with it.
 std::unique_ptr<FrameSource> open_text_trajectory(const TextFormat& format, const FrameInput& input,
                                                   const MolecularImportOptions& options);
+
+template <const TextFormat& Format>
+std::unique_ptr<FrameSource> open_text_frames(const FrameInput& input, const MolecularImportOptions& options) {
+    return open_text_trajectory(Format, input, options);
+}
+
+// A text trajectory format's importer entry: `entry` (its names, its
+// recognising) read frame by frame through Format, a numbered series of its
+// files one trajectory, with the molecular options.
+template <const TextFormat& Format>
+SceneImporter text_trajectory_importer(SceneImporter entry) {
+    entry.open_frames = open_text_frames<Format>;
+    entry.reads_series = true;
+    entry.options = &detail::kMolecularOptions;
+    return entry;
+}
 
 }  // namespace orb::molecular

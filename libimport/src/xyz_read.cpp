@@ -8,7 +8,6 @@
 #include <optional>
 
 #include "orb/scene/error.h"
-#include "import_option_groups.h"
 #include "importer_entries.h"
 #include "text_start.h"
 #include "text_trajectory.h"
@@ -240,6 +239,8 @@ AtomFrame read_xyz_frame(LineReader& lines, const std::string& source) {
     return frame;
 }
 
+constexpr TextFormat kXyzFormat{"xyz", skip_xyz_frame, read_xyz_frame};
+
 }  // namespace
 
 }  // namespace orb::molecular
@@ -250,7 +251,7 @@ namespace {
 ContentMatch recognise_xyz(std::string_view bytes) {
     // A count alone on the first line (extra words are tolerated), then the
     // comment line, then (when there is one) an atom: a name and three numbers.
-    const std::string_view text = skip_bom_and_space(bytes.substr(0, kRecognisedHead));
+    const std::string_view text = recognised_head(bytes);
     const std::vector<std::string_view> lines = head_lines(text, 3);
     if (lines.size() < 2) return ContentMatch::No;
     const std::vector<std::string_view> count = molecular::split_fields(lines[0]);
@@ -264,24 +265,16 @@ ContentMatch recognise_xyz(std::string_view bytes) {
     return is_atom ? ContentMatch::Yes : ContentMatch::No;
 }
 
-std::unique_ptr<FrameSource> open_xyz_frames(const FrameInput& input, const MolecularImportOptions& options) {
-    static const molecular::TextFormat format{"xyz", molecular::skip_xyz_frame, molecular::read_xyz_frame};
-    return molecular::open_text_trajectory(format, input, options);
-}
-
 }  // namespace
 
 const SceneImporter& xyz_importer() {
-    static const SceneImporter importer{
+    static const SceneImporter importer = molecular::text_trajectory_importer<molecular::kXyzFormat>({
         .name = "xyz",
         .aliases = {"extxyz"},
         .description = "XYZ or extended XYZ: an atom per sphere, each frame of a trajectory a frame",
         .extensions = {".xyz", ".extxyz"},
         .extension_decides = true,
-        .recognise = recognise_xyz,
-        .open_frames = open_xyz_frames,
-        .reads_series = true,
-        .options = &kMolecularOptions};
+        .recognise = recognise_xyz});
     return importer;
 }
 
