@@ -15,11 +15,13 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <span>
 #include <thread>
 #include <vector>
 
 #include "denoise_inputs.h"
 #include "exr_memory_streams.h"
+#include "orb/exr/codec_threads.h"
 #include "orb/tables/film_channels.h"
 #include "orb/scene/error.h"
 
@@ -35,7 +37,7 @@ constexpr long long kMaxPixels = 1LL << 28;
 
 // OpenEXR decodes and encodes blocks on this many threads: a 1920x1080 frame
 // of the guided layers takes seconds on one.
-int codec_threads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+int codec_threads() { return std::max(1, exr::use_all_cores_for_codecs()); }
 
 // Every channel is kept in 4 bytes a pixel whatever its type, read and
 // written back in that type, so the input's values travel bit for bit.
@@ -51,30 +53,28 @@ const Plane* find(const std::vector<Plane>& planes, const char* name) {
     return nullptr;
 }
 
-// The three channels interleaved as floats; every value must be finite.
-std::vector<float> interleave(const std::vector<Plane>& planes, const Names& names, int width,
-                              const std::string& source, const char* layer) {
+// The layer's three channels interleaved into `out`; every value must be finite.
+void interleave(const std::vector<Plane>& planes, const Names& names, int width, const std::string& source,
+                const char* layer, float* out) {
     const std::size_t pixels = static_cast<std::size_t>(width) * (planes.front().bytes.size() / 4 / width);
-    std::vector<float> rgb(pixels * 3);
-    for (int c = 0; c < 3; ++c) {
-        const Plane& plane = *find(planes, names[c]);
-        if (plane.type == Imf::UINT)
-            throw InputError(source + ": channel " + plane.name + " of the " + layer +
+    std::array<const Plane*, 3> channels{};
+    for (std::size_t c = 0; c < 3; ++c) {
+        channels[c] = find(planes, names[c]);
+        if (channels[c]->type == Imf::UINT)
+            throw InputError(source + ": channel " + channels[c]->name + " of the " + layer +
                              " layer holds integers (UINT), expected HALF or FLOAT");
-        for (std::size_t i = 0; i < pixels; ++i) {
-            float value = 0;
-            if (plane.type == Imf::FLOAT) {
-                std::memcpy(&value, plane.bytes.data() + 4 * i, sizeof value);
-            } else {
-                Imath::half h;
-                std::memcpy(&h, plane.bytes.data() + 4 * i, sizeof h);
-                value = h;
-            }
-            detail::require_finite(value, i, width, plane.name, layer, source);
-            rgb[3 * i + c] = value;
-        }
     }
-    return rgb;
+    detail::interleave_into(out, pixels, width, names, layer, source, [&](int c, std::size_t i) {
+        const Plane& plane = *channels[static_cast<std::size_t>(c)];
+        if (plane.type == Imf::FLOAT) {
+            float value = 0;
+            std::memcpy(&value, plane.bytes.data() + 4 * i, sizeof value);
+            return value;
+        }
+        Imath::half h;
+        std::memcpy(&h, plane.bytes.data() + 4 * i, sizeof h);
+        return static_cast<float>(h);
+    });
 }
 
 struct DecodedImage {
@@ -133,7 +133,7 @@ DecodedImage decode(std::string_view exr, const std::string& source) {
     }
 }
 
-std::string encode(DecodedImage& image, const std::vector<float>& denoised, const std::string& description) {
+std::string encode(DecodedImage& image, std::span<const float> denoised, const std::string& description) {
     const Names names = denoised_names();
     const Imf::PixelType type = find(image.planes, names_of(film::Channel::radiance)[0])->type;
     const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
@@ -179,11 +179,11 @@ std::string encode(DecodedImage& image, const std::vector<float>& denoised, cons
 std::string add_denoised_layer(std::string_view exr, const std::string& source, Denoiser& denoiser) {
     DecodedImage image = decode(exr, source);
     detail::require_layers([&](const char* name) { return find(image.planes, name) != nullptr; }, source);
-    const std::vector<float> color = interleave(image.planes, names_of(film::Channel::radiance), image.width, source, "beauty");
-    const std::vector<float> albedo = interleave(image.planes, names_of(film::Channel::albedo), image.width, source, "albedo");
-    const std::vector<float> normal = interleave(image.planes, names_of(film::Channel::normal), image.width, source, "normal");
-    const std::vector<float> denoised =
-        denoiser.denoise({image.width, image.height, color.data(), albedo.data(), normal.data()});
+    Denoiser::Job job = denoiser.begin(image.width, image.height);
+    interleave(image.planes, names_of(film::Channel::radiance), image.width, source, "beauty", job.color());
+    interleave(image.planes, names_of(film::Channel::albedo), image.width, source, "albedo", job.albedo());
+    interleave(image.planes, names_of(film::Channel::normal), image.width, source, "normal", job.normal());
+    const std::span<const float> denoised = job.run();
     try {
         return encode(image, denoised, denoiser.description());
     } catch (const std::exception& e) {

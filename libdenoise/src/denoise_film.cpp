@@ -1,40 +1,52 @@
 #include "orb/denoise/denoise_film.h"
 
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <span>
+
 #include "denoise_inputs.h"
 #include "orb/denoise/denoise_exr.h"
 
 namespace orb::denoise {
 namespace {
 
-// The three channels interleaved, as a reader of the file gets them back,
-// each value finite.
-std::vector<float> interleave(const exr::StoredImage& image, const detail::Names& names, const std::string& source,
-                              const char* layer) {
+// The layer's three channels interleaved into `out`, as a reader of the
+// file gets them back, each value finite.
+void interleave(const exr::StoredImage& image, film::Channel layer_channel, const std::string& source,
+                const char* layer, float* out) {
+    const detail::Names names = detail::names_of(layer_channel);
+    const std::array<const exr::StoredImage::Channel*, 3> channels{image.find(names[0]), image.find(names[1]),
+                                                                   image.find(names[2])};
     const std::size_t pixels = static_cast<std::size_t>(image.width()) * static_cast<std::size_t>(image.height());
-    std::vector<float> rgb(pixels * 3);
-    for (std::size_t c = 0; c < 3; ++c) {
-        const exr::StoredImage::Channel& channel = *image.find(names[c]);
-        for (std::size_t i = 0; i < pixels; ++i) {
-            const float value = exr::StoredImage::value(channel, i);
-            detail::require_finite(value, i, image.width(), std::string(channel.name), layer, source);
-            rgb[3 * i + c] = value;
-        }
-    }
-    return rgb;
+    detail::interleave_into(out, pixels, image.width(), names, layer, source, [&](int c, std::size_t i) {
+        return exr::StoredImage::value(*channels[static_cast<std::size_t>(c)], i);
+    });
 }
 
 }  // namespace
 
-exr::PostLayerPlanes denoised_post_layer(Denoiser& denoiser, const std::string& source) {
+exr::PostLayerPlanes denoised_post_layer(Denoiser& denoiser, const std::string& source,
+                                         std::shared_ptr<DenoiseTimes> times) {
     exr::PostLayerPlanes layer;
     layer.layer = film::PostLayer::Denoised;
     layer.attributes = {{kDenoisedAttribute, denoiser.description()}};
-    layer.compute = [&denoiser, source](const exr::StoredImage& image) {
+    layer.compute = [&denoiser, source, times](const exr::StoredImage& image, std::span<const std::span<float>> out) {
+        const auto start = std::chrono::steady_clock::now();
         detail::require_layers([&](const char* name) { return image.find(name) != nullptr; }, source);
-        const std::vector<float> color = interleave(image, detail::names_of(film::Channel::radiance), source, "beauty");
-        const std::vector<float> albedo = interleave(image, detail::names_of(film::Channel::albedo), source, "albedo");
-        const std::vector<float> normal = interleave(image, detail::names_of(film::Channel::normal), source, "normal");
-        return denoiser.denoise({image.width(), image.height(), color.data(), albedo.data(), normal.data()});
+        Denoiser::Job job = denoiser.begin(image.width(), image.height());
+        interleave(image, film::Channel::radiance, source, "beauty", job.color());
+        interleave(image, film::Channel::albedo, source, "albedo", job.albedo());
+        interleave(image, film::Channel::normal, source, "normal", job.normal());
+        const std::span<const float> denoised = job.run();
+        // Back to the encoder's planes, one per channel, on every core.
+        film::for_each_block(denoised.size() / 3, [&](std::size_t, std::size_t first, std::size_t end) {
+            for (std::size_t c = 0; c < out.size(); ++c)
+                for (std::size_t i = first; i < end; ++i) out[c][i] = denoised[3 * i + c];
+        });
+        if (times)
+            *times = {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                      job.setup_seconds(), job.filter_seconds()};
     };
     return layer;
 }

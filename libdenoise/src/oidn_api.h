@@ -37,6 +37,11 @@ enum Error : int {
 // OIDNFormat: 3 floats per pixel.
 enum Format : int { kFormatFloat3 = 3 };
 
+// OIDNStorage: where a buffer lives. Host memory is pinned (page-locked)
+// for a GPU device, so copies between it and the device run at the bus's
+// speed and asynchronously.
+enum Storage : int { kStorageUndefined = 0, kStorageHost = 1, kStorageDevice = 2, kStorageManaged = 3 };
+
 // OIDNQuality
 enum Quality : int { kQualityDefault = 0, kQualityFast = 4, kQualityBalanced = 5, kQualityHigh = 6 };
 
@@ -53,6 +58,11 @@ struct Api {
     void (*oidnWriteBuffer)(Buffer buffer, std::size_t byte_offset, std::size_t byte_size, const void* source);
     void (*oidnReadBuffer)(Buffer buffer, std::size_t byte_offset, std::size_t byte_size, void* destination);
     void (*oidnReleaseBuffer)(Buffer buffer);
+    Buffer (*oidnNewBufferWithStorage)(Device device, std::size_t byte_size, Storage storage);
+    void* (*oidnGetBufferData)(Buffer buffer);
+    void (*oidnWriteBufferAsync)(Buffer buffer, std::size_t byte_offset, std::size_t byte_size, const void* source);
+    void (*oidnReadBufferAsync)(Buffer buffer, std::size_t byte_offset, std::size_t byte_size, void* destination);
+    void (*oidnSyncDevice)(Device device);
 
     Filter (*oidnNewFilter)(Device device, const char* type);
     void (*oidnSetFilterImage)(Filter filter, const char* name, Buffer buffer, Format format, std::size_t width,
@@ -62,6 +72,7 @@ struct Api {
     void (*oidnSetFilterInt)(Filter filter, const char* name, int value);
     void (*oidnCommitFilter)(Filter filter);
     void (*oidnExecuteFilter)(Filter filter);
+    void (*oidnExecuteFilterAsync)(Filter filter);
     void (*oidnReleaseFilter)(Filter filter);
 };
 

@@ -60,12 +60,18 @@ bool bind_all(void* handle, oidn::Api& api, std::string& missing) {
     ORB_BIND(oidnWriteBuffer);
     ORB_BIND(oidnReadBuffer);
     ORB_BIND(oidnReleaseBuffer);
+    ORB_BIND(oidnNewBufferWithStorage);
+    ORB_BIND(oidnGetBufferData);
+    ORB_BIND(oidnWriteBufferAsync);
+    ORB_BIND(oidnReadBufferAsync);
+    ORB_BIND(oidnSyncDevice);
     ORB_BIND(oidnNewFilter);
     ORB_BIND(oidnSetFilterImage);
     ORB_BIND(oidnSetFilterBool);
     ORB_BIND(oidnSetFilterInt);
     ORB_BIND(oidnCommitFilter);
     ORB_BIND(oidnExecuteFilter);
+    ORB_BIND(oidnExecuteFilterAsync);
     ORB_BIND(oidnReleaseFilter);
 #undef ORB_BIND
     return ok;

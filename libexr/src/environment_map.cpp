@@ -13,6 +13,7 @@
 #include <fstream>
 #include <memory>
 
+#include "orb/exr/codec_threads.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 
@@ -50,7 +51,7 @@ std::vector<std::string> colour_channels(const Imf::Header& header, const std::s
 EnvironmentImage read_environment_exr(const std::string& path) {
     check_readable(path);
     try {
-        Imf::InputFile file(path.c_str());
+        Imf::InputFile file(path.c_str(), use_all_cores_for_codecs());
         const Imf::Header& header = file.header();
         if (Imf::hasEnvmap(header) && Imf::envmap(header) == Imf::ENVMAP_CUBE)
             fail(path, "is a cube map (envmap attribute); Orb reads latitude-longitude maps");

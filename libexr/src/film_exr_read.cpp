@@ -20,6 +20,7 @@
 #include "exr_attributes.h"
 #include "film_channels.h"
 #include "orb/exr/film_exr.h"
+#include "orb/exr/codec_threads.h"
 #include "orb/scene/error.h"
 #include "orb/tables/render_names.h"
 
@@ -190,7 +191,7 @@ ExrFilmSummary read_summary(const Imf::Header& header, const std::string& path) 
 ExrFilmSummary read_film_exr_header(const std::string& path) {
     check_readable(path);
     try {
-        Imf::InputFile file(path.c_str());
+        Imf::InputFile file(path.c_str(), use_all_cores_for_codecs());
         ExrFilmSummary summary = read_summary(file.header(), path);
         if (!file.isComplete()) fail(path, "truncated EXR (some scanlines are missing)");
         return summary;
@@ -204,7 +205,7 @@ ExrFilmSummary read_film_exr_header(const std::string& path) {
 ExrFilmSummary read_film_exr_summary(const std::string& path) {
     check_readable(path);
     try {
-        Imf::InputFile file(path.c_str());
+        Imf::InputFile file(path.c_str(), use_all_cores_for_codecs());
         ExrFilmSummary summary = read_summary(file.header(), path);
         if (!file.isComplete()) fail(path, "truncated EXR (some scanlines are missing)");
         // isComplete() only sees the offset table: a file cut short or
@@ -231,7 +232,7 @@ ExrFilmSummary read_film_exr_summary(const std::string& path) {
 ExrFilm read_film_exr(const std::string& path) {
     check_readable(path);
     try {
-        Imf::InputFile file(path.c_str());
+        Imf::InputFile file(path.c_str(), use_all_cores_for_codecs());
         const Imf::Header& header = file.header();
         const ExrFilmSummary summary = read_summary(header, path);
         const long long width = summary.width, height = summary.height;

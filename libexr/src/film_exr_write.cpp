@@ -25,6 +25,7 @@
 #include "exr_scanline_writer.h"
 #include "film_channels.h"
 #include "orb/exr/film_exr.h"
+#include "orb/exr/codec_threads.h"
 
 namespace orb::exr {
 namespace {
@@ -95,16 +96,6 @@ private:
     std::size_t& size_;
     std::uint64_t position_ = 0;
 };
-
-// OpenEXR compresses scanline blocks on its own thread pool; once is enough.
-void use_all_cores_for_compression() {
-    static const bool configured = [] {
-        const unsigned cores = std::thread::hardware_concurrency();
-        Imf::setGlobalThreadCount(cores > 1 ? static_cast<int>(cores) : 0);
-        return true;
-    }();
-    (void)configured;
-}
 
 // Fills every pixel of `planes` on every core: a post layer is computed from
 // the whole image before any block is written.
@@ -218,16 +209,10 @@ void ExrEncoder::add_post_layers(const Film& film, bool half, std::span<const Po
     for (const PostLayerPlanes& layer : post) {
         const film::PostLayerInfo& info = film::info(layer.layer);
         const auto count = static_cast<std::size_t>(info.exr_name_count);
-        const std::vector<float> values = layer.compute(stored);
-        if (values.size() != pixels * count)
-            throw std::invalid_argument(std::string("the post layer ") + info.name + " has " +
-                                        std::to_string(values.size()) + " values, expected " +
-                                        std::to_string(pixels * count));
-        for (std::size_t c = 0; c < count; ++c, ++next) {
-            const std::span<float> plane(storage.data() + next * pixels, pixels);
-            for (std::size_t i = 0; i < pixels; ++i) plane[i] = values[i * count + c];
-            planes.push_back({info.exr_names[c], false, false, plane});
-        }
+        std::vector<std::span<float>> channels_out;
+        for (std::size_t c = 0; c < count; ++c) channels_out.emplace_back(storage.data() + (next + c) * pixels, pixels);
+        layer.compute(stored, channels_out);
+        for (std::size_t c = 0; c < count; ++c, ++next) planes.push_back({info.exr_names[c], false, false, channels_out[c]});
         for (const auto& [name, value] : layer.attributes) attributes.push_back({name, value});
     }
 }
@@ -259,7 +244,7 @@ void ExrEncoder::encode(const Film& film, const ExrMetadata& metadata, const Exr
     }
 
     // RLE and PIZ through OpenEXR's C++ writer, which compresses blocks on its thread pool.
-    use_all_cores_for_compression();
+    use_all_cores_for_codecs();
     if (!filled) detail::fill_planes(film, set, planes, 0, pixels);
     Imf::Header header(film.width, film.height);
     header.compression() = to_imf(options.compression);

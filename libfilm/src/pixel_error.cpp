@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "parallel_blocks.h"
+#include "orb/film/parallel_blocks.h"
 
 namespace orb::film {
 
@@ -73,7 +73,7 @@ std::vector<double> pixel_relmse(const Film& film)
     const std::size_t pixels = film.pixel_count();
     std::vector<double> errors(pixels);
     // Every pixel on its own, so the cores share the image in blocks.
-    detail::for_each_block(pixels, [&](std::size_t, std::size_t first, std::size_t end) {
+    for_each_block(pixels, [&](std::size_t, std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) errors[i] = pixel_relmse(film, i);
     });
     return errors;
@@ -99,7 +99,7 @@ double frame_relmse(const std::vector<double>& pixel_errors)
     if (pixel_errors.empty()) return 0;
     const std::size_t groups = (pixel_errors.size() + kGroup - 1) / kGroup;
     std::vector<double> group_sums(groups);
-    detail::for_each_block(groups, [&](std::size_t, std::size_t first, std::size_t end) {
+    for_each_block(groups, [&](std::size_t, std::size_t first, std::size_t end) {
         std::array<double, kGroup> values;
         for (std::size_t g = first; g < end; ++g) {
             for (std::size_t l = 0; l < kGroup; ++l) {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "parallel_blocks.h"
+#include "orb/film/parallel_blocks.h"
 
 namespace orb::film {
 
@@ -40,8 +40,8 @@ std::vector<std::uint32_t> pixels_still_sampling(const std::vector<double>& pixe
     };
     for (std::uint32_t pixel : candidates)
         if (pixel >= pixels) throw std::invalid_argument("pixels_still_sampling: a candidate outside the image");
-    std::vector<std::vector<std::uint32_t>> kept_by_block(detail::block_count(candidates.size()));
-    detail::for_each_block(candidates.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
+    std::vector<std::vector<std::uint32_t>> kept_by_block(block_count(candidates.size()));
+    for_each_block(candidates.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
         keep_of(first, end, kept_by_block[block]);
     });
     std::vector<std::uint32_t> kept;

@@ -28,7 +28,7 @@ int nvidia_register_cap(const cl::Device& device, const SceneLayout& scene)
     const std::string extensions = device.getInfo<CL_DEVICE_EXTENSIONS>();
     if (extensions.find("cl_nv_compiler_options") == std::string::npos) return 0;
     if (scene.counts.bvh_node_count > 0) return 64;
-    return scene.counts.packet_count <= 2 ? 96 : 72;
+    return scene.counts.packet_count <= 2 ? 80 : 72;
 }
 
 // The camera paths per work-item of render_pass (ORB_LANES, kernels/lanes.cl)

@@ -18,6 +18,7 @@
 #include <iterator>
 #include <limits>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -158,9 +159,13 @@ TEST(DenoisedPostLayer, RefusesMissingLayersAndValuesThatAreNotFinite)
         for (std::size_t c = 0; c < channels; ++c) list.push_back({kGuided[c], planes[c], false});
         return exr::StoredImage(width, height, list);
     };
-    EXPECT_EQ(layer.compute(image(kGuided.size())).size(), static_cast<std::size_t>(width * height * 3));
+    std::vector<std::vector<float>> denoised(3, std::vector<float>(width * height, -1.0f));
+    const std::vector<std::span<float>> out{denoised[0], denoised[1], denoised[2]};
+    layer.compute(image(kGuided.size()), out);
+    for (const std::vector<float>& channel : denoised)
+        for (const float value : channel) EXPECT_TRUE(std::isfinite(value) && value >= 0) << value;  // every value written
     try {
-        layer.compute(image(7));  // no normal
+        layer.compute(image(7), out);  // no normal
         ADD_FAILURE() << "an image without normals was denoised";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("the rendered image: no normal layer (N.X, N.Y, N.Z)"), std::string::npos)
@@ -168,7 +173,7 @@ TEST(DenoisedPostLayer, RefusesMissingLayersAndValuesThatAreNotFinite)
     }
     planes[1][1] = std::numeric_limits<float>::quiet_NaN();  // G at pixel (1, 0)
     try {
-        layer.compute(image(kGuided.size()));
+        layer.compute(image(kGuided.size()), out);
         ADD_FAILURE() << "a beauty holding NaN was denoised";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("the rendered image: beauty pixel (1, 0) channel G is"), std::string::npos)

@@ -140,7 +140,7 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
                           outcome.reason != render::StopReason::ReachedTime;
     outcome.image = writer.image(final_state.elapsed_seconds, finished, std::move(reuse), read_later);
     outcome.image.denoiser = plan.denoiser;
-    if (plan.denoiser) outcome.image.denoise_seconds = std::make_shared<double>(0.0);
+    if (plan.denoiser) outcome.image.denoise_times = std::make_shared<denoise::DenoiseTimes>();
     // Ended on its adaptive rule: finished, though short of orb:targetSpp (render_request.h).
     if (outcome.reason == render::StopReason::Converged) outcome.image.metadata.adaptive_stop = exr::AdaptiveStop::Noise;
     if (outcome.reason == render::StopReason::ReachedError) outcome.image.metadata.adaptive_stop = exr::AdaptiveStop::Error;

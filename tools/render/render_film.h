@@ -39,11 +39,11 @@ struct FinalImage {
     exr::ExrWriteOptions options;
     std::optional<render::PendingFilm> arriving;  // set while the film is on its way
     // --denoise: adds the denoised layer to the encoded image (final images
-    // only, never checkpoints), and sets *denoise_seconds to the filter's
-    // set-up and run time (shared, so that a frame's stats can read it once
-    // its background write is done).
+    // only, never checkpoints), and sets *denoise_times to what the layer
+    // took (shared, so that a frame's stats can read it once its background
+    // write is done).
     std::shared_ptr<denoise::Denoiser> denoiser = nullptr;
-    std::shared_ptr<double> denoise_seconds = nullptr;
+    std::shared_ptr<denoise::DenoiseTimes> denoise_times = nullptr;
 
     bool checkpoint = false;  // written while rendering: its sums' range is reported with the final image
 
@@ -71,17 +71,7 @@ private:
     // The denoised layer is written by the one encode of the film.
     std::vector<exr::PostLayerPlanes> post_layers() const {
         if (!denoiser) return {};
-        exr::PostLayerPlanes layer = denoise::denoised_post_layer(*denoiser, "the rendered image");
-        if (denoise_seconds)
-            layer.compute = [compute = std::move(layer.compute), denoiser = denoiser,
-                             seconds = denoise_seconds](const exr::StoredImage& image) {
-                std::vector<float> planes = compute(image);
-                // The denoiser's own figures, as orb-denoise reports them, read
-                // before another frame's filter replaces them.
-                *seconds = denoiser->last_setup_seconds() + denoiser->last_filter_seconds();
-                return planes;
-            };
-        return {std::move(layer)};
+        return {denoise::denoised_post_layer(*denoiser, "the rendered image", denoise_times)};
     }
 };
 

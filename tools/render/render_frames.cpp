@@ -129,7 +129,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
     std::optional<render::Renderer> renderer;
     BackgroundWriter writer;  // after the renderer: destroyed first, so a pending write ends before it
     std::vector<RunStats> rendered;
-    std::vector<std::shared_ptr<double>> denoise_seconds;  // each rendered frame's, known once its write is done
+    std::vector<std::shared_ptr<denoise::DenoiseTimes>> denoise_times;  // each rendered frame's, known once its write is done
     std::vector<long> skipped;
     int claimed_elsewhere = 0, continued = 0;
     PosePrefetch prefetch;
@@ -181,7 +181,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
             return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
         }
         rendered.push_back(outcome.stats);
-        denoise_seconds.push_back(outcome.image.denoise_seconds);
+        denoise_times.push_back(outcome.image.denoise_times);
         const std::string summary = film_summary(outcome, *renderer, image);
         const bool interrupted = outcome.reason == render::StopReason::Interrupted;
         const std::string written = interrupted ? "interrupted: wrote " + summary
@@ -194,7 +194,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
     }
     writer.finish();
     for (std::size_t i = 0; i < rendered.size(); ++i)
-        if (denoise_seconds[i]) rendered[i].denoise_seconds = *denoise_seconds[i];
+        if (denoise_times[i]) rendered[i].denoise = *denoise_times[i];
 
     if (outputs.stats)
         outputs.stats->write(plan.frames.size() > 1 || rendered.empty() ? frames_stats_json(rendered, skipped)

@@ -186,6 +186,12 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
 RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
     RenderPlan plan = plan_render(o, knobs);
     plan.config.caller_host_bytes = host_bytes_beside_renderer(plan, o);
+    // The denoiser's device starts, and its filter is set up for the
+    // image's size, on a thread of their own while kernels build and
+    // samples render.
+    if (o.denoise && !o.missing)
+        plan.denoiser = std::make_shared<denoise::Denoiser>(
+            denoise::DenoiseSettings{}, denoise::ImageSize{plan.config.width, plan.config.height});
     return plan;
 }
 
@@ -226,7 +232,6 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
     plan.half = o.half;
     if (o.compression) plan.compression = exr::parse_compression(*o.compression);
     plan.denoise = o.denoise;
-    if (o.denoise && !o.missing) plan.denoiser = std::make_shared<denoise::Denoiser>(denoise::DenoiseSettings{});
 
     if (!o.resume.empty()) {
         apply_resume(o, imported, plan);

@@ -69,7 +69,7 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
     if (outputs.stats) {
         RunStats stats = outcome.stats;
         stats.setup_seconds = ready.setup_seconds;
-        if (outcome.image.denoise_seconds) stats.denoise_seconds = *outcome.image.denoise_seconds;
+        if (outcome.image.denoise_times) stats.denoise = *outcome.image.denoise_times;
         outputs.stats->write(stats_json(stats));
     }
 

@@ -44,7 +44,11 @@ nlohmann::ordered_json to_json(const RunStats& s) {
     if (s.active_pixels) j["active_pixels"] = *s.active_pixels;
     if (s.decisions) j["decisions"] = *s.decisions;
     if (s.decision_seconds) j["decision_seconds"] = *s.decision_seconds;
-    if (s.denoise_seconds) j["denoise_seconds"] = *s.denoise_seconds;
+    if (s.denoise) {
+        j["denoise_seconds"] = s.denoise->seconds;
+        j["denoise_setup_seconds"] = s.denoise->setup_seconds;
+        j["denoise_filter_seconds"] = s.denoise->filter_seconds;
+    }
     if (s.frame) j["frame"] = *s.frame;
     return j;
 }

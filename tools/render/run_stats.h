@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "orb/denoise/denoiser.h"
 #include "orb/render/device.h"
 #include "orb/render/renderer.h"
 
@@ -31,7 +32,7 @@ struct RunStats {
     std::optional<std::size_t> active_pixels;
     std::optional<int> decisions;            // adaptive sampling's decisions in this run
     std::optional<double> decision_seconds;  // and their time (part of `seconds`)
-    std::optional<double> denoise_seconds;   // --denoise: the denoiser's time on the final image (not in `seconds`)
+    std::optional<denoise::DenoiseTimes> denoise;  // --denoise: the denoiser's times on the final image (not in `seconds`)
     int passes = 0;
     double seconds = 0;              // this run's rendering (or timed benchmark) time
     double samples_per_second = 0;   // pixel samples per second over `seconds`

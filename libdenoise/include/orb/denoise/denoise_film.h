@@ -4,6 +4,7 @@
 // add_denoised_layer gives an EXR already written, denoise_exr.h).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "orb/denoise/denoiser.h"
@@ -15,7 +16,8 @@ namespace orb::denoise {
 // encode) from the stored beauty, albedo and normal, with the attribute
 // orb:denoised. Its compute throws orb::InputError naming `source` when a
 // layer is missing or a value not finite, std::runtime_error when the
-// denoiser fails.
-exr::PostLayerPlanes denoised_post_layer(Denoiser& denoiser, const std::string& source);
+// denoiser fails, and fills `times` (when given) with what it took.
+exr::PostLayerPlanes denoised_post_layer(Denoiser& denoiser, const std::string& source,
+                                         std::shared_ptr<DenoiseTimes> times = nullptr);
 
 }  // namespace orb::denoise

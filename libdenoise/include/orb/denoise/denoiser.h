@@ -3,10 +3,12 @@
 // (docs/orb-denoise.md says what they hold and how the filter treats them).
 // OIDN is loaded at run time (oidn_library.h); a Denoiser keeps its device
 // and, for images of one size, its filter and buffers, so a sequence of
-// frames pays for setting them up once.
+// frames pays for setting them up once
+// (docs/design/denoising-on-the-device.md).
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -46,39 +48,96 @@ struct DenoiseImages {
     const float* normal = nullptr;  // the normal layer (N)
 };
 
+// What denoising one image took: `seconds` in all (its inputs gathered,
+// the wait for the device, the filter, the result back), of which
+// `setup_seconds` waiting for the device's start (where it had not
+// finished) and for the filter and buffers of a new size, and
+// `filter_seconds` the filter with its copies to and from the device.
+struct DenoiseTimes {
+    double seconds = 0;
+    double setup_seconds = 0;
+    double filter_seconds = 0;
+};
+
+struct ImageSize {
+    int width = 0;
+    int height = 0;
+};
+
 class Denoiser {
 public:
-    // Loads OIDN and creates the device. Throws DenoiserUnavailable when OIDN
-    // cannot be loaded, std::runtime_error when the device cannot be created
-    // (say, --device cuda without a CUDA GPU), with OIDN's message.
-    explicit Denoiser(DenoiseSettings settings);
+    class Job;
+
+    // Loads OIDN at once (throws DenoiserUnavailable when it cannot be
+    // loaded), then starts the device on a thread of its own: a GPU device
+    // takes about 0.3 s (CUDA's start), which a render or an EXR's decoding
+    // hides. When `first_size` is given, the filter and buffers for images of
+    // that size are set up on that thread too. The device's own failure
+    // (say, --device cuda without a CUDA GPU) is thrown, with OIDN's
+    // message, by the first call that needs the device.
+    explicit Denoiser(DenoiseSettings settings, ImageSize first_size = {});
     ~Denoiser();
     Denoiser(const Denoiser&) = delete;
     Denoiser& operator=(const Denoiser&) = delete;
 
-    // The denoised colour, width * height * 3 floats. Safe to call from
-    // several threads (calls run one at a time: the device is shared).
-    // Throws std::invalid_argument for a missing image or a bad size,
-    // std::runtime_error with OIDN's message when the filter fails.
+    // One image's turn at the device (calls from several threads take turns:
+    // the device is shared). The caller writes the three inputs into the
+    // job's planes, host memory the device copies from without staging
+    // (pinned for a GPU), then runs it. Throws std::invalid_argument for a
+    // bad size, std::runtime_error with OIDN's message when the device or
+    // the filter fails.
+    Job begin(int width, int height);
+
+    // The denoised colour, width * height * 3 floats: begin, copy, run.
+    // Throws std::invalid_argument for a missing image or a bad size.
     std::vector<float> denoise(const DenoiseImages& images);
 
     // "Intel Open Image Denoise 2.5.1, RT filter, hdr, albedo and normal (not
     // clean), quality high, CPU" ("(prefiltered, clean)" with prefilter_aux):
-    // what the EXR header records.
+    // what the EXR header records. These wait for the device to start and
+    // throw its failure.
     const std::string& description() const;
-    const std::string& version() const;  // "2.5.1"
+    const std::string& version() const;      // "2.5.1"
     const std::string& device_name() const;  // "CPU", "CUDA", ...
     const DenoiseSettings& settings() const;
 
-    // Seconds the last denoise() spent setting up the filter and buffers
-    // (0 when the size was the last one's) and running it (the copies to and
-    // from the device included): what a sequence pays once, and per frame.
+    // Seconds the device took to start (on its own thread), and seconds the
+    // last image waited for set-up (the device's start where it had not
+    // finished, the filter and buffers for a new size) and spent in the
+    // filter (copies to and from the device included).
+    double start_seconds() const;
     double last_setup_seconds() const;
     double last_filter_seconds() const;
 
 private:
     struct State;
     std::unique_ptr<State> state_;
+};
+
+class Denoiser::Job {
+public:
+    Job(Job&&) noexcept;
+    Job& operator=(Job&&) = delete;
+    ~Job();
+
+    int width() const;
+    int height() const;
+    // Each width * height * 3 floats, interleaved, rows from the top.
+    float* color();
+    float* albedo();
+    float* normal();
+    // Runs the filter on the planes; the denoised colour (width * height * 3
+    // floats) stays valid until the job ends.
+    std::span<const float> run();
+    // What begin() waited for set-up, and what run() took.
+    double setup_seconds() const;
+    double filter_seconds() const;
+
+private:
+    friend class Denoiser;
+    struct Turn;
+    explicit Job(std::unique_ptr<Turn> turn);
+    std::unique_ptr<Turn> turn_;
 };
 
 }  // namespace orb::denoise

@@ -154,10 +154,12 @@ private:
 // layers (HALF under --half).
 struct PostLayerPlanes {
     film::PostLayer layer = film::PostLayer::Denoised;
-    // The layer's values from the stored image: width * height * (the
-    // layer's channel count) floats, interleaved, rows from the top. What it
-    // throws, the encode throws.
-    std::function<std::vector<float>(const StoredImage&)> compute;
+    // Fills the layer's channels from the stored image: one span per
+    // channel of the layer, in its names' order, each width * height floats,
+    // rows from the top (planes of the encoder's own memory, reused frame
+    // after frame, so that a layer costs no allocation). What it throws, the
+    // encode throws.
+    std::function<void(const StoredImage&, std::span<const std::span<float>>)> compute;
     // String header attributes that say how the layer was made (orb:denoised).
     std::vector<std::pair<std::string, std::string>> attributes;
 };

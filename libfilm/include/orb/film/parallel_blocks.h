@@ -1,6 +1,6 @@
-// Per-pixel work of the film on every core of the host: a decision of
-// adaptive sampling looks at millions of pixels, which on one core took as
-// long as tens of a GPU's passes.
+// Per-pixel work on every core of the host: a decision of adaptive
+// sampling looks at millions of pixels, which on one core took as long as
+// tens of a GPU's passes; a denoiser's inputs are as many.
 #pragma once
 
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-namespace orb::film::detail {
+namespace orb::film {
 
 inline constexpr std::size_t kParallelBlock = 1 << 16;
 
@@ -34,4 +34,4 @@ void for_each_block(std::size_t count, const Body& body)
     for (std::thread& t : threads) t.join();
 }
 
-}  // namespace orb::film::detail
+}  // namespace orb::film
