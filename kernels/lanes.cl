@@ -1,7 +1,7 @@
 // The lane types: the path tracer (integrator.cl), the BSDFs, lights,
 // camera, sampler and film are written once over these, in the masked style
 // of Mitsuba 3's path.cpp, and each program is built for one width
-// (docs/rendering.md, "Lanes"): -DORB_LANES=1 on GPUs, where a work-item is
+// (docs/design/work-decomposition.md, "Lanes"): -DORB_LANES=1 on GPUs, where a work-item is
 // one camera path and the hardware already runs work-items in its lanes;
 // 4, 8 or 16 on CPUs, where PoCL runs a work-item as scalar code and only
 // vector types fill the SIMD units, so a work-item carries ORB_LANES camera

@@ -28,7 +28,7 @@ BOX = ((-50.0, 50.0), (0.0, 50.0), (-50.0, 50.0))
 PALETTE_SIZE = 64
 MAGIC = b"\x89ORB\r\n\x1a\n"  # docs/scene-format.md, "Binary form"
 # Name, radiance and direction from the box's centre of each light: orb-import's
-# default lights (libscene/src/default_lights.cpp). A sphere of radiance L seen at
+# default lights (libimport/src/default_lights.cpp). A sphere of radiance L seen at
 # sin(theta) = 1/4 gives E = pi*L/16: an irradiance of 0.8*pi (key) and 0.3*pi (fill).
 LIGHTS = (("key light", 0.8 * 16, (-1.0, 2.0, 1.0)), ("fill light", 0.3 * 16, (1.0, 0.5, 0.5)))
 

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 
 namespace {
 

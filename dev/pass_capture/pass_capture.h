@@ -13,7 +13,7 @@
 
 #include "device_film.h"
 #include "opencl.h"
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "pass_arguments.h"
 #include "pass_observer.h"
 

@@ -16,7 +16,7 @@
 
 #include <unistd.h>
 
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "pass_arguments.h"
 #include "pass_capture.h"
 #include "program_build.h"

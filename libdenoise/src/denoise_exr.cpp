@@ -22,7 +22,7 @@
 #include "denoise_inputs.h"
 #include "exr_memory_streams.h"
 #include "orb/exr/codec_threads.h"
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 #include "orb/scene/error.h"
 
 namespace orb::denoise {

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "orb/film/parallel_blocks.h"
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 
 namespace orb::denoise::detail {
 

@@ -25,5 +25,6 @@ inline constexpr const char* kNoiseThreshold = "orb:noiseThreshold";
 inline constexpr const char* kTargetError = "orb:targetError";
 inline constexpr const char* kAdaptiveStop = "orb:adaptiveStop";
 inline constexpr const char* kExactSums = "orb:exactSums";
+inline constexpr const char* kKernel = "orb:kernel";
 
 }  // namespace orb::exr::attr

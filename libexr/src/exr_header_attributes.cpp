@@ -49,6 +49,7 @@ std::vector<HeaderAttribute> header_attributes(const Film& film, const ExrMetada
     if (m.target_error) a.push_back({attr::kTargetError, *m.target_error});
     if (m.adaptive_stop) a.push_back({attr::kAdaptiveStop, std::string(adaptive_stop_name(*m.adaptive_stop))});
     if (options.exact_sums) a.push_back({attr::kExactSums, kExactSumsEncoding});
+    if (!m.kernel.empty()) a.push_back({attr::kKernel, m.kernel});
     // OpenEXR's standard names and types (ImfStandardAttributes.h).
     a.push_back({"worldToCamera", m.world_to_camera});
     a.push_back({"worldToNDC", m.world_to_ndc});

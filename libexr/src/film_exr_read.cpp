@@ -22,6 +22,7 @@
 #include "orb/exr/film_exr.h"
 #include "orb/exr/codec_threads.h"
 #include "orb/scene/error.h"
+#include "orb/tables/render_names.h"
 
 namespace orb::exr {
 namespace {
@@ -101,13 +102,15 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
     m.seed = parse_seed(required<Imf::StringAttribute>(header, attr::kSeed, path).value(), path);
     m.max_depth = required<Imf::IntAttribute>(header, attr::kMaxDepth, path).value();
     m.mode = required<Imf::StringAttribute>(header, attr::kMode, path).value();
-    if (m.mode != "global" && m.mode != "direct")
-        fail(path, std::string(attr::kMode) + " must be global or direct, got '" + m.mode + "'");
+    if (!device::value_in(device::kIntegratorModeNames, m.mode))
+        fail(path, std::string(attr::kMode) + " must be " + device::choices_in(device::kIntegratorModeNames) +
+                       ", got '" + m.mode + "'");
     // Files from before there was a choice were rendered with independent numbers.
     const auto* sampler = header.findTypedAttribute<Imf::StringAttribute>(attr::kSampler);
-    m.sampler = sampler ? sampler->value() : "independent";
-    if (m.sampler != "sobol" && m.sampler != "independent")
-        fail(path, std::string(attr::kSampler) + " must be sobol or independent, got '" + m.sampler + "'");
+    m.sampler = sampler ? sampler->value() : std::string(device::name_in(device::kSamplerNames, device::SamplerKind::Independent));
+    if (!device::value_in(device::kSamplerNames, m.sampler))
+        fail(path, std::string(attr::kSampler) + " must be " + device::choices_in(device::kSamplerNames) + ", got '" +
+                       m.sampler + "'");
     m.device = required<Imf::StringAttribute>(header, attr::kDevice, path).value();
     m.render_seconds = required<Imf::DoubleAttribute>(header, attr::kRenderSeconds, path).value();
     m.scene_file = required<Imf::StringAttribute>(header, attr::kSceneFile, path).value();
@@ -131,6 +134,7 @@ ExrMetadata read_metadata(const Imf::Header& header, const std::string& path) {
         if (!m.adaptive_stop)
             fail(path, std::string(attr::kAdaptiveStop) + " must be noise or error, got '" + stop->value() + "'");
     }
+    if (const auto* kernel = header.findTypedAttribute<Imf::StringAttribute>(attr::kKernel)) m.kernel = kernel->value();
     if (const auto* frame = header.findTypedAttribute<Imf::IntAttribute>(attr::kFrame)) {
         const auto& fps = required<Imf::DoubleAttribute>(header, attr::kFps, path);
         m.frame = FrameInfo{frame->value(), fps.value()};

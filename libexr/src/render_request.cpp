@@ -14,6 +14,15 @@ std::string text(const T& value) {
     return out.str();
 }
 
+}  // namespace
+
+std::string another_kernel(const std::string& file_kernel, const std::string& kernel) {
+    return file_kernel.empty() ? "rendered by kernels it does not name (no orb:kernel: an older Orb), these are " + kernel
+                               : "rendered by other kernels (orb:kernel " + file_kernel + ", these are " + kernel + ")";
+}
+
+namespace {
+
 OutputJudgement different(std::string reason, std::uint64_t held) {
     return {OutputState::Different, std::move(reason), held};
 }
@@ -22,6 +31,7 @@ OutputJudgement different(std::string reason, std::uint64_t held) {
 // request, cheapest checks first; empty when all agree.
 std::string mismatch(const ExrFilmSummary& file, const RenderRequest& r) {
     const ExrMetadata& m = file.metadata;
+    if (r.kernel && *r.kernel != m.kernel) return another_kernel(m.kernel, *r.kernel);
     if ((r.width && *r.width != file.width) || (r.height && *r.height != file.height))
         return "rendered at " + text(file.width) + "x" + text(file.height) + ", " + text(r.width.value_or(file.width)) +
                "x" + text(r.height.value_or(file.height)) + " asked";

@@ -1,6 +1,6 @@
 #include "orb/image/passes.h"
 
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 
 #include <algorithm>
 #include <cctype>
@@ -145,7 +145,7 @@ std::optional<Pass> find_pass(const Image& image, const std::string& requested) 
 }  // namespace
 
 // orb-render's layers and their kinds: the film's channel table
-// (kernels/include/orb/kernels/film_channels.h).
+// (libtables/include/orb/tables/film_channels.h).
 const std::vector<std::string>& canonical_pass_names() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> list;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "orb/kernels/adaptive_decision.h"
+#include "orb/tables/adaptive_decision.h"
 
 namespace orb::render {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "orb/scene/scene.h"
 
 namespace orb::render {

@@ -1,6 +1,6 @@
 // Binding render_pass's arguments from the one list that also generates the
 // kernel's signature (ORB_RENDER_PASS_ARGUMENTS in
-// kernels/include/orb/kernels/device_types.h), so no argument position,
+// libtables/include/orb/tables/device_types.h), so no argument position,
 // buffer or count is written by hand here.
 #pragma once
 
@@ -10,7 +10,7 @@
 
 #include "device_film.h"
 #include "opencl.h"
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "scene_layout.h"
 
 namespace orb::render {

@@ -7,7 +7,7 @@
 
 #include "device_film.h"
 #include "opencl.h"
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "pass_arguments.h"
 
 namespace orb::render {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "opencl.h"
-#include "orb/kernels/kernel_features.h"
+#include "orb/tables/kernel_features.h"
 
 namespace orb::render {
 
@@ -21,7 +21,7 @@ inline constexpr const char* kKernelLanguageOptions =
 inline constexpr const char* kDecisionLanguageOptions = "-cl-std=CL1.2";
 
 // What a program of the kernels is built with, typed: the kernel features
-// (orb/kernels/kernel_features.h) and NVIDIA's register cap, a compiler
+// (orb/tables/kernel_features.h) and NVIDIA's register cap, a compiler
 // option rather than a define.
 struct ProgramOptions {
     device::KernelFeatures features;

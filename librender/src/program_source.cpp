@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "orb/kernels/embedded.h"
-#include "orb/kernels/kernel_features.h"
+#include "orb/tables/kernel_features.h"
 
 namespace orb::render {
 namespace {

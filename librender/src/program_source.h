@@ -5,7 +5,7 @@
 
 namespace orb::render {
 
-// The kernels' feature defaults (orb/kernels/kernel_features.h), then the
+// The kernels' feature defaults (orb/tables/kernel_features.h), then the
 // kernel files in program order: from `kernel_dir` (the development knob
 // ORB_KERNEL_DIR), or the embedded copies when it is empty.
 // Throws std::runtime_error if a file of a kernel folder cannot be read.

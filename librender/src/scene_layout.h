@@ -1,11 +1,11 @@
-// The scene and camera as device records (kernels/include/orb/kernels/device_types.h).
+// The scene and camera as device records (libtables/include/orb/tables/device_types.h).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "orb/scene/scene.h"
 #include "sphere_bvh.h"
 

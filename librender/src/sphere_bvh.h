@@ -22,7 +22,7 @@
 #include <span>
 #include <vector>
 
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "orb/scene/scene.h"
 
 namespace orb::render {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "animation_math.h"
+#include "orb/scene/detail/animation_math.h"
 #include "orb/scene/scene.h"
 
 namespace orb {

@@ -5,7 +5,7 @@
 
 #include "json_reader.h"
 #include "float_limits.h"
-#include "json_text.h"
+#include "orb/scene/detail/json_text.h"
 #include "orb/scene/error.h"
 
 namespace orb::detail {

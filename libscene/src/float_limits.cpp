@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "json_text.h"
+#include "orb/scene/detail/json_text.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::detail {

@@ -1,6 +1,6 @@
 // The material types' names, read from ORB_MATERIAL_TABLE
-// (kernels/include/orb/kernels/material_kinds.h): no list of kinds here.
-#include "material_types.h"
+// (libtables/include/orb/tables/material_kinds.h): no list of kinds here.
+#include "orb/scene/detail/material_types.h"
 
 #include <vector>
 

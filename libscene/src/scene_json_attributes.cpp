@@ -5,7 +5,7 @@
 #include <cmath>
 #include <set>
 
-#include "json_text.h"
+#include "orb/scene/detail/json_text.h"
 #include "orb/scene/error.h"
 
 namespace orb::detail {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "float_limits.h"
-#include "json_text.h"
+#include "orb/scene/detail/json_text.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <future>
 
-#include "json_text.h"
+#include "orb/scene/detail/json_text.h"
 
 namespace orb::detail {
 namespace {

@@ -9,7 +9,7 @@
 #include <iterator>
 #include <string>
 
-#include "orb/scene/import.h"
+#include "orb/import/import.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "orb/scene/scene_json.h"
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 #include "import_cli_fixture.h"
 #include "run_process.h"
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "import_cli_fixture.h"
-#include "orb/scene/import.h"
+#include "orb/import/import.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb {

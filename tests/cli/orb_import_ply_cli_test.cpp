@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "orb/scene/auto_framing.h"
-#include "orb/scene/ply.h"
+#include "orb/import/ply.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 #include "import_cli_fixture.h"

@@ -1,5 +1,5 @@
 // orb-import reads its formats from the table of importers
-// (orb/scene/importers.h): --list-formats shows it, docs/orb-import.md shows
+// (orb/import/importers.h): --list-formats shows it, docs/orb-import.md shows
 // the same listing, --from takes its words, and an option of one format given
 // for an input of another is named in a warning rather than dropped.
 #include <gmock/gmock.h>
@@ -10,7 +10,7 @@
 #include <string>
 
 #include "import_cli_fixture.h"
-#include "orb/scene/importers.h"
+#include "orb/import/importers.h"
 #include "run_process.h"
 
 namespace orb {

@@ -12,7 +12,9 @@ Over README.md and every docs/**/*.md:
   (docs/benchmarks/, runN.sh, runN.log): raw measurements live in git history,
   and docs/design/README.md, the one page that says where, is exempt;
 - every relative link to a file ("[text](path)", "[text](path#anchor)")
-  names a file or folder that exists.
+  names a file or folder that exists, and its anchor, and that of a link
+  within the page ("[text](#anchor)"), names a heading of that Markdown
+  file (spelt as GitHub spells a heading's anchor).
 Each problem is printed as FILE:LINE: what; the test fails if there is any.
 """
 import os
@@ -35,6 +37,28 @@ def documents(root):
                 yield os.path.join(folder, name)
 
 
+def heading_anchors(path, cache={}):
+    """The anchors GitHub gives the headings of a Markdown file: lowercase,
+    punctuation other than '-' and '_' dropped, spaces turned into '-', and
+    "-1", "-2", ... after a repeated one."""
+    if path not in cache:
+        anchors, fenced = set(), False
+        with open(path, encoding="utf-8") as f:
+            for line in f:
+                if line.startswith("```"):
+                    fenced = not fenced
+                heading = re.match(r"^#{1,6}\s+(.*?)\s*#*\s*$", line) if not fenced else None
+                if not heading:
+                    continue
+                anchor = re.sub(r"[^\w\- ]", "", heading.group(1).lower()).replace(" ", "-")
+                unique, repeat = anchor, 1
+                while unique in anchors:
+                    unique, repeat = f"{anchor}-{repeat}", repeat + 1
+                anchors.add(unique)
+        cache[path] = anchors
+    return cache[path]
+
+
 def problems_in(path, root):
     rel = os.path.relpath(path, root)
     with open(path, encoding="utf-8") as f:
@@ -50,11 +74,14 @@ def problems_in(path, root):
             yield f"{rel}:{number}: points at a run log or the old benchmark folder ({match.group(0)!r})"
         for match in LINK.finditer(line):
             target = match.group(1)
-            if re.match(r"^[a-z][a-z0-9+.-]*:", target) or target.startswith("#"):
-                continue  # a URL or an anchor in the same page
-            file_part = target.split("#", 1)[0]
-            if not os.path.exists(os.path.join(os.path.dirname(path), file_part)):
+            if re.match(r"^[a-z][a-z0-9+.-]*:", target):
+                continue  # a URL
+            file_part, _, anchor = target.partition("#")
+            linked = os.path.join(os.path.dirname(path), file_part) if file_part else path
+            if not os.path.exists(linked):
                 yield f"{rel}:{number}: links to {target!r}, which does not exist"
+            elif anchor and linked.endswith(".md") and anchor not in heading_anchors(linked):
+                yield f"{rel}:{number}: links to {target!r}, which has no heading of that anchor"
 
 
 def main():

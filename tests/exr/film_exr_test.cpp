@@ -221,8 +221,18 @@ TEST(FilmExr, RoundTripKeepsEveryAttribute) {
     EXPECT_EQ(back.scene_hash, metadata.scene_hash);
     EXPECT_EQ(back.version, metadata.version);
     EXPECT_EQ(back.scene_time, metadata.scene_time);
+    EXPECT_EQ(back.kernel, metadata.kernel);
     EXPECT_EQ(back.world_to_camera, metadata.world_to_camera);
     EXPECT_EQ(back.world_to_ndc, metadata.world_to_ndc);
+}
+
+TEST(FilmExr, AFilmOfUnknownKernelsWritesNoKernelAndReadsBackEmpty) {
+    ExrMetadata metadata = synthetic_metadata();
+    metadata.kernel.clear();
+    const std::string path = scratch_path("film.exr");
+    write_film_exr(path, synthetic_film(kWidth, kHeight, 2), metadata, {});
+    EXPECT_EQ(Imf::InputFile(path.c_str()).header().findTypedAttribute<Imf::StringAttribute>("orb:kernel"), nullptr);
+    EXPECT_EQ(read_film_exr(path).metadata.kernel, "");
 }
 
 TEST(FilmExr, WritesExactlyTheDocumentedChannelsAndAttributes) {
@@ -256,6 +266,7 @@ TEST(FilmExr, WritesExactlyTheDocumentedChannelsAndAttributes) {
     EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>("orb:sceneHash").value(), "0123456789abcdef");
     EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>("orb:version").value(), "0.1.0");
     EXPECT_EQ(header.typedAttribute<Imf::DoubleAttribute>("orb:sceneTime").value(), 0.25);
+    EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>("orb:kernel").value(), "5f3a9c0e1d2b4a68");
     EXPECT_EQ(header.typedAttribute<Imf::StringAttribute>("orb:passes").value(),
               "beauty,direct,indirect,emission,albedo,normal,depth,variance,id,background");
     EXPECT_EQ(header.typedAttribute<Imf::IntAttribute>("orb:filmFormat").value(), kFilmFormatVersion);

@@ -60,6 +60,30 @@ TEST(FilmMerge, AMergeIsExactOnlyWhenEveryInputWas) {
     EXPECT_FALSE(merge_films({slice("a", "0:3", 1), means_only}).exact);
 }
 
+TEST(FilmMerge, RefusesTheSamplesOfOtherKernelsNamingBothFiles) {
+    MergeInput other = slice("other.exr", "3:2", 2);
+    other.file.metadata.kernel = "9a0b1c2d3e4f5061";
+    try {
+        merge_films({slice("a.exr", "0:3", 1), other});
+        FAIL() << "expected an error";
+    } catch (const orb::InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "other.exr: orb:kernel 9a0b1c2d3e4f5061 differs from a.exr's 5f3a9c0e1d2b4a68; only slices of the "
+                  "same render merge");
+    }
+    // A file that does not say (an older Orb's) is not taken for one that does.
+    MergeInput unnamed = slice("old.exr", "3:2", 2);
+    unnamed.file.metadata.kernel.clear();
+    try {
+        merge_films({slice("a.exr", "0:3", 1), unnamed});
+        FAIL() << "expected an error";
+    } catch (const orb::InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "old.exr: orb:kernel (none) differs from a.exr's 5f3a9c0e1d2b4a68; only slices of the same render "
+                  "merge");
+    }
+}
+
 TEST(FilmMerge, NamesTheFileThatDiffersOrOverlaps) {
     MergeInput other = slice("other.exr", "3:2", 2);
     other.file.metadata.scene_hash = "fedcba9876543210";

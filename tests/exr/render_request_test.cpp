@@ -206,3 +206,31 @@ TEST(RenderRequest, MissingUnreadableAndUnaskedFields) {
     EXPECT_EQ(short_of_it.state, OutputState::Continuable);
     EXPECT_EQ(short_of_it.reason, "holds 8 of 64 spp");
 }
+
+TEST(RenderRequest, AFileOfOtherKernelsIsAnotherRender) {
+    const std::string path = file_with("kernel.exr", 0, 8);
+    RenderRequest same = request_for_metadata(8);
+    same.kernel = synthetic_metadata().kernel;
+    EXPECT_EQ(judge_output(path, same).state, OutputState::Finished);
+    RenderRequest other = request_for_metadata(16);  // fewer samples than asked: still not continued
+    other.kernel = "9a0b1c2d3e4f5061";
+    const OutputJudgement judged = judge_output(path, other);
+    EXPECT_EQ(judged.state, OutputState::Different);
+    EXPECT_EQ(judged.reason, "rendered by other kernels (orb:kernel 5f3a9c0e1d2b4a68, these are 9a0b1c2d3e4f5061)");
+    EXPECT_EQ(judge_output(path, request_for_metadata(8)).state, OutputState::Finished);  // not asked: not compared
+}
+
+TEST(RenderRequest, AFileThatDoesNotNameItsKernelsIsAnotherRender) {
+    orb::Film film = synthetic_film(kWidth, kHeight, 8);
+    ExrMetadata old = synthetic_metadata();
+    old.kernel.clear();  // as an older Orb wrote it
+    ExrWriteOptions options;
+    options.passes = {Pass::Beauty};
+    const std::string path = scratch_path("old.exr");
+    write_film_exr(path, film, old, options);
+    RenderRequest asked = request_for_metadata(8);
+    asked.kernel = "9a0b1c2d3e4f5061";
+    const OutputJudgement judged = judge_output(path, asked);
+    EXPECT_EQ(judged.state, OutputState::Different);
+    EXPECT_EQ(judged.reason, "rendered by kernels it does not name (no orb:kernel: an older Orb), these are 9a0b1c2d3e4f5061");
+}

@@ -56,6 +56,7 @@ ExrMetadata synthetic_metadata() {
     m.scene_hash = "0123456789abcdef";
     m.version = "0.1.0";
     m.scene_time = 0.25;
+    m.kernel = "5f3a9c0e1d2b4a68";
     orb::Camera camera;
     m.world_to_camera = world_to_camera(camera);
     m.world_to_ndc = world_to_ndc(camera, 8, 6);

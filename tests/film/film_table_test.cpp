@@ -1,4 +1,4 @@
-// The film follows its channel table (kernels/include/orb/kernels/film_channels.h):
+// The film follows its channel table (libtables/include/orb/tables/film_channels.h):
 // clear values, integer sums, and how films of different samples combine.
 #include <gtest/gtest.h>
 

@@ -7,11 +7,11 @@
 #include <string>
 
 #include "orb/scene/error.h"
-#include "orb/scene/molecular.h"
-#include "orb/scene/ply.h"
+#include "orb/import/molecular.h"
+#include "orb/import/ply.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 
 namespace orb::fuzz {
 

@@ -4,7 +4,7 @@
 
 #include "orb/scene/animation.h"
 #include "orb/scene/error.h"
-#include "orb/scene/gltf.h"
+#include "orb/import/gltf.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::fuzz {

@@ -8,7 +8,7 @@
 
 #include "gltf_test_util.h"
 #include "orb/scene/error.h"
-#include "orb/scene/import.h"
+#include "orb/import/import.h"
 
 namespace orb {
 namespace {

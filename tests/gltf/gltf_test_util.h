@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "orb/scene/gltf.h"
+#include "orb/import/gltf.h"
 #include "orb/scene/scene.h"
 
 namespace orb::gltf_test {

@@ -10,8 +10,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include "orb/image/legend.h"
-#include "orb/scene/colormaps.h"
-#include "orb/scene/elements.h"
+#include "orb/import/colormaps.h"
+#include "orb/import/elements.h"
 #include "test_support.h"
 
 using namespace orb::image;

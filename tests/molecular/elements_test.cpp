@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "orb/scene/elements.h"
+#include "orb/import/elements.h"
 
 namespace orb {
 namespace {

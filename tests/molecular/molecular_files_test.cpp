@@ -9,10 +9,10 @@
 #include <tuple>
 
 #include "molecular_test_util.h"
-#include "orb/scene/elements.h"
+#include "orb/import/elements.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
-#include "orb/scene/sphere_styling.h"
+#include "orb/import/sphere_styling.h"
 
 namespace orb {
 namespace {

@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "molecular_test_util.h"
-#include "orb/scene/sphere_styling.h"
-#include "orb/scene/elements.h"
+#include "orb/import/sphere_styling.h"
+#include "orb/import/elements.h"
 #include "orb/scene/error.h"
 
 namespace orb {

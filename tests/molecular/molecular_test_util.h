@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "orb/scene/molecular.h"
+#include "orb/import/molecular.h"
 
 namespace orb::test {
 

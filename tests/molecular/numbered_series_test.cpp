@@ -10,8 +10,9 @@
 
 #include "molecular_test_util.h"
 #include "orb/scene/error.h"
-#include "orb/scene/import.h"
-#include "orb/scene/numbered_series.h"
+#include "orb/import/import.h"
+#include "orb/import/molecular.h"
+#include "orb/import/numbered_series.h"
 
 namespace orb {
 namespace {
@@ -118,7 +119,7 @@ TEST_F(NumberedSeries, ADumpCutIntoAFilePerTimestepIsTheSameTrajectory) {
     for (std::size_t k : {0u, 1u, 9u}) EXPECT_EQ(series->frame(k), whole->frame(k)) << k;
     // orb-import's frame of it, as of the one file.
     ImportOptions options;
-    options.molecular.frame = 10;
+    options.of<MolecularImportOptions>().frame = 10;
     const ImportResult imported = import_molecular_series(path("dump.*.lammpstrj"), options);
     EXPECT_EQ(imported.format, "lammps-dump");
     EXPECT_EQ(imported.scene, whole->frame(9));

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "orb/scene/error.h"
-#include "orb/scene/import.h"
-#include "orb/scene/ply.h"
+#include "orb/import/import.h"
+#include "orb/import/ply.h"
 #include "ply_builder.h"
 
 namespace orb {

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "orb/scene/import.h"
-#include "orb/scene/importers.h"
-#include "orb/scene/ply.h"
+#include "orb/import/import.h"
+#include "orb/import/importers.h"
+#include "orb/import/ply.h"
 #include "ply_builder.h"
 
 namespace orb {

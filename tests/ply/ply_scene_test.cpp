@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "orb/scene/auto_framing.h"
-#include "orb/scene/ply.h"
+#include "orb/import/ply.h"
 #include "ply_builder.h"
 
 namespace orb {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "orb/scene/ply.h"
+#include "orb/import/ply.h"
 #include "ply_builder.h"
 
 namespace orb {

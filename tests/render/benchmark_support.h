@@ -12,7 +12,7 @@
 #include <string>
 
 #include "orb/cli/development_knobs.h"
-#include "orb/scene/import.h"
+#include "orb/import/import.h"
 
 namespace orb::bench {
 

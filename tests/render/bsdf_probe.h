@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 
 namespace orb::render::test {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "orb/kernels/embedded.h"
 #include "orb/render/device.h"
 #include "opencl_devices.h"
@@ -40,8 +40,8 @@ std::vector<Probe> host_probes()
 std::string probe_kernel_source()
 {
     // device_types.h reads the material kinds' table (its OpenCL side includes nothing).
-    std::string source(kernels::find_embedded_kernel("include/orb/kernels/material_kinds.h"));
-    source += kernels::find_embedded_kernel("include/orb/kernels/device_types.h");
+    std::string source(kernels::find_embedded_kernel("include/orb/tables/material_kinds.h"));
+    source += kernels::find_embedded_kernel("include/orb/tables/device_types.h");
     source += "\n__kernel void probe(__global uint* out)\n{\n    int i = 0;\n";
 #define ORB_DEVICE_SIZE(type, size) source += "    out[i++] = (uint)sizeof(" #type ");\n";
 #define ORB_DEVICE_FIELD(type, field, offset) \

@@ -16,7 +16,7 @@
 #include "chi2.h"
 #include "environment_distribution.h"
 #include "environment_layout.h"
-#include "orb/kernels/kernel_features.h"
+#include "orb/tables/kernel_features.h"
 #include "orb/render/device.h"
 #include "program_source.h"
 #include "opencl_devices.h"

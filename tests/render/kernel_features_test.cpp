@@ -1,4 +1,4 @@
-// The kernel features' table (kernels/include/orb/kernels/kernel_features.h):
+// The kernel features' table (libtables/include/orb/tables/kernel_features.h):
 // the host's defaults are what a program of the kernels reads, the options
 // carry every feature the host changes and nothing twice, and every change
 // reaches the binary cache's key.
@@ -18,7 +18,7 @@
 #include "device_renderer.h"
 #include "opencl_devices.h"
 #include "orb/kernels/embedded.h"
-#include "orb/kernels/kernel_features.h"
+#include "orb/tables/kernel_features.h"
 #include "orb/render/device.h"
 #include "program_build.h"
 #include "program_source.h"
@@ -189,7 +189,7 @@ TEST(KernelFeatures, EveryChangedFeatureReachesTheKernels)
 {
     const KernelFeatures features = all_changed();
     const std::string source = device::kernel_feature_defaults() +
-                               std::string(kernels::find_embedded_kernel("include/orb/kernels/kernel_features.h"));
+                               std::string(kernels::find_embedded_kernel("include/orb/tables/kernel_features.h"));
     expect_report_holds(report(source, "-cl-std=CL1.2 " + device::kernel_feature_options(features)), features);
     // Floats a text form could get wrong: no fraction, tiny, many digits.
     KernelFeatures floats;

@@ -17,7 +17,7 @@
 
 #include "benchmark_support.h"
 #include "orb/render/renderer.h"
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 
 int main(int argc, char** argv)
 {

@@ -11,7 +11,7 @@
 
 #include "device_renderer.h"
 #include "orb/film/pixel_error.h"
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 #include "scene_layout.h"
 
 namespace orb::render::test {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "orb/kernels/kernel_features.h"
+#include "orb/tables/kernel_features.h"
 #include "orb/render/renderer.h"
 #include "orb/scene/scene.h"
 

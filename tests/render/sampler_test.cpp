@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "orb/kernels/embedded.h"
-#include "orb/kernels/kernel_features.h"
+#include "orb/tables/kernel_features.h"
 #include "orb/render/device.h"
 #include "opencl_devices.h"
 
@@ -34,8 +34,8 @@ public:
         context_ = cl::Context(device_);
         queue_ = cl::CommandQueue(context_, device_);
         std::string source = device::kernel_feature_defaults();
-        for (const char* file : {"include/orb/kernels/film_channels.h", "include/orb/kernels/material_kinds.h",
-                                 "include/orb/kernels/device_types.h", "lanes.cl", "rng.cl", "sampler.cl"})
+        for (const char* file : {"include/orb/tables/film_channels.h", "include/orb/tables/material_kinds.h",
+                                 "include/orb/tables/device_types.h", "lanes.cl", "rng.cl", "sampler.cl"})
             source += std::string(kernels::find_embedded_kernel(file)) + "\n";
         source += R"(
 __kernel void probe(__global float* out, uint first_pixel, uint first_lo, uint first_hi, int samples, uint block,

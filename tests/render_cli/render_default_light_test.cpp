@@ -1,5 +1,5 @@
 // A glTF asset without any light renders under the default light
-// (orb/scene/gltf.h): a neutral grey environment, seen directly as the
+// (orb/import/gltf.h): a neutral grey environment, seen directly as the
 // background at exactly its radiance, and a key light that shows the
 // spheres at mid-grey, as the asset's reference screenshot does, rather than
 // the old white backdrop they vanished into.
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli_fixture.h"
-#include "orb/scene/gltf.h"
+#include "orb/import/gltf.h"
 
 using namespace orb::test;
 using orb::exr::testing::read_raw_exr;

@@ -10,8 +10,11 @@
 #include <vector>
 
 #include "orb/scene/error.h"
-#include "orb/scene/import.h"
-#include "orb/scene/importers.h"
+#include "orb/import/gltf.h"
+#include "orb/import/import.h"
+#include "orb/import/ply.h"
+#include "orb/import/importers.h"
+#include "orb/import/molecular.h"
 
 namespace {
 
@@ -69,11 +72,11 @@ TEST(SceneImporters, EachOptionGroupAddsItsOwnOptionsToACommandLine) {
     }
     app.parse(std::vector<std::string>{"bound", "--non-spheres", "0.5", "--radius", "--cell", "covalent", "--atom-radius",
                                        "2", "--gltf-scene"});  // reversed, as CLI11 takes a vector
-    EXPECT_EQ(options.gltf.scene, "2");
-    EXPECT_EQ(options.gltf.non_spheres, orb::NonSpherePolicy::Bound);
-    EXPECT_EQ(options.ply.radius, 0.5);
-    EXPECT_TRUE(options.molecular.cell);
-    EXPECT_EQ(options.molecular.radius, orb::AtomRadius::Covalent);
+    EXPECT_EQ(options.of<orb::GltfImportOptions>().scene, "2");
+    EXPECT_EQ(options.of<orb::GltfImportOptions>().non_spheres, orb::NonSpherePolicy::Bound);
+    EXPECT_EQ(options.of<orb::PlyImportOptions>().radius, 0.5);
+    EXPECT_TRUE(options.of<orb::MolecularImportOptions>().cell);
+    EXPECT_EQ(options.of<orb::MolecularImportOptions>().radius, orb::AtomRadius::Covalent);
 }
 
 TEST(SceneImporters, TheirNumericOptionsRefuseWhatIsNotAFiniteNumberInRange) {
@@ -94,7 +97,9 @@ TEST(SceneImporters, EveryEntryIsComplete) {
         EXPECT_FALSE(importer.description.empty()) << importer.name;
         EXPECT_EQ(importer.description.find('\n'), std::string_view::npos) << importer.name;
         EXPECT_NE(importer.recognise, nullptr) << importer.name;
-        EXPECT_NE(importer.read, nullptr) << importer.name;
+        // One scene (read) or frames (open_frames, which import_scene reads a frame of), never both.
+        EXPECT_NE(importer.read == nullptr, importer.open_frames == nullptr) << importer.name;
+        EXPECT_TRUE(importer.open_frames || !importer.reads_series) << importer.name;
         EXPECT_FALSE(importer.no_spheres.empty()) << importer.name;
         for (std::string_view extension : importer.extensions) {
             EXPECT_TRUE(extension.starts_with('.')) << importer.name;
@@ -106,6 +111,23 @@ TEST(SceneImporters, EveryEntryIsComplete) {
             EXPECT_TRUE(seen.insert(std::string(alias)).second) << alias << " named twice";
     }
     EXPECT_EQ(orb::readable_file_names(), ".scn, .gltf/.glb, .ply, .json, .orb, .pdb/.ent, .cif/.mmcif, .xyz/.extxyz, .lammpstrj/.dump, .gro");
+}
+
+TEST(SceneImporters, TheFormatsOfFramesAreTheTablesEntries) {
+    // The molecular and particle formats are entries like any other: the
+    // frame functions find them through the table, and only them.
+    std::vector<std::string> frames, series;
+    for (const orb::SceneImporter& importer : orb::scene_importers()) {
+        if (importer.open_frames) frames.emplace_back(importer.name);
+        if (importer.reads_series) series.emplace_back(importer.name);
+        EXPECT_EQ(orb::find_frame_importer(importer.name), importer.open_frames ? &importer : nullptr) << importer.name;
+    }
+    EXPECT_EQ(frames, (std::vector<std::string>{"pdb", "mmcif", "xyz", "lammps-dump", "gro"}));
+    EXPECT_EQ(series, (std::vector<std::string>{"xyz", "lammps-dump", "gro"}));
+    EXPECT_EQ(orb::find_frame_importer("lammpstrj"), orb::find_scene_importer("lammps-dump"));  // an alias
+    EXPECT_EQ(orb::recognise_molecular_file("ITEM: TIMESTEP\n0\n", "d"), "lammps-dump");
+    EXPECT_EQ(orb::recognise_molecular_file("2\ncomment\nH 0 0 0\nH 0 0 1\n", "x"), "xyz");
+    EXPECT_EQ(orb::recognise_molecular_file("camera 0 0 0 0 0 1\n", "c.scn"), "");
 }
 
 TEST(SceneImporters, TheExtensionDecidesOnlyForItsImporters) {

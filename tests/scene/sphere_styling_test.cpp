@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "orb/scene/colormaps.h"
+#include "orb/import/colormaps.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
-#include "orb/scene/sphere_styling.h"
+#include "orb/import/sphere_styling.h"
 
 namespace orb {
 namespace {

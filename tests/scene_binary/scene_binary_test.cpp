@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "binary_test_scene.h"
-#include "orb/scene/import.h"
-#include "orb/scene/importers.h"
+#include "orb/import/import.h"
+#include "orb/import/importers.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
 

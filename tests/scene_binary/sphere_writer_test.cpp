@@ -6,7 +6,7 @@
 
 #include "animation_json.h"
 #include "binary_test_scene.h"
-#include "json_text.h"
+#include "orb/scene/detail/json_text.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb {

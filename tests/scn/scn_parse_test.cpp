@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 #include "scn_test_util.h"
 
 namespace orb {

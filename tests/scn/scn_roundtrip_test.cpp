@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "orb/scene/scene_json.h"
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 #include "scn_test_util.h"
 
 namespace orb {

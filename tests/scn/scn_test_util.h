@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "orb/scene/error.h"
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 
 namespace orb::test {
 

@@ -2,7 +2,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 
 namespace orb {
 namespace {

@@ -11,9 +11,9 @@
 #include "orb/exr/render_request.h"
 #include "orb/request/request_options.h"
 #include "orb/request/request_settings.h"
-#include "orb/scene/molecular.h"
+#include "orb/import/molecular.h"
 #include "orb/scene/scene.h"
-#include "orb/scene/sphere_styling.h"
+#include "orb/import/sphere_styling.h"
 
 namespace orb::frames {
 

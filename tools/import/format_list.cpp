@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "orb/scene/importers.h"
+#include "orb/import/importers.h"
 
 namespace orb::import_tool {
 namespace {

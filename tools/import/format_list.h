@@ -1,4 +1,4 @@
-// orb-import --list-formats, from the table of importers (orb/scene/importers.h).
+// orb-import --list-formats, from the table of importers (orb/import/importers.h).
 #pragma once
 
 #include <string>

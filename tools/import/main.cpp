@@ -1,4 +1,4 @@
-// orb-import: any scene Orb can read (the importers of orb/scene/importers.h:
+// orb-import: any scene Orb can read (the importers of orb/import/importers.h:
 // Orb JSON, SmallptGPU .scn, glTF, GLB, PLY, ...) -> the canonical Orb JSON
 // scene, its binary form (.orb), or back to .scn (docs/orb-import.md).
 #include <filesystem>
@@ -18,12 +18,14 @@
 #include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
 #include "orb/scene/error.h"
-#include "orb/scene/import.h"
-#include "orb/scene/importers.h"
-#include "orb/scene/numbered_series.h"
+#include "orb/import/gltf.h"
+#include "orb/import/import.h"
+#include "orb/import/importers.h"
+#include "orb/import/molecular.h"
+#include "orb/import/numbered_series.h"
 #include "orb/scene/scene_binary.h"
 #include "orb/scene/scene_json.h"
-#include "orb/scene/scn.h"
+#include "orb/import/scn.h"
 #include "output_format.h"
 
 namespace {
@@ -99,7 +101,7 @@ int run(Arguments& args) {
     orb::ImportOptions import_options = orb::cli::import_options_for(args.reading);
     // Without --from, the content (and the name's extension) says the format (orb::import_scene).
     import_options.format = args.from;
-    import_options.gltf.strict = args.strict;
+    import_options.of<orb::GltfImportOptions>().strict = args.strict;
 
     // The output is checked and prepared before anything is read or converted.
     orb::cli::refuse_overlapping_paths({{"INPUT", args.input}}, {{"-o", args.output}});
@@ -182,7 +184,7 @@ int main(int argc, char** argv) {
             // Named, like the group's own options, when the input is of another format.
             const std::string_view molecules = orb::find_scene_importer("xyz")->options->heading;
             args.reading.importer_options.push_back(
-                {app.add_option("--frame", args.reading.import.molecular.frame,
+                {app.add_option("--frame", args.reading.import.of<orb::MolecularImportOptions>().frame,
                                 "Which frame of a trajectory or model of an ensemble to write (1 = the first, the "
                                 "default)")
                      ->check(CLI::PositiveNumber)
@@ -190,7 +192,7 @@ int main(int argc, char** argv) {
                      ->group(std::string(molecules)),
                  molecules});
             // The older name of --gltf-scene, kept for scripts (unlisted: orb-frames' --scene is the scene file).
-            app.add_option("--scene", args.reading.import.gltf.scene)->group("");
+            app.add_option("--scene", args.reading.import.of<orb::GltfImportOptions>().scene)->group("");
             orb::cli::add_camera_options(app, args.camera);
             orb::cli::add_sphere_style_options(app, args.style);
             app.footer(kExamples);

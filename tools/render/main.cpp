@@ -7,7 +7,7 @@
 #include "orb/cli/development_knobs.h"
 #include "orb/cli/io.h"
 #include "orb/cli/tool_main.h"
-#include "orb/scene/importers.h"
+#include "orb/import/importers.h"
 #include "render_options.h"
 #include "render_outputs.h"
 #include "render_frames.h"

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "orb/scene/importers.h"
+#include "orb/import/importers.h"
 #include "orb/cli/exr_output_name.h"
 #include "orb/cli/frame_spec.h"
 #include "orb/cli/io.h"

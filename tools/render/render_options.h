@@ -47,7 +47,7 @@ struct RenderOptions : request::RequestOptions {
     // Adaptive sampling (docs/design/adaptive-sampling.md).
     std::optional<double> noise_threshold;  // --noise-threshold: a pixel stops below this relative error
     std::optional<double> target_error;     // --target-error: the render stops below this relMSE
-    cli::SphereStyleArguments style;  // --color-by, --radius-by, ... (orb/scene/sphere_styling.h)
+    cli::SphereStyleArguments style;  // --color-by, --radius-by, ... (orb/import/sphere_styling.h)
 };
 
 void add_render_options(CLI::App& app, RenderOptions& options);

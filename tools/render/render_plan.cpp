@@ -12,27 +12,24 @@
 #include "frame_warnings.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/paths.h"
+#include "orb/exr/render_request.h"
+#include "orb/render/kernel_identity.h"
 #include "orb/request/scene_input.h"
 #include "orb/scene/error.h"
+#include "orb/tables/render_names.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::render_cli {
 namespace {
 
-const char* mode_name(render::IntegratorMode mode) {
-    return mode == render::IntegratorMode::Direct ? "direct" : "global";
-}
-
+// The names come from the command line or a film's header, both checked
+// against the same tables (orb/tables/render_names.h) before they get here.
 render::IntegratorMode parse_mode(const std::string& name) {
-    return name == "direct" ? render::IntegratorMode::Direct : render::IntegratorMode::Global;
-}
-
-const char* sampler_name(render::SamplerKind sampler) {
-    return sampler == render::SamplerKind::Independent ? "independent" : "sobol";
+    return device::value_in(device::kIntegratorModeNames, name).value();
 }
 
 render::SamplerKind parse_sampler(const std::string& name) {
-    return name == "independent" ? render::SamplerKind::Independent : render::SamplerKind::Sobol;
+    return device::value_in(device::kSamplerNames, name).value();
 }
 
 // A setting the resumed file fixes may be repeated on the command line, but
@@ -118,6 +115,17 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
                              *o.sample_range + "; drop --sample-range to continue the file after its last sample");
         plan.target_spp = slice.count;
         plan.slice = true;
+    }
+    // Samples of other kernels are another render's: it starts again (from
+    // the slice's first sample), with the file's settings.
+    if (m.kernel != plan.kernel) {
+        cli::warning(path + ": " + exr::another_kernel(m.kernel, plan.kernel) + "; rendering it again from its first sample");
+        plan.first_sample = o.sample_range ? parse_sample_range(*o.sample_range).first : 0;
+        set_passes(plan, o.passes ? exr::parse_passes(*o.passes) : file.passes);
+        plan.resumed = std::move(file);
+        apply_adaptive(o, plan);
+        plan.resumed.reset();
+        return;
     }
     if (plan.target_spp < file.film.samples_per_pixel)
         throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
@@ -212,6 +220,7 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
     plan.config.device = o.device;
     plan.config.development = knobs;
     if (!o.kernel_dir.empty()) plan.config.development.kernel_dir = o.kernel_dir;  // the option wins over ORB_KERNEL_DIR
+    plan.kernel = render::kernel_identity(plan.config.development);
     plan.config.use_binary_cache = !o.no_cache;
     // A build from source takes seconds (tens on a CPU): said once, whatever the devices and frames.
     plan.config.on_slow_kernel_build = [cached = !o.no_cache, said = std::make_shared<std::once_flag>()] {
@@ -310,6 +319,7 @@ exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame) {
     // --passes with the denoiser's guides, or adaptive sampling's variance and counts.
     if (plan.denoise || plan.adaptive.any()) request.passes = plan.passes;
     request.adaptive = exr::RenderRequest::Adaptive{plan.adaptive.noise_threshold, plan.adaptive.target_error};
+    request.kernel = plan.kernel;
     request.scene = [&plan, frame] {
         if (frame && !posed_at(plan, *frame)) pose_frame(plan, *frame);
         return request::scene_identity(plan.scene, plan.scene_hash, plan.config.width, plan.config.height);
@@ -322,10 +332,11 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.target_spp = plan.target_spp;
     m.seed = plan.config.seed;
     m.max_depth = plan.config.max_depth;
-    m.mode = mode_name(plan.config.mode);
-    m.sampler = sampler_name(plan.config.sampler);
+    m.mode = device::name_in(device::kIntegratorModeNames, plan.config.mode);
+    m.sampler = device::name_in(device::kSamplerNames, plan.config.sampler);
     m.scene_file = plan.scene_label;
     m.scene_hash = plan.scene_hash;
+    m.kernel = plan.kernel;
     m.environment_seen = environment_emits(plan.scene.environment);
     m.scene_time = plan.scene_time;
     m.version = cli::version_string();

@@ -16,7 +16,7 @@
 #include "orb/render/renderer.h"
 #include "orb/request/request_settings.h"
 #include "orb/scene/scene.h"
-#include "orb/scene/sphere_styling.h"
+#include "orb/import/sphere_styling.h"
 #include "render_options.h"
 
 namespace orb::render_cli {
@@ -43,6 +43,7 @@ struct RenderPlan {
     Scene scene;                // at scene_time
     std::string scene_label;    // the path, or <stdin>
     std::string scene_hash;     // orb::scene_content_hash(scene)
+    std::string kernel;         // orb:kernel, the kernels this run builds (orb/render/kernel_identity.h)
     double read_seconds = 0;    // reading, importing, posing and hashing the scene (set by the caller that timed it)
     double scene_time = 0;
     render::RenderConfig config;

@@ -2,7 +2,8 @@
 
 #include "orb/cli/messages.h"
 #include "orb/cli/texture_decoder_loader.h"
-#include "orb/scene/importers.h"
+#include "orb/import/gltf.h"
+#include "orb/import/importers.h"
 
 namespace orb::cli {
 
@@ -25,8 +26,8 @@ bool any_scene_reading_option(const SceneReading& reading) {
 
 ImportOptions import_options_for(const SceneReading& reading) {
     ImportOptions options = reading.import;
-    if (!reading.environment.value.empty()) options.gltf.default_light = false;  // the chosen environment lights it
-    options.gltf.image_decoder = texture_decoder();
+    if (!reading.environment.value.empty()) options.of<GltfImportOptions>().default_light = false;  // the chosen environment lights it
+    options.of<GltfImportOptions>().image_decoder = texture_decoder();
     return options;
 }
 

@@ -8,6 +8,7 @@
 #include "orb/cli/tool_main.h"
 #include "orb/exr/passes.h"
 #include "orb/film/sample_ranges.h"
+#include "orb/tables/render_names.h"
 
 namespace orb::request {
 namespace {
@@ -64,9 +65,9 @@ void add_request_options(CLI::App& app, RequestOptions& o) {
         ->check(kSampleRange);
     app.add_option("--seed", o.seed, "Random seed, 0 ... 2^64-1 (default 0)")->check(kSeed);
     app.add_option("--mode", o.mode, "Light transport: global (path tracing, default) or direct")
-        ->check(CLI::IsMember({"global", "direct"}));
+        ->check(CLI::IsMember(device::names_in(device::kIntegratorModeNames)));
     app.add_option("--sampler", o.sampler, "Random numbers: sobol (low discrepancy, default) or independent")
-        ->check(CLI::IsMember({"sobol", "independent"}));
+        ->check(CLI::IsMember(device::names_in(device::kSamplerNames)));
     app.add_option("--max-depth", o.max_depth, "Maximum path depth (default: the scene's render.max_depth)")
         ->check(CLI::Range(0, 1024));
     app.add_option("--width", o.width, "Image width (default: the scene's render.width)")->check(CLI::Range(1, 65536));

@@ -1,6 +1,7 @@
 #include "orb/request/request_settings.h"
 
 #include "orb/film/sample_ranges.h"
+#include "orb/tables/render_names.h"
 
 namespace orb::request {
 namespace {
@@ -67,8 +68,8 @@ RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* s
         s.spp = slice.count;
     }
     s.seed = o.seed.value_or(0);
-    s.mode = o.mode.value_or("global");
-    s.sampler = o.sampler.value_or("sobol");
+    if (o.mode) s.mode = *o.mode;  // else the table's default (request_settings.h)
+    if (o.sampler) s.sampler = *o.sampler;
     if (o.passes) s.passes = exr::parse_passes(*o.passes);
     s.half = o.half;
     s.fps = o.fps.value_or(kDefaultFps);

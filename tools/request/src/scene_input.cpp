@@ -10,10 +10,11 @@
 #include "orb/exr/camera_matrices.h"
 #include "orb/exr/environment_map.h"
 #include "orb/scene/animation.h"
-#include "orb/scene/import.h"
-#include "orb/scene/importers.h"
+#include "orb/import/import.h"
+#include "orb/import/importers.h"
+#include "orb/import/molecular.h"
 #include "orb/scene/error.h"
-#include "orb/scene/numbered_series.h"
+#include "orb/import/numbered_series.h"
 #include "orb/scene/scene_json.h"
 
 namespace orb::request {
@@ -94,7 +95,7 @@ std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, cons
     }
     // Checked before the trajectory is scanned.
     std::optional<Environment> environment = chosen_environment(reading, scene_folder(path), path);
-    const MolecularImportOptions& options = reading.import.molecular;
+    const MolecularImportOptions& options = reading.import.of<MolecularImportOptions>();
     std::unique_ptr<FrameSource> frames =
         series ? open_molecular_series(path, options) : open_molecular_file(path, format, options);
     if (environment) frames = std::make_unique<EnvironmentLitFrames>(std::move(frames), std::move(*environment));

@@ -7,7 +7,7 @@
 namespace orb::kernels {
 
 struct EmbeddedKernel {
-    std::string_view file_name;  // relative to kernels/: "rng.cl", "include/orb/kernels/device_types.h"
+    std::string_view file_name;  // relative to kernels/: "rng.cl", "include/orb/tables/device_types.h"
     std::string_view source;
 };
 

@@ -15,7 +15,8 @@
 #include "orb/exr/camera_matrices.h"
 #include "orb/exr/passes.h"
 #include "orb/film/film.h"
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
+#include "orb/tables/render_names.h"
 
 namespace orb::exr {
 
@@ -45,8 +46,9 @@ struct ExrMetadata {
     std::uint64_t target_spp = 0;  // orb:targetSpp, where an interrupted render was heading
     std::uint64_t seed = 0;        // orb:seed (a decimal string: 64 bits do not fit an int attribute)
     int max_depth = 0;             // orb:maxDepth
-    std::string mode;              // orb:mode, "global" or "direct"
-    std::string sampler = "sobol"; // orb:sampler, "sobol" or "independent" (absent: independent, the only one before)
+    std::string mode;              // orb:mode, a name of orb/tables/render_names.h's kIntegratorModeNames
+    // orb:sampler, a name of kSamplerNames (absent: independent, the only one before)
+    std::string sampler{device::kSamplerNames.front().name};
     std::string device;            // orb:device
     double render_seconds = 0;     // orb:renderSeconds, summed over resumed runs
     std::string scene_file;        // orb:sceneFile
@@ -70,6 +72,10 @@ struct ExrMetadata {
     // estimate below the target error, before orb:targetSpp; it is
     // finished (render_request.h). Absent: it did not (yet).
     std::optional<AdaptiveStop> adaptive_stop;
+    // orb:kernel: which kernels rendered it (orb/render/kernel_identity.h),
+    // so that the samples of different kernels are never combined. Empty:
+    // not known (a file an older Orb wrote, or a tool that renders nothing).
+    std::string kernel;
 };
 
 // Only lossless compressions: a resumed or merged render rebuilds the

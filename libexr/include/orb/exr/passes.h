@@ -1,13 +1,13 @@
 // The layers ("passes") orb-render can write, their EXR channel names, and
 // the comma-separated form users type (--passes beauty,albedo). All of it
 // comes from the film's channel table (ORB_FILM_LAYERS and ORB_FILM_CHANNELS
-// in kernels/include/orb/kernels/film_channels.h).
+// in libtables/include/orb/tables/film_channels.h).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 
 namespace orb::exr {
 

@@ -55,6 +55,10 @@ struct RenderRequest {
         std::optional<double> target_error;
     };
     std::optional<Adaptive> adaptive;
+    // The kernels that would render it (orb:kernel, orb/render/kernel_identity.h):
+    // a file another kernel rendered, or one that does not say, is another
+    // render. Absent: not compared (orb-frames renders nothing).
+    std::optional<std::string> kernel;
 };
 
 enum class OutputState {
@@ -77,6 +81,11 @@ struct OutputJudgement {
 OutputJudgement judge_output(const std::string& path, const RenderRequest& request,
                              RenderCheck check = RenderCheck::Structure);
 
-const char* state_name(OutputState state);  // "missing", "finished", "partial", "different"
+const char* state_name(OutputState state);
+
+// Why a file of the kernels `file_kernel` (orb:kernel; empty: it does not
+// say) is another render than one of `kernel`: "rendered by other kernels
+// (orb:kernel 1f..., these are 9a...)".
+std::string another_kernel(const std::string& file_kernel, const std::string& kernel);  // "missing", "finished", "partial", "different"
 
 }  // namespace orb::exr

@@ -5,7 +5,7 @@
 // grouping (docs/design/exact-film-sums.md).
 //
 // Its channels are the rows of the one channel table, ORB_FILM_CHANNELS in
-// kernels/include/orb/kernels/film_channels.h (what each holds, how it is
+// libtables/include/orb/tables/film_channels.h (what each holds, how it is
 // cleared, accumulated, merged and stored): one member per row, of the
 // row's name (radiance, alpha, direct, ..., depth, object_id): a Sum
 // channel's a std::vector<film::Sum> in the units of its `units` column, a
@@ -23,7 +23,7 @@
 
 #include "orb/film/film_sums.h"
 #include "orb/film/sample_ranges.h"
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 
 namespace orb {
 

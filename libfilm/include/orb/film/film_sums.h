@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "orb/kernels/film_channels.h"
+#include "orb/tables/film_channels.h"
 
 namespace orb::film {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "orb/film/film.h"
-#include "orb/kernels/adaptive_decision.h"
+#include "orb/tables/adaptive_decision.h"
 
 namespace orb::film {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "orb/image/image.h"
-#include "orb/scene/sphere_styling.h"
+#include "orb/import/sphere_styling.h"
 
 namespace orb::image {
 

@@ -1,6 +1,6 @@
 // Render passes inside a (multi-layer) image: orb-render's EXR layout (its
 // layers, their names and kinds, from the film's channel table in
-// kernels/include/orb/kernels/film_channels.h) is
+// libtables/include/orb/tables/film_channels.h) is
 //   beauty R,G,B,A   direct.R/G/B   indirect.R/G/B   emission.R/G/B
 //   albedo.R/G/B     N.X/Y/Z        Z                variance.R/G/B   id
 //   background.R/G/B

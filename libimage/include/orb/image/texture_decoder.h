@@ -2,7 +2,7 @@
 // backed by OpenImageIO: PNG and JPEG from memory, no temporary files.
 #pragma once
 
-#include "orb/scene/image_decoder.h"
+#include "orb/import/image_decoder.h"
 
 namespace orb::image {
 

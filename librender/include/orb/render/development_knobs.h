@@ -3,8 +3,8 @@
 // from here (RenderConfig::development); the tools fill them in from the
 // environment variables named below, in one place at their boundary
 // (tools/common: orb/cli/development_knobs.h), so that a script can set one
-// without a command-line option for it. docs/rendering.md, "Development
-// knobs", lists them with examples.
+// without a command-line option for it. docs/design/development-knobs-and-dev.md,
+// "The knobs", lists them with examples.
 #pragma once
 
 #include <memory>

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "orb/kernels/device_types.h"
+#include "orb/tables/device_types.h"
 #include "orb/render/development_knobs.h"
 #include "orb/render/device.h"
 #include "orb/film/film.h"
@@ -28,7 +28,7 @@
 namespace orb::render {
 
 // Global (path tracing) or Direct (the paper's local illumination): the
-// kernels' enum, from kernels/include/orb/kernels/device_types.h.
+// kernels' enum, from libtables/include/orb/tables/device_types.h.
 using IntegratorMode = device::IntegratorMode;
 // Sobol (low discrepancy, the default) or Independent (Philox): the kernels' enum.
 using SamplerKind = device::SamplerKind;

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "orb/kernels/material_kinds.h"
+#include "orb/tables/material_kinds.h"
 #include "orb/scene/animation.h"
 #include "orb/scene/sphere_attributes.h"
 #include "orb/scene/vec3.h"
@@ -17,7 +17,7 @@
 namespace orb {
 
 // How a material scatters light: one enumerator per row of ORB_MATERIAL_TABLE
-// (kernels/include/orb/kernels/material_kinds.h), with the table's values, so
+// (libtables/include/orb/tables/material_kinds.h), with the table's values, so
 // the scene model names the kernels' kinds without depending on the device's
 // record layouts. librender converts it to the device's MaterialKind by value
 // (checked row by row there).

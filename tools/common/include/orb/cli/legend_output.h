@@ -12,7 +12,7 @@
 #include "orb/cli/output_file.h"
 #include "orb/cli/output_overlap.h"
 #include "orb/cli/sphere_style_options.h"
-#include "orb/scene/sphere_styling.h"
+#include "orb/import/sphere_styling.h"
 
 namespace orb::cli {
 

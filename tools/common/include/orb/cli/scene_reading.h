@@ -1,7 +1,7 @@
 // The options that shape the scene a tool reads, the same in every tool that
 // reads one (orb-import, orb-render, orb-frames --scene; orb-farm hands them
 // to orb-render): every importer's option group, as the importer declares it
-// (orb/scene/importers.h), and --environment with its intensity and rotation.
+// (orb/import/importers.h), and --environment with its intensity and rotation.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "orb/cli/environment_options.h"
-#include "orb/scene/import.h"
+#include "orb/import/import.h"
 
 namespace orb::cli {
 

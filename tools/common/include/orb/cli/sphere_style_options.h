@@ -1,14 +1,14 @@
 // The options that colour and size spheres by their properties (--color-by,
 // --colormap, --color-range, --radius-by, --radius-range, --radius-scale,
 // --material), shared by orb-import and orb-render; the rules are libscene's
-// (orb/scene/sphere_styling.h, docs/orb-import.md "Colour and size by property").
+// (orb/import/sphere_styling.h, docs/orb-import.md "Colour and size by property").
 #pragma once
 
 #include <string>
 
 #include <CLI/CLI.hpp>
 
-#include "orb/scene/sphere_styling.h"
+#include "orb/import/sphere_styling.h"
 
 namespace orb::cli {
 

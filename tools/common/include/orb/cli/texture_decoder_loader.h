@@ -5,7 +5,7 @@
 // it still renders every untextured scene (docs/design/texture-decoding.md).
 #pragma once
 
-#include "orb/scene/image_decoder.h"
+#include "orb/import/image_decoder.h"
 
 namespace orb::cli {
 

@@ -13,6 +13,7 @@
 #include "orb/exr/render_request.h"
 #include "orb/request/request_options.h"
 #include "orb/scene/scene.h"
+#include "orb/tables/render_names.h"
 
 namespace orb::request {
 
@@ -40,8 +41,8 @@ struct RequestSettings {
     bool slice = false;                // --sample-range: exactly [first_sample, first_sample + spp)
     std::uint64_t first_sample = 0;
     std::uint64_t seed = 0;            // --seed, the base of every frame's own seed
-    std::string mode = "global";
-    std::string sampler = "sobol";
+    std::string mode{device::kIntegratorModeNames.front().name};  // each table's first row is the default
+    std::string sampler{device::kSamplerNames.front().name};
     std::vector<exr::Pass> passes = default_passes();
     bool half = false;
     double fps = kDefaultFps;

@@ -12,7 +12,7 @@
 #include "orb/exr/render_request.h"
 #include "orb/request/request_settings.h"
 #include "orb/scene/error.h"
-#include "orb/scene/molecular.h"
+#include "orb/import/molecular.h"
 #include "orb/scene/scene.h"
 
 namespace orb::request {
@@ -26,7 +26,7 @@ Scene read_scene(const std::string& path, std::string& label, const cli::SceneRe
 // A molecular or particle file (PDB, mmCIF, XYZ, LAMMPS dump, .gro: its
 // content or name says so) opened frame by frame: frame f of --frames is
 // frame f of the file, counted from 1, read from the file when it is
-// rendered. A numbered series ("dump.*.lammpstrj", orb/scene/numbered_series.h)
+// rendered. A numbered series ("dump.*.lammpstrj", orb/import/numbered_series.h)
 // is one trajectory of its files' frames. Null for any other scene, and for
 // stdin (read whole by read_scene, which takes its first frame). Every frame
 // has the environment `reading` chooses. Prints the reader's warnings.
