@@ -1,12 +1,12 @@
 #include "orb/denoise/denoise_film.h"
 
-#include <algorithm>
 #include <array>
 #include <chrono>
 #include <span>
 
 #include "denoise_inputs.h"
 #include "orb/denoise/denoise_exr.h"
+#include "orb/film/parallel_blocks.h"
 
 namespace orb::denoise {
 namespace {
