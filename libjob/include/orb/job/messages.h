@@ -8,7 +8,7 @@
 
 namespace orb::job {
 
-enum class MessageKind { Info, Warning };
+enum class MessageKind { Info, Warning, Error };
 
 // None: the messages are dropped.
 using MessageSink = std::function<void(MessageKind, const std::string&)>;

@@ -22,6 +22,7 @@
 #include "orb/exr/passes.h"
 #include "orb/film/film.h"
 #include "orb/job/messages.h"
+#include "orb/job/run_stats.h"
 #include "orb/scene/scene.h"
 
 namespace orb::job {
@@ -100,6 +101,7 @@ struct RenderedImage {
     exr::ExrWriteOptions options;  // layers, HALF, compression (orb-render's default, ZIP) and exact sums
     std::shared_ptr<denoise::Denoiser> denoiser;  // --denoise: computes the `denoised` layer when encoded
     bool stopped = false;  // stopped short (the callback, the cancel flag or the time limit), not finished
+    RunStats stats;        // what orb-render --stats-json says of it (no output path)
 
     // Each layer as the EXR holds it: beauty, the requested passes, and
     // `denoised` when asked (not the exact sums, which are internal).
@@ -113,6 +115,11 @@ struct RenderedImage {
 };
 
 // Renders `scene` (at its rest pose, time 0) as orb-render renders a still.
+// The scene is taken as orb-render has it once read: its environment map's
+// texels loaded (orb::exr::load_environment_map), as orb::import_scene's
+// callers do. The development knobs of the environment (ORB_CL_OPTIONS,
+// ORB_KERNEL_DIR, ...) are not read: an embedding renders with the
+// installed kernels, as orb-render does without them.
 // Returns once the render reaches its samples, time limit or adaptive
 // goal, the callback returns false, or *cancel becomes true (checked after
 // each pass). Throws orb::InputError for a scene or settings orb-render
