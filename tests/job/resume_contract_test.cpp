@@ -22,6 +22,15 @@ protected:
         options.resume = file;
         return options;
     }
+    // The plan is refused with a message that says `why`.
+    void expect_refused(const Scene& scene, const PlanOptions& options, const std::string& why) {
+        try {
+            plan(scene, options);
+            ADD_FAILURE() << "continued although " << why;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+        }
+    }
 };
 
 TEST_F(ResumeContract, ContinuesTheSameRenderWithItsSettings) {
@@ -40,12 +49,7 @@ TEST_F(ResumeContract, RefusesAnotherScene) {
     const std::string file = partial(scene);
     Scene moved = scene;
     moved.spheres[1].center[0] += 0.25;
-    try {
-        plan(moved, resume(file));
-        FAIL() << "a film of another scene was continued";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("was rendered from a different scene"), std::string::npos) << e.what();
-    }
+    expect_refused(moved, resume(file), "was rendered from a different scene");
 }
 
 TEST_F(ResumeContract, RefusesAnotherSeedOrSize) {
@@ -53,16 +57,10 @@ TEST_F(ResumeContract, RefusesAnotherSeedOrSize) {
     const std::string file = partial(scene);
     PlanOptions seed = resume(file);
     seed.given.seed = 8;
-    try {
-        plan(scene, seed);
-        FAIL() << "a film of another seed was continued";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("--seed 8 differs from the resumed render's orb:seed 7"), std::string::npos)
-            << e.what();
-    }
+    expect_refused(scene, seed, "--seed 8 differs from the resumed render's orb:seed 7");
     PlanOptions width = resume(file);
     width.given.width = 16;
-    EXPECT_THROW(plan(scene, width), InputError);
+    expect_refused(scene, width, "--width 16 differs from the resumed render's width 8");
     // The same value may be repeated.
     PlanOptions same = resume(file);
     same.given.seed = 7;
@@ -74,12 +72,7 @@ TEST_F(ResumeContract, RefusesFewerSamplesThanTheFileHolds) {
     const Scene scene = orb::test::small_scene();
     PlanOptions fewer = resume(partial(scene));
     fewer.given.spp = 1;
-    try {
-        plan(scene, fewer);
-        FAIL() << "a film was continued to fewer samples than it holds";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("already holds 2 samples per pixel"), std::string::npos) << e.what();
-    }
+    expect_refused(scene, fewer, "already holds 2 samples per pixel");
 }
 
 TEST_F(ResumeContract, RendersAFilmOfAnotherKernelAgainWithTheReason) {
@@ -94,6 +87,30 @@ TEST_F(ResumeContract, RendersAFilmOfAnotherKernelAgainWithTheReason) {
     EXPECT_EQ(again.config.seed, 7u);  // the file's settings stay
     ASSERT_EQ(messages_.size(), 1u);
     EXPECT_NE(messages_[0].find("rendering it again from its first sample"), std::string::npos) << messages_[0];
+}
+
+TEST_F(ResumeContract, ASliceContinuesOnlyFromItsStart) {
+    const Scene scene = orb::test::small_scene();
+    PlanOptions slice = still_options(scene, 8, 6, 4, 7);
+    slice.given.sample_range = SampleRange{2, 2};
+    slice.settings = resolve_settings(slice.given, &scene.render);
+    RenderPlan first = plan(scene, slice);
+    FilmOutcome stopped = run(first, 1);
+    EXPECT_EQ(stopped.stats.sample_ranges, "2:1");
+    const std::string file = save(stopped, "slice.exr");
+
+    PlanOptions same = resume(file);
+    same.given.sample_range = SampleRange{2, 2};
+    same.sample_range_text = "2:2";
+    RenderPlan rest = plan(scene, same);
+    EXPECT_TRUE(rest.slice);
+    EXPECT_EQ(rest.target_spp, 2u);
+    EXPECT_EQ(run(rest).stats.sample_ranges, "2:2");
+
+    PlanOptions other = resume(file);
+    other.given.sample_range = SampleRange{0, 2};
+    other.sample_range_text = "0:2";
+    expect_refused(scene, other, "holds the samples 2:1, not the start of --sample-range 0:2");
 }
 
 }  // namespace

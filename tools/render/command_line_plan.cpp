@@ -10,29 +10,14 @@ namespace {
 
 job::PlanOptions plan_options(const RenderOptions& o, const Scene& imported) {
     job::PlanOptions plan;
-    job::GivenSettings& given = plan.given;
-    given.width = o.width;
-    given.height = o.height;
-    given.max_depth = o.max_depth;
-    given.spp = o.spp;
-    if (o.sample_range) given.sample_range = parse_sample_range(*o.sample_range);
+    plan.given = request::given_settings(o);
     plan.sample_range_text = o.sample_range.value_or("");
-    given.seed = o.seed;
-    given.mode = o.mode;
-    given.sampler = o.sampler;
-    if (o.passes) given.passes = exr::parse_passes(*o.passes);
-    given.half = o.half;
-    given.fps = o.fps;
-    given.same_seed = o.same_seed;
     plan.time_at = o.time_at;
     if (o.resume.empty()) {
         // The render block (size, spp, depth) is not animated: any pose has the rest pose's.
         plan.settings = request::resolve_request(o, &imported.render, o.frames ? &*o.frames : nullptr, renders_frames(o));
     } else {
-        // --orbit needs frames, which --resume excludes: the camera options alone.
-        plan.resume_camera.apply = [camera = o.camera](Scene& posed, int width, int height, const std::string& label) {
-            cli::apply_camera_options(camera, posed, width, height, label);
-        };
+        plan.resume_camera = request::camera_request(o.camera);  // --orbit needs frames, which --resume excludes
     }
     if (renders_frames(o)) plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
     plan.resume = o.resume;

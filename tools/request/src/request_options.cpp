@@ -99,8 +99,7 @@ void check_request_options(const RequestOptions& o) {
                               std::to_string(*o.spp));
 }
 
-job::RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* scene,
-                                     const std::string* animation_frames, bool renders_frames) {
+job::GivenSettings given_settings(const RequestOptions& o) {
     job::GivenSettings given;
     given.width = o.width;
     given.height = o.height;
@@ -114,10 +113,21 @@ job::RequestSettings resolve_request(const RequestOptions& o, const RenderSettin
     given.half = o.half;
     given.fps = o.fps;
     given.same_seed = o.same_seed;
-    job::RequestSettings s = job::resolve_settings(given, scene);
-    s.camera.apply = [camera = o.camera](Scene& posed, int width, int height, const std::string& label) {
+    return given;
+}
+
+job::CameraRequest camera_request(const cli::CameraOptions& camera) {
+    job::CameraRequest request;
+    request.apply = [camera](Scene& posed, int width, int height, const std::string& label) {
         cli::apply_camera_options(camera, posed, width, height, label);
     };
+    return request;
+}
+
+job::RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* scene,
+                                     const std::string* animation_frames, bool renders_frames) {
+    job::RequestSettings s = job::resolve_settings(given_settings(o), scene);
+    s.camera = camera_request(o.camera);
     if (std::optional<cli::Orbit> orbit = cli::resolve_orbit(o.orbit, animation_frames, renders_frames))
         s.camera.turn = [orbit = *orbit](const Camera& camera, long frame) { return orbit.turn(camera, frame); };
     return s;

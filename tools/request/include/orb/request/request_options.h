@@ -40,6 +40,13 @@ void add_request_options(CLI::App& app, RequestOptions& options);
 // --spp); throws orb::cli::UsageError.
 void check_request_options(const RequestOptions& options);
 
+// The options as given, for the render job (a resumed render compares them
+// with its file).
+job::GivenSettings given_settings(const RequestOptions& options);
+
+// The camera options as the render job applies them (no orbit: a still's).
+job::CameraRequest camera_request(const cli::CameraOptions& camera);
+
 // What the render job is asked for (orb/job/request_settings.h): each
 // option given, else `scene_render` (the scene's render block, or null when
 // the scene is not read), else Orb's default; the camera options and the
