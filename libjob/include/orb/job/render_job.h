@@ -35,7 +35,9 @@ struct StillSettings {
     // Samples per pixel; 0: the scene's render block, as orb-render without --spp.
     std::uint64_t spp = 64;
     std::uint64_t seed = 0;                // as --seed
-    std::string device = "default";        // as --device ("default", "all", "gpu", "cpu", an index or a list)
+    // As --device: "default" (or ""): the fastest GPU, else the CPU; "all";
+    // an index of list_devices(), a name's substring, or a comma-separated list.
+    std::string device = "default";
     // The layers asked for, as --passes; --denoise adds its guides (albedo,
     // normal) and adaptive sampling its layers, as orb-render does.
     std::vector<exr::Pass> passes = {exr::Pass::Beauty};
