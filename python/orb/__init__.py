@@ -1,0 +1,117 @@
+"""Orb from Python: scenes of spheres from files or numpy arrays (docs/python.md).
+
+The module binds Orb's libraries (pybind11, orb._orb); it never runs the tools.
+Keyword options are orb-import's long options with ``_`` for ``-``
+(``orb.load("cloud.ply", color_by="temperature", radius=0.01)``) and are checked
+by the same code, with the same messages.
+"""
+
+import warnings as _warnings
+
+import numpy as _np
+
+from . import _orb
+from ._orb import Camera, Error, Scene, devices
+
+__all__ = ["Camera", "Error", "Scene", "devices", "load"]
+
+
+def _option_word(value):
+    """A keyword's value as the command line writes it; None: a flag."""
+    if isinstance(value, (str, bytes)):
+        return value.decode() if isinstance(value, bytes) else value
+    if isinstance(value, (bool, _np.bool_)):
+        raise AssertionError("flags are handled by _keyword_options")
+    if isinstance(value, _np.ndarray) or isinstance(value, (list, tuple)):
+        return ",".join(_option_word(v) for v in _np.asarray(value).ravel().tolist())
+    if isinstance(value, (float, _np.floating)):
+        return repr(float(value))
+    return str(value)
+
+
+def _keyword_options(options):
+    """[(name, value word or None)]: True is a flag given; False and None leave an option out."""
+    words = []
+    for name, value in options.items():
+        if value is None or value is False or (isinstance(value, _np.bool_) and not value):
+            continue
+        words.append((name, None if value is True or isinstance(value, _np.bool_) else _option_word(value)))
+    return words
+
+
+def _warn(messages):
+    for message in messages:
+        _warnings.warn(message, stacklevel=3)
+
+
+def load(path, **options):
+    """Reads any scene Orb reads (orb-import --list-formats) as orb-import does.
+
+    ``options`` are orb-import's options by their long names with ``_``:
+    ``color_by``, ``colormap``, ``radius``, ``frame``, ``environment``,
+    ``look_at``, ``auto_camera=True``, ... What orb-import would warn about is a
+    Python warning. Raises FileNotFoundError, ValueError (a bad option) or
+    orb.Error (a bad file) with orb-import's message.
+    """
+    import os
+
+    scene, messages = Scene._load(os.fspath(path), _keyword_options(options))
+    _warn(messages)
+    return scene
+
+
+def _from_arrays(centers, radii, colors=None, materials=None, properties=None):
+    """A scene of spheres from arrays: centers (N, 3), radii (N,) or a number.
+
+    colors: None or (N, 3) display (sRGB-encoded) values in [0, 1], as
+    matplotlib's. materials: None (a grey diffuse material), a preset
+    ("matte", "plastic", "metal") or a dict of the scene format's material keys
+    (type, color, emission, ior, roughness, metallic) for every sphere.
+    properties: {name: (N,) numbers, or (N,) strings for a category}, for
+    ``load``'s colour and radius options' counterparts in orb-import.
+    The camera and two lights are placed as for a PLY point cloud.
+    """
+    listed = []
+    for name, values in (properties or {}).items():
+        array = _np.asarray(values)
+        if array.dtype.kind in "USO":
+            labels, indices = _np.unique(array.astype(str), return_inverse=True)
+            listed.append((str(name), indices.astype(_np.float64), [str(label) for label in labels]))
+        else:
+            listed.append((str(name), array, []))
+    return Scene._from_arrays(centers, radii, colors, materials, listed)
+
+
+def _set_camera(self, **options):
+    """Changes the camera by orb-import's camera options: camera_position, look_at,
+    up, vfov, aperture, focus_distance, orthographic, perspective=True,
+    auto_camera=True (frames the spheres anew for the scene's image)."""
+    self._set_camera(_keyword_options(options))
+
+
+def _set_environment(self, value, intensity=1.0, rotation=0.0):
+    """Lights the scene from infinitely far away, as --environment does: an
+    (R, G, B) radiance, one number, an OpenEXR map's path, or None for none."""
+    if value is None:
+        self._set_environment([])
+        return
+    self._set_environment(
+        _keyword_options({"environment": value, "environment_intensity": intensity, "environment_rotation": rotation})
+    )
+
+
+Scene.from_arrays = staticmethod(_from_arrays)
+Scene.set_camera = _set_camera
+Scene.set_environment = _set_environment
+
+
+def _save(self, path):
+    """Writes the scene: a .json name the Orb JSON scene, a .orb name its binary
+    form (for millions of spheres), as orb-import writes them; a previous file
+    survives any failure."""
+    import os
+
+    self._save(os.fspath(path))
+
+
+Scene.save = _save
