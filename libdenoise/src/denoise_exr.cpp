@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "denoise_inputs.h"
-#include "exr_memory_streams.h"
+#include "orb/denoise/exr_memory_streams.h"
 #include "orb/exr/codec_threads.h"
 #include "orb/tables/film_channels.h"
 #include "orb/scene/error.h"

@@ -1,4 +1,4 @@
-#include "exr_memory_streams.h"
+#include "orb/denoise/exr_memory_streams.h"
 
 #include <Iex.h>
 

@@ -22,6 +22,12 @@ set(forbidden_orb_image ${opencl} orb_exr)
 # The denoiser reads and writes EXR through OpenEXR and loads OIDN at run time:
 # no OpenCL, no OpenImageIO or OpenColorIO, and it links no OIDN.
 set(forbidden_orb_denoise ${opencl} orb_import orb_image OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
+# The render job sits under every front end and reads no command line: none
+# of the tools' own libraries (CLI11 reaches it only as libimport's private
+# option groups); and no image formats but EXR (no libimage, OpenImageIO or
+# OpenColorIO).
+set(forbidden_orb_job orb_cli orb_request_cli orb_cli_development_knobs orb_image
+    OpenImageIO::OpenImageIO OpenColorIO::OpenColorIO)
 
 # Everything `library` reaches: its links and, for Orb's own libraries, theirs.
 function(reach library out)

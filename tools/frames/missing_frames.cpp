@@ -1,5 +1,6 @@
 #include "missing_frames.h"
 
+#include "orb/job/scene_pose.h"
 #include "orb/request/scene_input.h"
 #include "orb/scene/scene_json.h"
 
@@ -15,8 +16,8 @@ MissingFrames::MissingFrames(const std::string& scene_path, const request::Reque
     trajectory_ = request::open_trajectory(scene_path, reading);
     if (trajectory_) {
         label_ = scene_path;
-        scene_ = request::for_frame(1, [&] { return request::trajectory_frame(*trajectory_, 1, label_); });
-        styled_ = request::for_frame(1, [&] { return apply_sphere_styling(*scene_, style_, label_); });
+        scene_ = job::for_frame(1, [&] { return job::trajectory_frame(*trajectory_, 1, label_); });
+        styled_ = job::for_frame(1, [&] { return apply_sphere_styling(*scene_, style_, label_); });
     } else {
         scene_ = request::read_scene(scene_path, label_, reading);
         styled_ = apply_sphere_styling(*scene_, style_, label_);
@@ -29,18 +30,18 @@ exr::SceneIdentity MissingFrames::identity_at(long frame) {
     // A frame past a trajectory's end is an error, as in orb-render.
     // A trajectory's frame 1 is the scene read and styled already.
     const bool read_frame = trajectory_ && frame != 1;
-    Scene posed = request::for_frame(frame, [&] {
-        Scene scene = read_frame   ? request::trajectory_frame(*trajectory_, frame, label_)
+    Scene posed = job::for_frame(frame, [&] {
+        Scene scene = read_frame   ? job::trajectory_frame(*trajectory_, frame, label_)
                       : trajectory_ ? *scene_
-                                    : request::pose_scene(*scene_, request::frame_time(frame, settings_.fps), label_);
+                                    : job::pose_scene(*scene_, job::frame_time(frame, settings_.fps), label_);
         if (read_frame) apply_sphere_styling(scene, style_, label_);
-        request::apply_camera_request(scene, settings_, frame, label_);
+        job::apply_camera_request(scene, settings_, frame, label_);
         return scene;
     });
     exr::SceneIdentity identity =
-        request::scene_identity(posed, scene_content_hash(posed), *settings_.width, *settings_.height);
+        job::scene_identity(posed, scene_content_hash(posed), *settings_.width, *settings_.height);
     const bool frames_differ = trajectory_ && trajectory_->frame_count() > 1;
-    if (scene_->animation.empty() && !frames_differ && !request::camera_moves(settings_)) still_identity_ = identity;
+    if (scene_->animation.empty() && !frames_differ && !job::camera_moves(settings_)) still_identity_ = identity;
     return identity;
 }
 

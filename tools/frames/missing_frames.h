@@ -10,7 +10,7 @@
 #include "orb/cli/scene_reading.h"
 #include "orb/exr/render_request.h"
 #include "orb/request/request_options.h"
-#include "orb/request/request_settings.h"
+#include "orb/job/request_settings.h"
 #include "orb/import/molecular.h"
 #include "orb/scene/scene.h"
 #include "orb/import/sphere_styling.h"
@@ -44,7 +44,7 @@ private:
     std::string label_;
     SphereStyleOptions style_;
     SphereStyleResult styled_;
-    request::RequestSettings settings_;
+    job::RequestSettings settings_;
     std::optional<exr::SceneIdentity> still_identity_;  // a scene without animation or orbit is the same at every frame
 };
 

@@ -9,9 +9,9 @@
 #include "orb/cli/tool_main.h"
 #include "orb/import/importers.h"
 #include "render_options.h"
+#include "command_line_plan.h"
 #include "render_outputs.h"
 #include "render_frames.h"
-#include "render_plan.h"
 #include "render_run.h"
 
 int main(int argc, char** argv) {
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
             RenderPlan plan = make_render_plan(options, knobs);
             plan.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - reading).count();
             if (options.benchmark)
-                return renders_frames(options) ? run_frames_benchmark(plan, options, outputs)
+                return renders_frames(options) ? run_frames_benchmark(plan, options)
                                                : run_benchmark(plan, options, outputs);
             // Frames, and outputs left alone when complete, are prepared one at a time.
             if (renders_frames(options) || options.skip_existing || options.claim || options.missing)

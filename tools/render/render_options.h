@@ -34,7 +34,7 @@ struct RenderOptions : request::RequestOptions {
     bool benchmark = false;
     double benchmark_seconds = 5.0;
     std::optional<double> time_at;
-    // Animations (orb/request/request_settings.h).
+    // Animations (orb/job/request_settings.h).
     std::optional<std::string> frames;  // --frames SPEC
     std::optional<long> frame;          // --frame N
     bool skip_existing = false;

@@ -9,28 +9,20 @@
 #include "orb/cli/messages.h"
 #include "orb/cli/tool_main.h"
 #include "orb/render/progressive.h"
+#include "film_output.h"
+#include "orb/job/benchmarks.h"
 #include "progress_reporter.h"
-#include "render_film.h"
-#include "run_stats.h"
+#include "render_frames.h"
 
 namespace orb::render_cli {
 namespace {
 
-// The renderer for `plan`, and the seconds from reading the scene until it
-// could render: a million spheres take seconds before the first pass, and
-// the line below says where they went.
-struct ReadyRenderer {
-    std::unique_ptr<render::Renderer> renderer;
-    double setup_seconds = 0;
-};
-
-ReadyRenderer make_ready_renderer(const RenderPlan& plan) {
-    const auto began = std::chrono::steady_clock::now();
-    ReadyRenderer ready{std::make_unique<render::Renderer>(plan.scene, plan.config), 0};
-    const double construct = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-    ready.setup_seconds = plan.read_seconds + construct;
+// The renderer for `plan`, said as it is ready: a million spheres take
+// seconds before the first pass, and the line says where they went.
+job::ReadyRenderer said_ready_renderer(const RenderPlan& plan) {
+    job::ReadyRenderer ready = job::make_ready_renderer(plan);
     const render::Renderer& r = *ready.renderer;
-    cli::info(devices_line(r));
+    cli::info(job::devices_line(r));
     const render::Renderer::TreeReport tree = r.tree_report();
     const std::string spheres = std::to_string(plan.scene.spheres.size()) + " spheres";
     cli::info("ready in " + format_duration(ready.setup_seconds) + ": scene read and hashed in " +
@@ -38,14 +30,14 @@ ReadyRenderer make_ready_renderer(const RenderPlan& plan) {
               (tree.nodes ? "BVH of " + std::to_string(tree.nodes) + " nodes over " + spheres + " built in " +
                                 format_duration(tree.seconds)
                           : spheres + ", no BVH") +
-              ", kernels and upload " + format_duration(construct - tree.seconds));
+              ", kernels and upload " + format_duration(ready.construct_seconds - tree.seconds));
     return ready;
 }
 
 }  // namespace
 
 int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
-    const ReadyRenderer ready = make_ready_renderer(plan);
+    const job::ReadyRenderer ready = said_ready_renderer(plan);
     render::Renderer& renderer = *ready.renderer;
     if (plan.resumed) {
         renderer.load_film(plan.resumed->film);
@@ -60,20 +52,21 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
     // the kernel build, there is nothing to save and they end it at once.
     install_interrupt_handlers();
 
-    FilmOutcome outcome = render_film(renderer, plan, options, *outputs.image, "", nullptr);
+    OutputFileImage image(std::move(*outputs.image));
+    FilmOutcome outcome = render_film(renderer, plan, options, image, "", nullptr);
     if (!outcome.rendered) {
         cli::error("interrupted before the first pass finished; no image written");
         return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
     }
-    outputs.image->write(outcome.image.encode());
+    image.write(outcome.image.encode());
     if (outputs.stats) {
         RunStats stats = outcome.stats;
         stats.setup_seconds = ready.setup_seconds;
         if (outcome.image.denoise_times) stats.denoise = *outcome.image.denoise_times;
-        outputs.stats->write(stats_json(stats));
+        outputs.stats->write(job::stats_json(stats));
     }
 
-    const std::string summary = film_summary(outcome, renderer, *outputs.image);
+    const std::string summary = film_summary(outcome, renderer, image);
     if (outcome.reason == render::StopReason::Interrupted) {
         cli::warning("interrupted: wrote " + summary);
         return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
@@ -87,25 +80,38 @@ int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutpu
 }
 
 int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
-    const ReadyRenderer ready = make_ready_renderer(plan);
-    render::Renderer& renderer = *ready.renderer;
-    const render::BenchmarkResult result = render::run_benchmark(renderer, options.benchmark_seconds);
+    const job::StillBenchmark bench = job::run_still_benchmark(said_ready_renderer(plan), options.benchmark_seconds);
+    const render::BenchmarkResult& result = bench.result;
     cli::info("benchmark: " + std::to_string(result.samples) + " samples in " + format_duration(result.seconds) +
               " over " + std::to_string(result.passes) + " passes at " + std::to_string(plan.config.width) + "x" +
               std::to_string(plan.config.height));
-
-    if (outputs.stats) {
-        RunStats stats = renderer_stats(renderer);
-        stats.spp_this_run = stats.spp;
-        stats.samples_this_run = stats.samples;
-        stats.passes = result.passes;
-        stats.seconds = result.seconds;
-        stats.samples_per_second = result.samples_per_second;
-        stats.stop_reason = "benchmark";
-        stats.setup_seconds = ready.setup_seconds;
-        outputs.stats->write(stats_json(stats));
-    }
+    if (outputs.stats) outputs.stats->write(job::stats_json(bench.stats));
     std::printf("samples_per_second=%.0f\n", result.samples_per_second);
+    std::fflush(stdout);
+    return cli::kSuccess;
+}
+
+int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options) {
+    // Samples per frame: --spp, else 1.
+    const job::FramesBenchmark bench = job::run_frames_benchmark(
+        plan, jobs_of(plan, options), static_cast<int>(options.spp.value_or(1)),
+        [](const std::string& path) { return std::make_unique<OutputFileImage>(cli::OutputFile(path, "-o")); },
+        on_frames_renderer);
+    std::string line = "frames benchmark: " + std::to_string(bench.frames) + " frames at " +
+                       std::to_string(plan.config.width) + "x" + std::to_string(plan.config.height) + ", layers " +
+                       exr::format_passes(plan.passes) + (plan.half ? " (half)" : "") + ", " +
+                       exr::compression_name(plan.compression) + " " + std::to_string(bench.bytes_per_frame / 1000) +
+                       " kB a frame, " + job::kernel_builds_text(bench.kernel_builds) + "; per frame, mean (max) ms:";
+    char text[128];
+    const double n = static_cast<double>(bench.frames);
+    for (const job::FramesBenchmark::Phase& phase : bench.phases) {
+        std::snprintf(text, sizeof text, " %s %.1f (%.1f);", phase.name.c_str(), 1000.0 * phase.total / n,
+                      1000.0 * phase.most);
+        line += text;
+    }
+    cli::info(line);
+    // The time a frame adds to the render path besides its samples.
+    std::printf("frame_overhead_ms=%.1f\n", bench.overhead_ms);
     std::fflush(stdout);
     return cli::kSuccess;
 }

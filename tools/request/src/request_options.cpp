@@ -99,4 +99,28 @@ void check_request_options(const RequestOptions& o) {
                               std::to_string(*o.spp));
 }
 
+job::RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* scene,
+                                     const std::string* animation_frames, bool renders_frames) {
+    job::GivenSettings given;
+    given.width = o.width;
+    given.height = o.height;
+    given.max_depth = o.max_depth;
+    given.spp = o.spp;
+    if (o.sample_range) given.sample_range = parse_sample_range(*o.sample_range);
+    given.seed = o.seed;
+    given.mode = o.mode;
+    given.sampler = o.sampler;
+    if (o.passes) given.passes = exr::parse_passes(*o.passes);
+    given.half = o.half;
+    given.fps = o.fps;
+    given.same_seed = o.same_seed;
+    job::RequestSettings s = job::resolve_settings(given, scene);
+    s.camera.apply = [camera = o.camera](Scene& posed, int width, int height, const std::string& label) {
+        cli::apply_camera_options(camera, posed, width, height, label);
+    };
+    if (std::optional<cli::Orbit> orbit = cli::resolve_orbit(o.orbit, animation_frames, renders_frames))
+        s.camera.turn = [orbit = *orbit](const Camera& camera, long frame) { return orbit.turn(camera, frame); };
+    return s;
+}
+
 }  // namespace orb::request

@@ -7,7 +7,6 @@
 
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
-#include "orb/exr/camera_matrices.h"
 #include "orb/exr/environment_map.h"
 #include "orb/scene/animation.h"
 #include "orb/import/import.h"
@@ -102,51 +101,6 @@ std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, cons
     cli::warn_about_other_formats_options(reading, frames->format(), path);
     for (const std::string& message : frames->warnings()) cli::warning(message);
     return frames;
-}
-
-Scene trajectory_frame(const FrameSource& frames, long frame, const std::string& label) {
-    require_trajectory_frames(frames, {frame}, label);
-    Scene scene = frames.frame(static_cast<std::size_t>(frame - 1));
-    validate_scene(scene, label);  // the caller names the frame (for_frame)
-    return scene;
-}
-
-void require_trajectory_frames(const FrameSource& source, const std::vector<long>& frames, const std::string& label) {
-    const std::size_t count = source.frame_count();
-    for (long frame : frames)
-        if (frame < 1 || static_cast<std::size_t>(frame) > count)
-            throw InputError(label + ": has " + std::to_string(count) + (count == 1 ? " frame" : " frames") + " (1-" +
-                             std::to_string(count) + "); there is no frame " + std::to_string(frame) +
-                             " (frame 1 is the file's first)");
-}
-
-Scene pose_scene(const Scene& imported, double seconds, const std::string& label) {
-    Scene posed = scene_at_time(imported, seconds);
-    if (!imported.animation.empty()) {
-        std::ostringstream at;
-        at << label << " at " << seconds << " s";
-        validate_scene(posed, at.str());
-    }
-    return posed;
-}
-
-Scene pose_scene(Scene&& imported, double seconds, const std::string& label) {
-    if (imported.animation.empty()) return std::move(imported);
-    return pose_scene(static_cast<const Scene&>(imported), seconds, label);
-}
-
-void apply_camera_request(Scene& posed, const RequestSettings& settings, std::optional<long> frame,
-                          const std::string& label) {
-    // The image's size: the command line's, else the scene's (orb-frames without --scene compares no camera).
-    cli::apply_camera_options(settings.camera, posed, settings.width.value_or(posed.render.width),
-                              settings.height.value_or(posed.render.height), label);
-    if (settings.orbit && frame) posed.camera = settings.orbit->turn(posed.camera, *frame);
-}
-
-bool camera_moves(const RequestSettings& settings) { return settings.orbit.has_value(); }
-
-exr::SceneIdentity scene_identity(const Scene& posed, const std::string& hash, int width, int height) {
-    return {hash, exr::world_to_camera(posed.camera), exr::world_to_ndc(posed.camera, width, height)};
 }
 
 }  // namespace orb::request

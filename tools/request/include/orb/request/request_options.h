@@ -10,6 +10,7 @@
 
 #include "orb/cli/camera_options.h"
 #include "orb/cli/orbit_options.h"
+#include "orb/job/request_settings.h"
 
 namespace orb::request {
 
@@ -38,6 +39,16 @@ void add_request_options(CLI::App& app, RequestOptions& options);
 // Combinations CLI11 cannot express (--passes' names, --sample-range with
 // --spp); throws orb::cli::UsageError.
 void check_request_options(const RequestOptions& options);
+
+// What the render job is asked for (orb/job/request_settings.h): each
+// option given, else `scene_render` (the scene's render block, or null when
+// the scene is not read), else Orb's default; the camera options and the
+// orbit as its camera. `animation_frames` is the frame list rendered or
+// judged (null for --frame N or a still), `renders_frames` whether frames
+// are: they give --orbit its range (orb::cli::resolve_orbit, whose
+// UsageError this throws).
+job::RequestSettings resolve_request(const RequestOptions& options, const RenderSettings* scene_render,
+                                     const std::string* animation_frames = nullptr, bool renders_frames = false);
 
 // SECONDS > 0, finite (also --fps).
 const CLI::Validator& positive_number();

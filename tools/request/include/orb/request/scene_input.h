@@ -1,7 +1,7 @@
 // The scene as orb-render reads it (any format orb-import reads, its
-// environment map loaded, import warnings printed) and poses it at a time,
-// and what an output records of it. orb-frames --missing --scene reads it
-// the same way, so both hash the same scene.
+// environment map loaded, import warnings printed). orb-frames --missing
+// --scene reads it the same way, so both hash the same scene; the render
+// job poses it (orb/job/scene_pose.h).
 #pragma once
 
 #include <memory>
@@ -9,8 +9,6 @@
 #include <string>
 
 #include "orb/cli/scene_reading.h"
-#include "orb/exr/render_request.h"
-#include "orb/request/request_settings.h"
 #include "orb/scene/error.h"
 #include "orb/import/molecular.h"
 #include "orb/scene/scene.h"
@@ -32,45 +30,5 @@ Scene read_scene(const std::string& path, std::string& label, const cli::SceneRe
 // has the environment `reading` chooses. Prints the reader's warnings.
 // Throws orb::InputError.
 std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const cli::SceneReading& reading);
-
-// Runs `work`, which reads, poses or styles the scene of frame `frame`: an
-// orb::InputError it throws is thrown again with "frame N: " before its
-// message, so that an error met at frame 3 of 240 says which frame it was.
-template <typename Work>
-auto for_frame(long frame, Work&& work) -> decltype(work()) {
-    try {
-        return work();
-    } catch (const InputError& e) {
-        throw InputError("frame " + std::to_string(frame) + ": " + e.what());
-    }
-}
-
-// Frame `frame` (1-based) of a trajectory, checked against the scene limits.
-// Throws orb::InputError naming the frames there are for one past the end.
-Scene trajectory_frame(const FrameSource& frames, long frame, const std::string& label);
-
-// Throws orb::InputError when a frame of `frames` is not one of the file's 1..N.
-void require_trajectory_frames(const FrameSource& source, const std::vector<long>& frames, const std::string& label);
-
-// The scene at `seconds`, checked against the scene limits again when it is
-// animated (posing multiplies scales and adds offsets). Throws orb::InputError.
-Scene pose_scene(const Scene& imported, double seconds, const std::string& label);
-// The same for a scene the caller gives up: one without animation is its
-// own pose, moved rather than copied (ten million spheres are a gigabyte).
-Scene pose_scene(Scene&& imported, double seconds, const std::string& label);
-
-// The camera the command line asks for, on a posed scene: the camera options
-// replace their parts of the scene's camera, then the orbit turns it to
-// `frame` (none: a still, which has no orbit). The same for every tool, so
-// frame f has one camera whoever renders or judges it. Throws
-// orb::InputError naming the option that leaves the camera without a view.
-void apply_camera_request(Scene& posed, const RequestSettings& settings, std::optional<long> frame,
-                          const std::string& label);
-
-// Whether the camera differs from frame to frame although the scene does not (--orbit).
-bool camera_moves(const RequestSettings& settings);
-
-// orb:sceneHash and the camera matrices of a posed scene at an image size.
-exr::SceneIdentity scene_identity(const Scene& posed, const std::string& hash, int width, int height);
 
 }  // namespace orb::request

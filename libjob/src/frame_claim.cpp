@@ -1,4 +1,4 @@
-#include "frame_claim.h"
+#include "orb/job/frame_claim.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -12,7 +12,7 @@
 
 #include "orb/scene/error.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 namespace {
 
 double now_seconds() {
@@ -159,4 +159,4 @@ void FrameClaim::release() noexcept {
     fd_ = -1;
 }
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

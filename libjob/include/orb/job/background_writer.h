@@ -16,17 +16,18 @@
 #include <thread>
 #include <vector>
 
-#include "frame_claim.h"
-#include "orb/cli/output_file.h"
-#include "render_film.h"
+#include "orb/job/frame_claim.h"
+#include "orb/job/image_output.h"
+#include "orb/job/messages.h"
+#include "orb/job/render_film.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 
 class BackgroundWriter {
 public:
     struct Job {
         FinalImage image;
-        cli::OutputFile output;
+        std::unique_ptr<ImageOutput> output;
         std::optional<FrameClaim> claim;  // released once the image is written
         std::string label;                // "frame 8: ", starts its lines
         // Said once the file is in place ("done: 64 spp ... -> b.0008.exr"),
@@ -40,7 +41,8 @@ public:
     // overlap one frame's disk wait with the next one's compression.
     static constexpr std::size_t kDefaultInFlight = 3;
 
-    explicit BackgroundWriter(std::size_t max_in_flight = kDefaultInFlight);
+    // `messages` hears what each frame's write says (done, or why not), from the writing thread.
+    explicit BackgroundWriter(MessageSink messages, std::size_t max_in_flight = kDefaultInFlight);
     BackgroundWriter(const BackgroundWriter&) = delete;
     BackgroundWriter& operator=(const BackgroundWriter&) = delete;
     ~BackgroundWriter();  // waits for every frame being written (their errors are finish()'s to report)
@@ -68,6 +70,7 @@ private:
     void wait_for_oldest();
     void throw_if_any_failed();
 
+    MessageSink messages_;
     std::size_t max_in_flight_;
     std::deque<Write> in_flight_;      // oldest first
     std::vector<std::string> failed_;  // the labels of frames not written, reported once
@@ -76,4 +79,4 @@ private:
     double waited_ = 0;
 };
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

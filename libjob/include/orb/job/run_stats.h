@@ -11,7 +11,7 @@
 #include "orb/render/device.h"
 #include "orb/render/renderer.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 
 struct DeviceShare {
     render::DeviceInfo device;
@@ -55,4 +55,4 @@ std::string stats_json(const RunStats& stats);
 // --frames: {"frames": [one object per frame rendered], "skipped": [...]}.
 std::string frames_stats_json(const std::vector<RunStats>& frames, const std::vector<long>& skipped);
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

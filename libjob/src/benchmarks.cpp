@@ -2,29 +2,24 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
-#include "background_writer.h"
-#include "frame_jobs.h"
-#include "orb/cli/messages.h"
-#include "orb/cli/output_file.h"
-#include "orb/cli/tool_main.h"
+#include "orb/job/benchmarks.h"
+#include "orb/job/background_writer.h"
+#include "orb/job/render_film.h"
+#include "orb/job/seconds_since.h"
 #include "orb/scene/error.h"
-#include "render_film.h"
-#include "seconds_since.h"
-#include "render_frames.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 
-int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
-    (void)outputs;
-    const std::vector<Job> jobs = jobs_of(plan, options);
+FramesBenchmark run_frames_benchmark(RenderPlan& plan, const std::vector<Job>& jobs, int spp,
+                                     const std::function<std::unique_ptr<ImageOutput>(const std::string& path)>& open_output,
+                                     const std::function<void(render::Renderer&)>& renderer_made) {
     std::optional<render::Renderer> renderer;
     // The first frame pays for the kernel build and the driver's lazy set-up:
     // rendered once before timing.
-    set_up(plan, jobs.front(), renderer);
+    set_up(plan, jobs.front(), renderer, renderer_made);
     renderer->render_pass(1);
 
     // The EXRs are written as real frames are (on the writer's thread, to a
@@ -34,28 +29,24 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
     std::string folder = std::string(tmp && *tmp ? tmp : "/tmp") + "/orb-frames-benchmark-XXXXXX";
     if (!::mkdtemp(folder.data())) throw InputError(folder + ": cannot make a folder for the benchmark's frames");
 
-    struct Phase {
-        const char* name;
-        double total = 0, most = 0;
-        void add(double seconds) {
-            total += seconds;
-            most = std::max(most, seconds);
-        }
-    };
-    // Samples per frame: --spp, else 1. With fewer samples than it takes to
-    // write a frame, the writer's time shows as waiting.
-    const int spp = static_cast<int>(options.spp.value_or(1));
-    const std::string render_name = "render (" + std::to_string(spp) + " spp)";
-    Phase pose{"pose"}, upload{"upload"}, render_phase{render_name.c_str()}, read{"read back"}, wait{"wait for writer"},
-        encode{"alone: encode"}, write{"alone: write+fsync"};
+    // With fewer samples than it takes to write a frame, the writer's time shows as waiting.
+    FramesBenchmark bench;
+    bench.phases = {{"pose"}, {"upload"}, {"render (" + std::to_string(spp) + " spp)"}, {"read back"},
+                    {"wait for writer"}, {"alone: encode"}, {"alone: write+fsync"}};
+    FramesBenchmark::Phase& pose = bench.phases[0];
+    FramesBenchmark::Phase& upload = bench.phases[1];
+    FramesBenchmark::Phase& render_phase = bench.phases[2];
+    FramesBenchmark::Phase& read = bench.phases[3];
+    FramesBenchmark::Phase& wait = bench.phases[4];
+    FramesBenchmark::Phase& encode = bench.phases[5];
+    FramesBenchmark::Phase& write = bench.phases[6];
     exr::ExrWriteOptions write_options;
     write_options.passes = plan.passes;
     write_options.half = plan.half;
     write_options.compression = plan.compression;
-    std::size_t bytes_per_frame = 0;
     try {
         PosePrefetch prefetch;
-        BackgroundWriter writer;
+        BackgroundWriter writer(plan.messages);
         for (std::size_t i = 0; i < jobs.size(); ++i) {
             const Job& job = jobs[i];
             // As a real run does: this frame's pose was started while the
@@ -79,11 +70,12 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
             render_phase.add(seconds_since(t));
             t = Clock::now();
             FinalImage image{writer.take_spare_film(), plan_metadata(plan), write_options, std::nullopt};
+            image.messages = plan.messages;
             image.arriving = renderer->read_film_later();
             read.add(seconds_since(t));
             const double waited_before = writer.seconds_waited();
-            writer.submit({std::move(image), cli::OutputFile(folder + "/frame" + std::to_string(i) + ".exr", "-o"),
-                           std::nullopt, "", "", false});
+            writer.submit({std::move(image), open_output(folder + "/frame" + std::to_string(i) + ".exr"), std::nullopt,
+                           "", "", false});
             wait.add(writer.seconds_waited() - waited_before);
         }
         writer.finish();
@@ -94,40 +86,55 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options, RenderO
         exr::ExrEncoding encoding;
         for (std::size_t i = 0; i < alone; ++i) {
             FinalImage image{renderer->read_film(), plan_metadata(plan), write_options, std::nullopt};
+            image.messages = plan.messages;
             Clock::time_point t = Clock::now();
             image.encode(encoding);
             encode.add(seconds_since(t));
-            bytes_per_frame = encoding.bytes().size();
+            bench.bytes_per_frame = encoding.bytes().size();
             t = Clock::now();
-            cli::OutputFile(folder + "/alone.exr", "-o").write(encoding.bytes());
+            open_output(folder + "/alone.exr")->write(encoding.bytes());
             write.add(seconds_since(t));
         }
-        for (Phase* phase : {&encode, &write}) phase->total *= static_cast<double>(jobs.size()) / static_cast<double>(alone);
+        for (FramesBenchmark::Phase* phase : {&encode, &write})
+            phase->total *= static_cast<double>(jobs.size()) / static_cast<double>(alone);
     } catch (...) {
         std::filesystem::remove_all(folder);
         throw;
     }
     std::filesystem::remove_all(folder);
 
+    bench.frames = jobs.size();
+    bench.kernel_builds = renderer->programs_built();
     const double n = static_cast<double>(jobs.size());
-    const double overhead_ms = 1000.0 * (pose.total + upload.total + read.total + wait.total) / n;
-    std::string line = "frames benchmark: " + std::to_string(jobs.size()) + " frames at " +
-                       std::to_string(plan.config.width) + "x" + std::to_string(plan.config.height) + ", layers " +
-                       exr::format_passes(plan.passes) + (plan.half ? " (half)" : "") + ", " +
-                       exr::compression_name(plan.compression) + " " + std::to_string(bytes_per_frame / 1000) +
-                       " kB a frame, " + kernel_builds_text(renderer->programs_built()) +
-                       "; per frame, mean (max) ms:";
-    char text[128];
-    for (const Phase* phase : {&pose, &upload, &render_phase, &read, &wait, &encode, &write}) {
-        std::snprintf(text, sizeof text, " %s %.1f (%.1f);", phase->name, 1000.0 * phase->total / n,
-                      1000.0 * phase->most);
-        line += text;
-    }
-    cli::info(line);
-    // The time a frame adds to the render path besides its samples.
-    std::printf("frame_overhead_ms=%.1f\n", overhead_ms);
-    std::fflush(stdout);
-    return cli::kSuccess;
+    bench.overhead_ms = 1000.0 * (pose.total + upload.total + read.total + wait.total) / n;
+    return bench;
 }
 
-}  // namespace orb::render_cli
+void FramesBenchmark::Phase::add(double seconds) {
+    total += seconds;
+    most = std::max(most, seconds);
+}
+
+ReadyRenderer make_ready_renderer(const RenderPlan& plan) {
+    const auto began = std::chrono::steady_clock::now();
+    ReadyRenderer ready{std::make_unique<render::Renderer>(plan.scene, plan.config), 0, 0};
+    ready.construct_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    ready.setup_seconds = plan.read_seconds + ready.construct_seconds;
+    return ready;
+}
+
+StillBenchmark run_still_benchmark(const ReadyRenderer& ready, double seconds) {
+    render::Renderer& renderer = *ready.renderer;
+    StillBenchmark bench{render::run_benchmark(renderer, seconds), renderer_stats(renderer)};
+    RunStats& stats = bench.stats;
+    stats.spp_this_run = stats.spp;
+    stats.samples_this_run = stats.samples;
+    stats.passes = bench.result.passes;
+    stats.seconds = bench.result.seconds;
+    stats.samples_per_second = bench.result.samples_per_second;
+    stats.stop_reason = "benchmark";
+    stats.setup_seconds = ready.setup_seconds;
+    return bench;
+}
+
+}  // namespace orb::job

@@ -1,25 +1,24 @@
 // The frames a render goes through (one job per output) and the shared
-// renderer they use, for render_frames.cpp and frames_benchmark.cpp.
+// renderer they use: orb-render's frame loop and its frames benchmark.
 #pragma once
 
+#include <functional>
 #include <future>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "orb/exr/render_request.h"
+#include "orb/job/messages.h"
+#include "orb/job/render_plan.h"
 #include "orb/render/renderer.h"
-#include "render_options.h"
-#include "render_plan.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 
 struct Job {
     std::optional<long> frame;  // none for a render that is not a frame of an animation
     std::string output;
 };
-
-// One job per frame (its output from the -o pattern), or the one output.
-std::vector<Job> jobs_of(const RenderPlan& plan, const RenderOptions& options);
 
 // "frame 12: ", or "" when the job is no frame.
 std::string label_of(const Job& job);
@@ -33,8 +32,21 @@ void upload_changed_scene(RenderPlan& plan, render::Renderer& renderer);
 
 // Poses the plan at the job's frame (pose_for) and hands the scene and seed
 // to the renderer, which is made on first use (one session and kernel build
-// for every frame); the film is emptied.
-void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer);
+// for every frame; `made` hears of it then); the film is emptied.
+void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer,
+            const std::function<void(render::Renderer&)>& made = {});
+
+// What is at a job's output, against what the plan asks of it (the one
+// definition of finished, orb::exr::judge_output). Every block is decoded:
+// a frame skipped or continued by mistake costs more than reading it.
+exr::OutputJudgement judge(RenderPlan& plan, const Job& job);
+
+// Loads the samples of `output` into the renderer, which set_up() left
+// empty at the plan's first sample. Returns false, after saying why
+// (plan.messages), when the file cannot be continued after all (changed
+// since it was judged); the frame is then rendered from its first sample.
+bool continue_from(RenderPlan& plan, const std::string& label, const std::string& output,
+                   render::Renderer& renderer);
 
 // The next frame's scene posed, hashed and laid out for the renderer (its
 // BVH refitted or built) on another thread while this frame renders: for a
@@ -54,4 +66,4 @@ private:
     long frame_ = 0;
 };
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

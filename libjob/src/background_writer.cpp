@@ -1,25 +1,25 @@
-#include "background_writer.h"
+#include "orb/job/background_writer.h"
 
 #include <chrono>
 #include <stdexcept>
 #include <utility>
 
-#include "orb/cli/messages.h"
-#include "seconds_since.h"
+#include "orb/job/seconds_since.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 namespace {
 
 // "frame 8" (its label without the ": "), or the output's name.
 std::string name_of(const BackgroundWriter::Job& job) {
     std::string label = job.label;
     while (!label.empty() && (label.back() == ' ' || label.back() == ':')) label.pop_back();
-    return label.empty() ? job.output.display_name() : label;
+    return label.empty() ? job.output->display_name() : label;
 }
 
 }  // namespace
 
-BackgroundWriter::BackgroundWriter(std::size_t max_in_flight) : max_in_flight_(max_in_flight ? max_in_flight : 1) {}
+BackgroundWriter::BackgroundWriter(MessageSink messages, std::size_t max_in_flight)
+    : messages_(std::move(messages)), max_in_flight_(max_in_flight ? max_in_flight : 1) {}
 
 BackgroundWriter::~BackgroundWriter() {
     for (Write& write : in_flight_)
@@ -59,7 +59,7 @@ void BackgroundWriter::submit(Job job) {
     while (!in_flight_.empty() && in_flight_.front().job.use_count() == 1) wait_for_oldest();
     waited_ += seconds_since(start);
     if (!failed_.empty()) {
-        cli::error(job.label + "not written: the run stops, since " + failed_.front() + " could not be written");
+        say(messages_, MessageKind::Error, job.label + "not written: the run stops, since " + failed_.front() + " could not be written");
         failed_.push_back(name_of(job));
         throw_if_any_failed();
     }
@@ -71,23 +71,23 @@ void BackgroundWriter::submit(Job job) {
         spare_encodings_.pop_back();
     }
     Write write{std::make_shared<Job>(std::move(job)), std::move(encoding), std::make_shared<std::exception_ptr>(), {}};
-    write.thread = std::thread([job = write.job, encoding = write.encoding, error = write.error] {
+    write.thread = std::thread([job = write.job, encoding = write.encoding, error = write.error, this] {
         // A frame is said to be done once its file is in place, and each
         // frame that fails says why.
         try {
-            job->output.write(job->image.encode(*encoding));
+            job->output->write(job->image.encode(*encoding));
             // (Nothing to say for orb-render --benchmark --frames.)
             if (!job->written.empty()) {
                 if (job->warn)
-                    cli::warning(job->label + job->written);
+                    say(messages_, MessageKind::Warning, job->label + job->written);
                 else
-                    cli::info(job->label + job->written);
+                    say(messages_, MessageKind::Info, job->label + job->written);
             }
         } catch (const std::exception& e) {
-            cli::error(job->label + "not written: " + e.what());
+            say(messages_, MessageKind::Error, job->label + "not written: " + e.what());
             *error = std::current_exception();
         } catch (...) {
-            cli::error(job->label + "not written");
+            say(messages_, MessageKind::Error, job->label + "not written");
             *error = std::current_exception();
         }
         job->claim.reset();  // the frame is on disk (or failed): others may take it now
@@ -108,4 +108,4 @@ Film BackgroundWriter::take_spare_film() {
     return film;
 }
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

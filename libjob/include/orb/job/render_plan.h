@@ -1,6 +1,6 @@
-// What orb-render will do: the scene at the requested time, the renderer's
+// What a render job will do: the scene at the requested time, the renderer's
 // settings and the output's, with everything a resumed EXR dictates applied
-// and checked against the command line.
+// and checked against what the front end gave (the resume contract).
 #pragma once
 
 #include <memory>
@@ -14,12 +14,52 @@
 #include "orb/exr/render_request.h"
 #include "orb/render/adaptive_sampler.h"
 #include "orb/render/renderer.h"
-#include "orb/request/request_settings.h"
-#include "orb/scene/scene.h"
+#include "orb/import/molecular.h"
 #include "orb/import/sphere_styling.h"
-#include "render_options.h"
+#include "orb/job/messages.h"
+#include "orb/job/request_settings.h"
+#include "orb/render/development_knobs.h"
+#include "orb/scene/scene.h"
 
-namespace orb::render_cli {
+namespace orb::job {
+
+// What the front end asks of a render (orb-render's options, converted from
+// its command line; render_still's settings): plain values, no parser's types.
+struct PlanOptions {
+    // The settings as given, each optional: a resumed render compares them
+    // with its file (a setting the file fixes may be repeated, only with the
+    // same value).
+    GivenSettings given;
+    std::string sample_range_text;    // given.sample_range as written, for messages
+    std::optional<double> time_at;    // --time-at SECONDS: the scene time of a still
+    // `given`, else the scene's render block, else Orb's default, with the
+    // front end's camera (orb-render: orb::request::resolve_request); for a
+    // fresh render.
+    RequestSettings settings;
+    CameraRequest resume_camera;      // the camera for a resumed render (it has no frames, so no orbit)
+    std::vector<long> frames;         // --frame/--frames in order; empty: a still
+    std::string resume;               // the EXR to continue (--resume), or ""
+    std::optional<double> noise_threshold;  // --noise-threshold
+    std::optional<double> target_error;     // --target-error
+    std::string device;               // --device; "": the fastest GPU, else the CPU
+    std::string kernel_dir;           // --kernel-dir; "": ORB_KERNEL_DIR's, else the installed kernels
+    bool no_cache = false;            // --no-cache: kernels are built from source every run
+    std::optional<exr::ExrCompression> compression;
+    bool denoise = false;             // --denoise
+    bool load_denoiser = true;        // false for a run that renders nothing (--missing)
+    // The images will carry their exact sums (checkpoints, --time): the host memory they need.
+    bool checkpoints_or_time_limit = false;
+    SphereStyleOptions style;         // --color-by, --radius-by, ...: applied to each trajectory frame read
+    MessageSink messages;             // warnings and notes; the library never prints
+};
+
+// The scene as the front end read it (orb-render: orb::request::read_scene
+// or open_trajectory, styled): what the plan poses.
+struct SceneInput {
+    Scene imported;            // a trajectory's frame 1, styled
+    std::string label;         // what orb:sceneFile records: the path, <stdin>, <memory>
+    std::shared_ptr<const FrameSource> trajectory;  // a molecular or particle trajectory, or null
+};
 
 // Frame 1 of a trajectory as the plan read and styled it, handed to the
 // pose of frame 1 (on whichever thread poses it) instead of reading and
@@ -40,6 +80,7 @@ private:
 };
 
 struct RenderPlan {
+    MessageSink messages;       // the front end's (PlanOptions::messages)
     Scene scene;                // at scene_time
     std::string scene_label;    // the path, or <stdin>
     std::string scene_hash;     // orb::scene_content_hash(scene)
@@ -47,7 +88,7 @@ struct RenderPlan {
     double read_seconds = 0;    // reading, importing, posing and hashing the scene (set by the caller that timed it)
     double scene_time = 0;
     render::RenderConfig config;
-    request::RequestSettings settings;  // the command line's settings, filled in from the scene
+    RequestSettings settings;  // the command line's settings, filled in from the scene
     std::uint64_t target_spp = 0;   // samples per pixel the film is to hold
     std::uint64_t first_sample = 0; // where a fresh render starts (--sample-range START)
     bool slice = false;             // --sample-range: the output is a slice, to be merged
@@ -99,10 +140,13 @@ struct PosedFrame {
 PosedFrame pose_at(const RenderPlan& plan, long frame);
 void install(RenderPlan& plan, PosedFrame&& posed);
 
-// Reads and imports the scene, then applies the command line (and for
-// --resume the file's header). Throws orb::InputError for bad input or a
+// Applies the options to the scene (and for a resumed render the file's
+// header: the resume contract). Throws orb::InputError for bad input or a
 // resume that would not continue the same render.
-RenderPlan make_render_plan(const RenderOptions& options, const render::DevelopmentKnobs& knobs);
+RenderPlan make_render_plan(const PlanOptions& options, SceneInput scene, const render::DevelopmentKnobs& knobs);
+
+// Whether the plan renders frames of an animation (--frame, --frames).
+inline bool renders_frames(const PlanOptions& options) { return !options.frames.empty(); }
 
 // Whether each frame's scene differs from the last: an animated scene, a
 // trajectory of more than one frame, or one whose camera --orbit turns.
@@ -115,6 +159,7 @@ void pose_frame(RenderPlan& plan, long frame);  // install(plan, pose_at(plan, f
 bool posed_at(const RenderPlan& plan, long frame);
 
 // The orb:* metadata for an image of this plan (render seconds and device filled by the caller).
+// orb:version is Orb's version (the project's, as every tool's --version says).
 exr::ExrMetadata plan_metadata(const RenderPlan& plan);
 
 // What the output of `frame` (none: the one output of a still) is asked to
@@ -122,4 +167,4 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan);
 // posing the plan at the frame (which rendering it would do anyway).
 exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame);
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

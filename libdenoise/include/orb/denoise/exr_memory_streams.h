@@ -1,6 +1,7 @@
 // OpenEXR streams over memory: the tools read their inputs (files or
 // standard input) into memory and write outputs through orb::cli::OutputFile,
-// so the EXR codec never touches a file itself.
+// so the EXR codec never touches a file itself. Public for the render job,
+// which reads the layers of an image it encoded (orb/job/render_job.h).
 #pragma once
 
 #include <OpenEXR/ImfIO.h>

@@ -1,10 +1,10 @@
-// The steady clock the render tool's timings read (frames, background
+// The steady clock the render job's timings read (frames, background
 // writes, the frames benchmark), and the seconds elapsed on it.
 #pragma once
 
 #include <chrono>
 
-namespace orb::render_cli {
+namespace orb::job {
 
 using Clock = std::chrono::steady_clock;
 
@@ -12,4 +12,4 @@ inline double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

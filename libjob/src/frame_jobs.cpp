@@ -1,22 +1,9 @@
-#include "frame_jobs.h"
+#include "orb/job/frame_jobs.h"
 
-#include "interrupt.h"
-#include "orb/cli/frame_spec.h"
-#include "orb/cli/messages.h"
-#include "render_film.h"
+#include "orb/exr/film_exr.h"
+#include "orb/scene/error.h"
 
-namespace orb::render_cli {
-
-std::vector<Job> jobs_of(const RenderPlan& plan, const RenderOptions& options) {
-    if (plan.frames.empty()) return {Job{std::nullopt, options.output}};
-    // With --frame N a name without a frame-number field is taken as it is.
-    const bool pattern = cli::count_frame_fields(options.output) > 0;
-    std::vector<Job> jobs;
-    for (long frame : plan.frames)
-        jobs.push_back(
-            {frame, pattern ? cli::expand_frame_pattern(options.output, static_cast<int>(frame)) : options.output});
-    return jobs;
-}
+namespace orb::job {
 
 std::string label_of(const Job& job) { return job.frame ? "frame " + std::to_string(*job.frame) + ": " : ""; }
 
@@ -35,14 +22,12 @@ void upload_changed_scene(RenderPlan& plan, render::Renderer& renderer) {
     plan.prepared_scene.reset();
 }
 
-void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer) {
+void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& renderer,
+            const std::function<void(render::Renderer&)>& made) {
     pose_for(plan, job);
     if (!renderer) {
         renderer.emplace(plan.scene, plan.config);
-        cli::info(devices_line(*renderer));
-        // From here on a signal ends the frame in flight gracefully; before,
-        // during the kernel build, there is nothing to save.
-        install_interrupt_handlers();
+        if (made) made(*renderer);
         plan.scene_changed = false;  // the renderer was made with it
         plan.prepared_scene.reset();
     } else {
@@ -68,4 +53,30 @@ void PosePrefetch::use_for(RenderPlan& plan, const Job& job) {
     if (job.frame && *job.frame == frame_ && !posed_at(plan, frame_)) install(plan, std::move(posed));
 }
 
-}  // namespace orb::render_cli
+exr::OutputJudgement judge(RenderPlan& plan, const Job& job) {
+    return exr::judge_output(job.output, request_for(plan, job.frame), exr::RenderCheck::Pixels);
+}
+
+bool continue_from(RenderPlan& plan, const std::string& label, const std::string& output,
+                   render::Renderer& renderer) {
+    try {
+        exr::ExrFilm file = exr::read_film_exr(output);
+        exr::require_resumable(file, plan.passes, output);
+        const SampleRanges& held = file.film.sample_ranges;
+        if (held.ranges().size() != 1 || held.first() != plan.first_sample ||
+            held.total() >= plan.target_spp)
+            throw InputError(output + ": holds the samples " + held.format() + " now");
+        renderer.load_film(file.film);
+        if (!file.exact) say(plan.messages, MessageKind::Warning, label + output + ": " + exr::kMeansOnly);
+        file.film = {};  // on the device now; the metadata stays for orb:renderSeconds
+        plan.resumed = std::move(file);
+        return true;
+    } catch (const std::exception& e) {
+        say(plan.messages, MessageKind::Warning,
+            label + "cannot continue: " + e.what() + "; rendering it from its first sample");
+        renderer.clear(plan.first_sample);
+        return false;
+    }
+}
+
+}  // namespace orb::job

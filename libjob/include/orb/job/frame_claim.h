@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-namespace orb::render_cli {
+namespace orb::job {
 
 class FrameClaim {
 public:
@@ -44,4 +44,4 @@ private:
 // OUT.claim for an output OUT.
 std::string claim_path(const std::string& output);
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

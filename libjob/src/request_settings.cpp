@@ -1,9 +1,8 @@
-#include "orb/request/request_settings.h"
+#include "orb/job/request_settings.h"
 
-#include "orb/film/sample_ranges.h"
 #include "orb/tables/render_names.h"
 
-namespace orb::request {
+namespace orb::job {
 namespace {
 
 // SplitMix64's output function (Steele, Lea, Flood 2014): a bijection of
@@ -48,35 +47,31 @@ exr::RenderRequest RequestSettings::request(std::optional<long> frame, double sc
     return r;
 }
 
-RequestSettings resolve_request(const RequestOptions& o, const RenderSettings* scene,
-                                const std::string* animation_frames, bool renders_frames) {
+RequestSettings resolve_settings(const GivenSettings& given, const RenderSettings* scene) {
     RequestSettings s;
-    const auto from_scene = [&](const std::optional<int>& given, int RenderSettings::*field) -> std::optional<int> {
-        if (given) return given;
+    const auto from_scene = [&](const std::optional<int>& value, int RenderSettings::*field) -> std::optional<int> {
+        if (value) return value;
         if (scene) return (*scene).*field;
         return std::nullopt;
     };
-    s.width = from_scene(o.width, &RenderSettings::width);
-    s.height = from_scene(o.height, &RenderSettings::height);
-    s.max_depth = from_scene(o.max_depth, &RenderSettings::max_depth);
-    if (o.spp) s.spp = *o.spp;
+    s.width = from_scene(given.width, &RenderSettings::width);
+    s.height = from_scene(given.height, &RenderSettings::height);
+    s.max_depth = from_scene(given.max_depth, &RenderSettings::max_depth);
+    if (given.spp) s.spp = *given.spp;
     else if (scene) s.spp = static_cast<std::uint64_t>(scene->spp);
-    if (o.sample_range) {
-        const SampleRange slice = parse_sample_range(*o.sample_range);
+    if (given.sample_range) {
         s.slice = true;
-        s.first_sample = slice.first;
-        s.spp = slice.count;
+        s.first_sample = given.sample_range->first;
+        s.spp = given.sample_range->count;
     }
-    s.seed = o.seed.value_or(0);
-    if (o.mode) s.mode = *o.mode;  // else the table's default (request_settings.h)
-    if (o.sampler) s.sampler = *o.sampler;
-    if (o.passes) s.passes = exr::parse_passes(*o.passes);
-    s.half = o.half;
-    s.fps = o.fps.value_or(kDefaultFps);
-    s.same_seed = o.same_seed;
-    s.camera = o.camera;
-    s.orbit = cli::resolve_orbit(o.orbit, animation_frames, renders_frames);
+    s.seed = given.seed.value_or(0);
+    if (given.mode) s.mode = *given.mode;  // else the table's default (request_settings.h)
+    if (given.sampler) s.sampler = *given.sampler;
+    if (given.passes) s.passes = *given.passes;
+    s.half = given.half;
+    s.fps = given.fps.value_or(kDefaultFps);
+    s.same_seed = given.same_seed;
     return s;
 }
 
-}  // namespace orb::request
+}  // namespace orb::job

@@ -1,17 +1,14 @@
-#include "render_film.h"
+#include "orb/job/render_film.h"
 
-#include "interrupt.h"
-#include "orb/cli/messages.h"
 #include "orb/exr/film_exr.h"
-#include "progress_reporter.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 namespace {
 
 class ImageWriter {
 public:
-    ImageWriter(const RenderPlan& plan, cli::OutputFile& output, const render::Renderer& renderer)
-        : output_(output), renderer_(renderer), metadata_(plan_metadata(plan)) {
+    ImageWriter(const RenderPlan& plan, const render::Renderer& renderer)
+        : renderer_(renderer), metadata_(plan_metadata(plan)), messages_(plan.messages) {
         previous_seconds_ = metadata_.render_seconds;
         metadata_.device = devices_label(renderer);
         options_.half = plan.half;
@@ -24,6 +21,7 @@ public:
     // --time), which decides whether the image keeps its exact sums.
     FinalImage image(double seconds_this_run, bool finished, Film reuse = {}, bool read_later = false) {
         FinalImage image{std::move(reuse), metadata_, options_, std::nullopt};
+        image.messages = messages_;
         image.options.exact_sums = keeps_exact_sums(finished);
         if (read_later)
             image.arriving = renderer_.read_film_later();
@@ -31,11 +29,6 @@ public:
             renderer_.read_film(image.film);
         image.metadata.render_seconds = previous_seconds_ + seconds_this_run;
         return image;
-    }
-    void write(double seconds_this_run) {
-        FinalImage checkpoint = image(seconds_this_run, false);
-        checkpoint.checkpoint = true;
-        output_.write(checkpoint.encode());
     }
 
 private:
@@ -53,9 +46,9 @@ private:
         return !(held.ranges().size() == 1 && held.first() == 0);
     }
 
-    cli::OutputFile& output_;
     const render::Renderer& renderer_;
     exr::ExrMetadata metadata_;
+    MessageSink messages_;
     exr::ExrWriteOptions options_;
     double previous_seconds_ = 0;
     bool slice_ = false;
@@ -63,10 +56,16 @@ private:
 
 }  // namespace
 
+std::vector<exr::PostLayerPlanes> denoised_layer(const std::shared_ptr<denoise::Denoiser>& denoiser,
+                                                 const std::shared_ptr<denoise::DenoiseTimes>& times) {
+    if (!denoiser) return {};
+    return {denoise::denoised_post_layer(*denoiser, "the rendered image", times)};
+}
+
 void FinalImage::warn_of_sums_out_of_range() const {
     const std::string label = metadata.frame ? "frame " + std::to_string(metadata.frame->number) + ": " : "";
     for (const film::OutOfRange& out : film::sums_out_of_range(film))
-        cli::warning(label + film::describe(out, film.width));
+        say(messages, MessageKind::Warning, label + film::describe(out, film.width));
 }
 
 std::string device_label(const render::DeviceInfo& d) { return d.name + " (" + d.platform + ")"; }
@@ -96,19 +95,15 @@ const char* stop_reason_name(render::StopReason reason) {
     return "?";
 }
 
-FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, const RenderOptions& options,
-                        cli::OutputFile& image, const std::string& label, FrameClaim* claim, Film reuse,
-                        bool read_later) {
+FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, FilmRun run) {
     const std::uint64_t start_spp = renderer.samples_per_pixel();
     const std::uint64_t start_samples = renderer.pixel_samples();
-    ImageWriter writer(plan, image, renderer);
-    ProgressReporter progress(cli::quiet(), static_cast<double>(renderer.pixel_count()),
-                              options.time_limit.value_or(0), label, options.progress_interval);
+    ImageWriter writer(plan, renderer);
 
     render::ProgressiveLimits limits;
     limits.target_spp = plan.target_spp;
-    limits.max_seconds = options.time_limit.value_or(0);
-    limits.checkpoint_seconds = options.checkpoint.value_or(0);
+    limits.max_seconds = run.time_limit.value_or(0);
+    limits.checkpoint_seconds = run.checkpoint.value_or(0);
     std::optional<render::AdaptiveSampler> adaptive;
     if (plan.adaptive.any()) {
         adaptive.emplace(renderer, plan.adaptive,
@@ -117,28 +112,27 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     }
     render::ProgressiveCallbacks callbacks;
     callbacks.on_pass = [&](const render::ProgressState& state) {
-        progress.on_pass(state);
-        if (claim) claim->refresh();
+        if (run.on_pass) run.on_pass(state);
     };
     callbacks.on_checkpoint = [&](const render::ProgressState& state) {
-        // A checkpoint that cannot be written (a full disk, say) must not
-        // cost the render; the final write reports for good if it persists.
         try {
-            writer.write(state.elapsed_seconds);
-            progress.on_checkpoint(state, image.display_name());
+            FinalImage checkpoint = writer.image(state.elapsed_seconds, false);
+            checkpoint.checkpoint = true;
+            if (run.on_checkpoint) run.on_checkpoint(checkpoint, state);
         } catch (const std::exception& e) {
-            cli::warning(std::string("checkpoint not written: ") + e.what());
+            say(plan.messages, MessageKind::Warning, std::string("checkpoint not written: ") + e.what());
         }
     };
 
     FilmOutcome outcome;
-    render::ProgressState final_state;
-    outcome.reason = render::render_progressively(renderer, limits, callbacks, interrupt_requested(), &final_state);
-    progress.finish(final_state);
+    static const std::atomic<bool> never{false};
+    outcome.reason = render::render_progressively(renderer, limits, callbacks, run.cancel ? *run.cancel : never,
+                                                  &outcome.final_state);
+    const render::ProgressState& final_state = outcome.final_state;
     if (renderer.samples_per_pixel() == 0) return outcome;
     const bool finished = outcome.reason != render::StopReason::Interrupted &&
                           outcome.reason != render::StopReason::ReachedTime;
-    outcome.image = writer.image(final_state.elapsed_seconds, finished, std::move(reuse), read_later);
+    outcome.image = writer.image(final_state.elapsed_seconds, finished, std::move(run.reuse), run.read_later);
     outcome.image.denoiser = plan.denoiser;
     if (plan.denoiser) outcome.image.denoise_times = std::make_shared<denoise::DenoiseTimes>();
     // Ended on its adaptive rule: finished, though short of orb:targetSpp (render_request.h).
@@ -160,18 +154,9 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, cons
     stats.seconds = final_state.elapsed_seconds;
     stats.samples_per_second = final_state.samples_per_second;
     stats.stop_reason = stop_reason_name(outcome.reason);
-    stats.output = image.path();
     stats.sample_ranges = renderer.sample_ranges().format();
     if (plan.frame) stats.frame = plan.frame->number;
     return outcome;
 }
 
-std::string film_summary(const FilmOutcome& outcome, const render::Renderer& renderer, const cli::OutputFile& image) {
-    const SampleRanges& held = renderer.sample_ranges();
-    const bool from_zero = held.ranges().size() == 1 && held.first() == 0;
-    return std::to_string(outcome.stats.spp) + " spp" + (from_zero ? "" : " (samples " + held.format() + ")") +
-           " in " + format_duration(outcome.stats.seconds) + " (" + format_rate(outcome.stats.samples_per_second) +
-           ") -> " + image.display_name();
-}
-
-}  // namespace orb::render_cli
+}  // namespace orb::job

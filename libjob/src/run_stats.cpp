@@ -1,8 +1,8 @@
-#include "run_stats.h"
+#include "orb/job/run_stats.h"
 
 #include <nlohmann/json.hpp>
 
-namespace orb::render_cli {
+namespace orb::job {
 
 namespace {
 
@@ -80,4 +80,4 @@ std::string frames_stats_json(const std::vector<RunStats>& frames, const std::ve
     return j.dump(2) + "\n";
 }
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

@@ -1,12 +1,12 @@
-#include "frame_warnings.h"
+#include "orb/job/frame_warnings.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "orb/request/request_settings.h"
+#include "orb/job/request_settings.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 namespace {
 
 std::string number(double value) {
@@ -31,7 +31,7 @@ std::vector<std::string> frame_warnings(const Scene& scene, const std::vector<lo
     const double slack = 1e-9 * std::max(1.0, std::abs(end));
     std::vector<long> held;
     for (long frame : frames)
-        if (request::frame_time(frame, fps) > end + slack) held.push_back(frame);
+        if (frame_time(frame, fps) > end + slack) held.push_back(frame);
     if (held.empty()) return warnings;
     const double end_frame = end * fps;
     const long last_moving = static_cast<long>(std::floor(end_frame + 1e-9));
@@ -47,4 +47,4 @@ std::vector<std::string> frame_warnings(const Scene& scene, const std::vector<lo
     return warnings;
 }
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

@@ -3,24 +3,24 @@
 // and by every frame of an animation.
 #pragma once
 
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "frame_claim.h"
-#include "orb/cli/output_file.h"
 #include "orb/denoise/denoise_film.h"
 #include "orb/exr/film_exr.h"
+#include "orb/job/messages.h"
+#include "orb/job/render_plan.h"
+#include "orb/job/run_stats.h"
 #include "orb/render/adaptive_sampler.h"
 #include "orb/render/progressive.h"
 #include "orb/render/renderer.h"
-#include "render_options.h"
-#include "render_plan.h"
-#include "run_stats.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 
 std::string device_label(const render::DeviceInfo& device);
 // Every device of the renderer: "NAME (PLATFORM)", joined by "; ".
@@ -30,6 +30,11 @@ std::string devices_label(const render::Renderer& renderer);
 std::string devices_line(const render::Renderer& renderer);
 const char* stop_reason_name(render::StopReason reason);
 std::string kernel_builds_text(int builds);  // "1 kernel build", "2 kernel builds"
+
+// The layers an image's one encode adds after the film's: `denoised`, when
+// a denoiser is given (--denoise; final images only, never checkpoints).
+std::vector<exr::PostLayerPlanes> denoised_layer(const std::shared_ptr<denoise::Denoiser>& denoiser,
+                                                 const std::shared_ptr<denoise::DenoiseTimes>& times);
 
 // The final image of a render, ready to be encoded and written once its
 // film has arrived (a frame's film travels back while the next frame renders).
@@ -46,6 +51,7 @@ struct FinalImage {
     std::shared_ptr<denoise::DenoiseTimes> denoise_times = nullptr;
 
     bool checkpoint = false;  // written while rendering: its sums' range is reported with the final image
+    MessageSink messages = {};  // where a final image's warning of sums out of range goes
 
     // Waits for the film, if it is still on its way; a final image then
     // warns of sums that reached the film's range.
@@ -68,32 +74,40 @@ struct FinalImage {
 private:
     void warn_of_sums_out_of_range() const;
 
-    // The denoised layer is written by the one encode of the film.
-    std::vector<exr::PostLayerPlanes> post_layers() const {
-        if (!denoiser) return {};
-        return {denoise::denoised_post_layer(*denoiser, "the rendered image", denoise_times)};
-    }
+    std::vector<exr::PostLayerPlanes> post_layers() const { return denoised_layer(denoiser, denoise_times); }
 };
 
 struct FilmOutcome {
     render::StopReason reason = render::StopReason::ReachedSpp;
     bool rendered = false;  // false when stopped before the first pass finished
-    RunStats stats;
+    render::ProgressState final_state;  // the progress after the last pass
+    RunStats stats;         // stats.output is the caller's to fill in
     FinalImage image;       // when rendered; the caller writes it
 };
 
+// What rendering one film asks beyond its plan, and whom it tells.
+struct FilmRun {
+    std::optional<double> time_limit;  // --time SECONDS
+    std::optional<double> checkpoint;  // --checkpoint SECONDS: a checkpoint is due this often
+    // The caller's stop flag (orb-render's signal handler sets it), checked
+    // between passes: the pass in flight completes. Null: never stopped.
+    const std::atomic<bool>* cancel = nullptr;
+    // After every pass (orb-render draws its progress line and refreshes its claim).
+    std::function<void(const render::ProgressState&)> on_pass;
+    // A checkpoint is due: the image so far, for the caller to write. What
+    // it throws is said as a warning ("checkpoint not written: ...") and the
+    // render goes on (a full disk must not cost the render; the final write
+    // reports for good if it persists).
+    std::function<void(FinalImage& checkpoint, const render::ProgressState&)> on_checkpoint;
+    Film reuse;              // memory for the final image's film (a frame loop hands it back frame after frame)
+    // The final image's film is still on its way when render_film returns
+    // (FinalImage::wait_for_film), so the renderer can go on to the next frame.
+    bool read_later = false;
+};
+
 // Renders `plan` to its target on `renderer` (its scene, seed and film set
-// up by the caller), writing checkpoints to `image`, and returns the final
-// image for the caller to write, read into `reuse` (whose memory a frame
-// loop hands back frame after frame). With `read_later` the image's film is
-// still on its way when this returns (FinalImage::wait_for_film), so the
-// renderer can go on to the next frame. `label` starts the progress lines; a
-// `claim` is refreshed while rendering.
-FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, const RenderOptions& options,
-                        cli::OutputFile& image, const std::string& label, FrameClaim* claim,
-                        Film reuse = {}, bool read_later = false);
+// up by the caller), handing checkpoints to `run.on_checkpoint`, and
+// returns the final image for the caller to write.
+FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, FilmRun run);
 
-// "64 spp (samples 64:64) in 2.1 s (1.3 Msamples/s) -> out.exr"
-std::string film_summary(const FilmOutcome& outcome, const render::Renderer& renderer, const cli::OutputFile& image);
-
-}  // namespace orb::render_cli
+}  // namespace orb::job

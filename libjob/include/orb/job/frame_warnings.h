@@ -8,7 +8,7 @@
 
 #include "orb/scene/scene.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 
 // The warnings for rendering `frames` of `scene` at `fps`, each naming
 // `label` (the scene's file); none when every frame shows something new.
@@ -18,4 +18,4 @@ namespace orb::render_cli {
 std::vector<std::string> frame_warnings(const Scene& scene, const std::vector<long>& frames, double fps,
                                         bool camera_moves, const std::string& label);
 
-}  // namespace orb::render_cli
+}  // namespace orb::job

@@ -1,25 +1,20 @@
-#include "render_plan.h"
+#include "orb/job/render_plan.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <sstream>
 
-#include "background_writer.h"
-#include "orb/cli/camera_options.h"
-#include "orb/cli/legend_output.h"
-#include "frame_warnings.h"
-#include "orb/cli/messages.h"
-#include "orb/cli/paths.h"
 #include "orb/exr/render_request.h"
+#include "orb/job/background_writer.h"
+#include "orb/job/frame_warnings.h"
+#include "orb/job/scene_pose.h"
 #include "orb/render/kernel_identity.h"
-#include "orb/request/scene_input.h"
 #include "orb/scene/error.h"
-#include "orb/tables/render_names.h"
 #include "orb/scene/scene_json.h"
+#include "orb/tables/render_names.h"
 
-namespace orb::render_cli {
+namespace orb::job {
 namespace {
 
 // The names come from the command line or a film's header, both checked
@@ -60,7 +55,7 @@ void set_passes(RenderPlan& plan, std::vector<exr::Pass> passes) {
 // Adaptive sampling reads the variance, and with a noise threshold the
 // pixels' sample counts, at its decisions; the output keeps both, so that
 // --resume and orb-merge continue from what it decided on.
-void apply_adaptive(const RenderOptions& o, RenderPlan& plan) {
+void apply_adaptive(const PlanOptions& o, RenderPlan& plan) {
     const exr::ExrMetadata* file = plan.resumed ? &plan.resumed->metadata : nullptr;
     plan.adaptive.noise_threshold = o.noise_threshold ? o.noise_threshold : file ? file->noise_threshold : std::nullopt;
     plan.adaptive.target_error = o.target_error ? o.target_error : file ? file->target_error : std::nullopt;
@@ -76,28 +71,29 @@ void apply_adaptive(const RenderOptions& o, RenderPlan& plan) {
     plan.config.adaptive = plan.adaptive.noise_threshold.has_value();
 }
 
-void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& plan) {
+void apply_resume(const PlanOptions& o, const Scene& imported, RenderPlan& plan) {
     const std::string& path = o.resume;
     exr::ExrFilm file = exr::read_film_exr(path);
     const exr::ExrMetadata& m = file.metadata;
 
     require_same(o.time_at, m.scene_time, "--time-at", "orb:sceneTime", path);
     plan.scene_time = m.scene_time;
-    plan.scene = request::pose_scene(imported, plan.scene_time, plan.scene_label);
+    plan.scene = pose_scene(imported, plan.scene_time, plan.scene_label);
     // The camera options as for a fresh render (--orbit needs frames, which --resume excludes):
     // a resumed file continues only the same view, as its hash says.
-    cli::apply_camera_options(o.camera, plan.scene, file.film.width, file.film.height, plan.scene_label);
+    if (o.resume_camera.apply) o.resume_camera.apply(plan.scene, file.film.width, file.film.height, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     if (plan.scene_hash != m.scene_hash)
         throw InputError(path + ": was rendered from a different scene (orb:sceneHash " + m.scene_hash + ", from " +
                          m.scene_file + "); " + plan.scene_label + " hashes to " + plan.scene_hash);
 
-    require_same(o.width, file.film.width, "--width", "width", path);
-    require_same(o.height, file.film.height, "--height", "height", path);
-    require_same(o.seed, m.seed, "--seed", "orb:seed", path);
-    require_same(o.mode, m.mode, "--mode", "orb:mode", path);
-    require_same(o.sampler, m.sampler, "--sampler", "orb:sampler", path);
-    require_same(o.max_depth, m.max_depth, "--max-depth", "orb:maxDepth", path);
+    const GivenSettings& given = o.given;
+    require_same(given.width, file.film.width, "--width", "width", path);
+    require_same(given.height, file.film.height, "--height", "height", path);
+    require_same(given.seed, m.seed, "--seed", "orb:seed", path);
+    require_same(given.mode, m.mode, "--mode", "orb:mode", path);
+    require_same(given.sampler, m.sampler, "--sampler", "orb:sampler", path);
+    require_same(given.max_depth, m.max_depth, "--max-depth", "orb:maxDepth", path);
     plan.config.width = file.film.width;
     plan.config.height = file.film.height;
     plan.config.seed = m.seed;
@@ -105,23 +101,24 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     plan.config.sampler = parse_sampler(m.sampler);
     plan.config.max_depth = m.max_depth;
 
-    plan.target_spp = o.spp ? *o.spp : m.target_spp;
-    if (o.sample_range) {
+    plan.target_spp = given.spp ? *given.spp : m.target_spp;
+    if (given.sample_range) {
         // Finishing an interrupted slice: the file must hold the start of it.
-        const SampleRange slice = parse_sample_range(*o.sample_range);
+        const SampleRange slice = *given.sample_range;
         const SampleRanges& held = file.film.sample_ranges;
         if (held.ranges().size() != 1 || held.first() != slice.first || held.end() > slice.end())
             throw InputError(path + ": holds the samples " + held.format() + ", not the start of --sample-range " +
-                             *o.sample_range + "; drop --sample-range to continue the file after its last sample");
+                             o.sample_range_text + "; drop --sample-range to continue the file after its last sample");
         plan.target_spp = slice.count;
         plan.slice = true;
     }
     // Samples of other kernels are another render's: it starts again (from
     // the slice's first sample), with the file's settings.
     if (m.kernel != plan.kernel) {
-        cli::warning(path + ": " + exr::another_kernel(m.kernel, plan.kernel) + "; rendering it again from its first sample");
-        plan.first_sample = o.sample_range ? parse_sample_range(*o.sample_range).first : 0;
-        set_passes(plan, o.passes ? exr::parse_passes(*o.passes) : file.passes);
+        say(plan.messages, MessageKind::Warning,
+            path + ": " + exr::another_kernel(m.kernel, plan.kernel) + "; rendering it again from its first sample");
+        plan.first_sample = given.sample_range ? given.sample_range->first : 0;
+        set_passes(plan, given.passes ? *given.passes : file.passes);
         plan.resumed = std::move(file);
         apply_adaptive(o, plan);
         plan.resumed.reset();
@@ -130,7 +127,7 @@ void apply_resume(const RenderOptions& o, const Scene& imported, RenderPlan& pla
     if (plan.target_spp < file.film.samples_per_pixel)
         throw InputError(path + ": already holds " + std::to_string(file.film.samples_per_pixel) +
                          " samples per pixel, more than the " + std::to_string(plan.target_spp) + " asked for");
-    set_passes(plan, o.passes ? exr::parse_passes(*o.passes) : file.passes);
+    set_passes(plan, given.passes ? *given.passes : file.passes);
     plan.resumed = std::move(file);
     apply_adaptive(o, plan);
     exr::require_resumable(*plan.resumed, plan.passes, path);
@@ -150,16 +147,15 @@ PosedFrame pose_scene_at(const RenderPlan& plan, long frame) {
         // Frame 1 as the plan read and styled it, the first time it is posed.
         if (frame == 1 && plan.trajectory_first) posed.scene = plan.trajectory_first->take();
         if (!posed.scene) {
-            posed.scene = request::trajectory_frame(*plan.trajectory, frame, plan.scene_label);
+            posed.scene = trajectory_frame(*plan.trajectory, frame, plan.scene_label);
             // Quietly: this runs on the thread that reads the next frame while
             // one renders, and the range of frame 1 was said when the plan was made.
             apply_sphere_styling(*posed.scene, plan.style, plan.scene_label);
         }
     } else {
-        posed.scene =
-            request::pose_scene(plan.imported, request::frame_time(frame, plan.settings.fps), plan.scene_label);
+        posed.scene = pose_scene(plan.imported, frame_time(frame, plan.settings.fps), plan.scene_label);
     }
-    request::apply_camera_request(*posed.scene, plan.settings, frame, plan.scene_label);
+    apply_camera_request(*posed.scene, plan.settings, frame, plan.scene_label);
     posed.hash = scene_content_hash(*posed.scene);
     return posed;
 }
@@ -168,28 +164,28 @@ PosedFrame pose_scene_at(const RenderPlan& plan, long frame) {
 // back and its EXR encoding (the values, the exact sums where the image
 // will carry them, the compressed blocks), for every film a frame run holds
 // at once (the one rendering and BackgroundWriter's in flight).
-std::uint64_t host_bytes_beside_renderer(const RenderPlan& plan, const RenderOptions& o) {
+std::uint64_t host_bytes_beside_renderer(const RenderPlan& plan, const PlanOptions& o) {
     const auto pixels = static_cast<std::uint64_t>(plan.config.width) * static_cast<std::uint64_t>(plan.config.height);
     std::uint64_t film = 0;
     for (const film::ChannelInfo& info : film::kChannels)
         if ((plan.config.film_channels & film::channel_bit(info.channel)) != 0) film += film::pixel_bytes(info) * pixels;
     // Checkpoints, slices and renders that --time will stop short carry their exact sums (render_film.cpp).
-    const bool exact_sums = !plan.half && (o.checkpoint || plan.slice || o.time_limit);
+    const bool exact_sums = !plan.half && (o.checkpoints_or_time_limit || plan.slice);
     const std::uint64_t image = film + 2 * exr::encoding_bytes(plan.passes, exact_sums, pixels);
     return renders_frames(o) ? (1 + BackgroundWriter::kDefaultInFlight) * image : image;
 }
 
-RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& knobs);
+RenderPlan plan_render(const PlanOptions& o, SceneInput input, const render::DevelopmentKnobs& knobs);
 
 }  // namespace
 
-RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
-    RenderPlan plan = plan_render(o, knobs);
+RenderPlan make_render_plan(const PlanOptions& o, SceneInput input, const render::DevelopmentKnobs& knobs) {
+    RenderPlan plan = plan_render(o, std::move(input), knobs);
     plan.config.caller_host_bytes = host_bytes_beside_renderer(plan, o);
     // The denoiser's device starts, and its filter is set up for the
     // image's size, on a thread of their own while kernels build and
     // samples render.
-    if (o.denoise && !o.missing)
+    if (o.denoise && o.load_denoiser)
         plan.denoiser = std::make_shared<denoise::Denoiser>(
             denoise::DenoiseSettings{}, denoise::ImageSize{plan.config.width, plan.config.height});
     return plan;
@@ -197,25 +193,13 @@ RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKno
 
 namespace {
 
-RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
+RenderPlan plan_render(const PlanOptions& o, SceneInput input, const render::DevelopmentKnobs& knobs) {
     RenderPlan plan;
-    // Usage errors before the scene is read; kept for the frames a trajectory reads later.
-    plan.style = cli::sphere_style_options(o.style);
-    std::optional<cli::LegendOutput> legend = cli::LegendOutput::prepare(o.style, {{"SCENE", o.scene}});
-    plan.trajectory = request::open_trajectory(o.scene, o.reading);
-    Scene imported;
-    if (plan.trajectory) {
-        plan.scene_label = o.scene;
-        imported = request::for_frame(1, [&] { return request::trajectory_frame(*plan.trajectory, 1, plan.scene_label); });
-    } else {
-        imported = request::read_scene(o.scene, plan.scene_label, o.reading);
-    }
-    // Before the hash: a styled scene is another scene (its outputs say so, and --resume checks it).
-    const auto style_scene = [&] { return cli::apply_sphere_style(imported, plan.style, plan.scene_label); };
-    const SphereStyleResult styled = plan.trajectory ? request::for_frame(1, style_scene) : style_scene();
-    if (legend)
-        legend->write(styled, plan.scene_label,
-                      plan.trajectory && plan.trajectory->frame_count() > 1 && !plan.style.color_range);
+    plan.messages = o.messages;
+    plan.style = o.style;  // kept for the frames a trajectory reads later
+    plan.trajectory = std::move(input.trajectory);
+    plan.scene_label = std::move(input.label);
+    Scene imported = std::move(input.imported);
 
     plan.config.device = o.device;
     plan.config.development = knobs;
@@ -223,14 +207,16 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
     plan.kernel = render::kernel_identity(plan.config.development);
     plan.config.use_binary_cache = !o.no_cache;
     // A build from source takes seconds (tens on a CPU): said once, whatever the devices and frames.
-    plan.config.on_slow_kernel_build = [cached = !o.no_cache, said = std::make_shared<std::once_flag>()] {
-        std::call_once(*said, [cached] {
-            cli::info(cached ? "building kernels for this scene (once; cached)"
-                             : "building kernels for this scene (--no-cache: every run builds them)");
+    plan.config.on_slow_kernel_build = [cached = !o.no_cache, said = std::make_shared<std::once_flag>(),
+                                         messages = o.messages] {
+        std::call_once(*said, [&] {
+            say(messages, MessageKind::Info,
+                cached ? "building kernels for this scene (once; cached)"
+                       : "building kernels for this scene (--no-cache: every run builds them)");
         });
     };
-    plan.half = o.half;
-    if (o.compression) plan.compression = exr::parse_compression(*o.compression);
+    plan.half = o.given.half;
+    if (o.compression) plan.compression = *o.compression;
     plan.denoise = o.denoise;
 
     if (!o.resume.empty()) {
@@ -238,8 +224,7 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
         return plan;
     }
     // The render block (size, spp, depth) is not animated: any pose has the rest pose's.
-    const request::RequestSettings& s = plan.settings =
-        request::resolve_request(o, &imported.render, o.frames ? &*o.frames : nullptr, renders_frames(o));
+    const RequestSettings& s = plan.settings = o.settings;
     plan.config.width = *s.width;
     plan.config.height = *s.height;
     plan.config.seed = s.seed;
@@ -252,12 +237,13 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
     set_passes(plan, s.passes);
     apply_adaptive(o, plan);
     if (renders_frames(o)) {
-        plan.frames = o.frame ? std::vector<long>{*o.frame} : parse_frames_option(*o.frames);
+        plan.frames = o.frames;
         if (plan.trajectory) {
             // Frame f is the file's frame f: one past the end is an error before anything renders.
-            request::require_trajectory_frames(*plan.trajectory, plan.frames, plan.scene_label);
-            if (plan.trajectory->frame_count() == 1 && plan.frames.size() > 1 && !request::camera_moves(s))
-                cli::warning(plan.scene_label + ": holds one frame: every frame renders the same image");
+            require_trajectory_frames(*plan.trajectory, plan.frames, plan.scene_label);
+            if (plan.trajectory->frame_count() == 1 && plan.frames.size() > 1 && !camera_moves(s))
+                say(plan.messages, MessageKind::Warning,
+                    plan.scene_label + ": holds one frame: every frame renders the same image");
             // Each frame is read from the file when it is posed; frame 1, read and styled already, is kept
             // for its pose (when it is one of the frames: else it would only hold memory).
             if (std::find(plan.frames.begin(), plan.frames.end(), 1L) != plan.frames.end())
@@ -265,8 +251,8 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
             return plan;
         }
         for (const std::string& warning :
-             frame_warnings(imported, plan.frames, s.fps, request::camera_moves(s), plan.scene_label))
-            cli::warning(warning);
+             frame_warnings(imported, plan.frames, s.fps, camera_moves(s), plan.scene_label))
+            say(plan.messages, MessageKind::Warning, warning);
         plan.imported = std::move(imported);
         // Posed lazily: a run that finds every frame finished poses none.
         return plan;
@@ -275,12 +261,12 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
         throw InputError(plan.scene_label + ": --time-at poses an animated scene at a time; a trajectory's frames "
                          "are chosen by number: --frame N");
     if (plan.trajectory && plan.trajectory->frame_count() > 1)
-        cli::info(plan.scene_label + ": rendering its first frame of " +
+        say(plan.messages, MessageKind::Info, plan.scene_label + ": rendering its first frame of " +
                   std::to_string(plan.trajectory->frame_count()) + " (--frame N or --frames 1-" +
                   std::to_string(plan.trajectory->frame_count()) + " renders the others)");
     plan.scene_time = o.time_at.value_or(0.0);
-    plan.scene = request::pose_scene(std::move(imported), plan.scene_time, plan.scene_label);
-    request::apply_camera_request(plan.scene, s, std::nullopt, plan.scene_label);
+    plan.scene = pose_scene(std::move(imported), plan.scene_time, plan.scene_label);
+    apply_camera_request(plan.scene, s, std::nullopt, plan.scene_label);
     plan.scene_hash = scene_content_hash(plan.scene);
     return plan;
 }
@@ -288,7 +274,7 @@ RenderPlan plan_render(const RenderOptions& o, const render::DevelopmentKnobs& k
 }  // namespace
 
 PosedFrame pose_at(const RenderPlan& plan, long frame) {
-    return request::for_frame(frame, [&] { return pose_scene_at(plan, frame); });
+    return for_frame(frame, [&] { return pose_scene_at(plan, frame); });
 }
 
 void install(RenderPlan& plan, PosedFrame&& posed) {
@@ -300,14 +286,14 @@ void install(RenderPlan& plan, PosedFrame&& posed) {
         // Without animation or orbit the pose is the scene itself, for good: its imported copy is not needed again.
         if (!changes_per_frame(plan)) plan.imported = Scene{};
     }
-    plan.scene_time = request::frame_time(posed.frame, plan.settings.fps);
+    plan.scene_time = frame_time(posed.frame, plan.settings.fps);
     plan.config.seed = plan.settings.seed_of(posed.frame);
     plan.frame = exr::FrameInfo{posed.frame, plan.settings.fps};
 }
 
 bool changes_per_frame(const RenderPlan& plan) {
     return !plan.imported.animation.empty() || (plan.trajectory && plan.trajectory->frame_count() > 1) ||
-           request::camera_moves(plan.settings);
+           camera_moves(plan.settings);
 }
 
 void pose_frame(RenderPlan& plan, long frame) { install(plan, pose_at(plan, frame)); }
@@ -322,7 +308,7 @@ exr::RenderRequest request_for(RenderPlan& plan, std::optional<long> frame) {
     request.kernel = plan.kernel;
     request.scene = [&plan, frame] {
         if (frame && !posed_at(plan, *frame)) pose_frame(plan, *frame);
-        return request::scene_identity(plan.scene, plan.scene_hash, plan.config.width, plan.config.height);
+        return scene_identity(plan.scene, plan.scene_hash, plan.config.width, plan.config.height);
     };
     return request;
 }
@@ -339,7 +325,7 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     m.kernel = plan.kernel;
     m.environment_seen = environment_emits(plan.scene.environment);
     m.scene_time = plan.scene_time;
-    m.version = cli::version_string();
+    m.version = ORB_VERSION_STRING;  // the project's version, as orb::cli::version_string() says it
     m.world_to_camera = exr::world_to_camera(plan.scene.camera);
     m.world_to_ndc = exr::world_to_ndc(plan.scene.camera, plan.config.width, plan.config.height);
     if (plan.resumed) m.render_seconds = plan.resumed->metadata.render_seconds;
@@ -349,4 +335,4 @@ exr::ExrMetadata plan_metadata(const RenderPlan& plan) {
     return m;
 }
 
-}  // namespace orb::render_cli
+}  // namespace orb::job
