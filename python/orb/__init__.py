@@ -11,9 +11,9 @@ import warnings as _warnings
 import numpy as _np
 
 from . import _orb
-from ._orb import Camera, Error, Scene, devices
+from ._orb import Camera, Error, Image, Scene, devices
 
-__all__ = ["Camera", "Error", "Scene", "devices", "load"]
+__all__ = ["Camera", "Error", "Image", "Scene", "devices", "load", "show"]
 
 
 def _option_word(value):
@@ -115,3 +115,102 @@ def _save(self, path):
 
 
 Scene.save = _save
+
+
+def _render(self, width, height, spp, seed=0, device="default", passes=("beauty",), denoise=False,
+            target_error=None, noise_threshold=None, time_limit=None, progress=None):
+    """Renders the scene as ``orb-render scene.orb --width W --height H --spp N --seed S`` does,
+    the same pixels bit for bit, and returns an orb.Image.
+
+    passes: orb-render's --passes names (beauty, albedo, normal, depth, ...).
+    progress: None, or a function called after every pass with a dict (pass,
+    spp, target_spp, elapsed_seconds, samples_per_second); returning False stops
+    the render after that pass (the image then holds what was rendered).
+    Ctrl-C (KeyboardInterrupt) stops it the same way and raises. The GIL is
+    released while the devices render.
+    """
+    # orb-render's own ranges and messages for its --width, --height and --spp.
+    for option, value, highest in (("--width", width, 65536), ("--height", height, 65536), ("--spp", spp, 2147483647)):
+        if not isinstance(value, (int, _np.integer)) or isinstance(value, bool) or not 1 <= value <= highest:
+            raise ValueError(f"{option}: Value {value} not in range 1 to {highest}")
+    if isinstance(passes, str):
+        passes = (passes,)
+    return _orb._render(self, width, height, spp, seed, str(device), list(passes), bool(denoise), target_error,
+                        noise_threshold, time_limit, progress)
+
+
+Scene.render = _render
+
+
+def _ocio_config():
+    import os
+
+    return os.path.join(os.path.dirname(__file__), "ocio", "config.ocio")
+
+
+def _layer(self, name):
+    try:
+        return self[name]
+    except KeyError:
+        raise AttributeError(name) from None
+
+
+def _to_srgb(self, layer="beauty"):
+    """The layer as orb-tonemap shows it by default: opaque, through the default
+    display view of Orb's OpenColorIO config ($OCIO wins, as in the tools):
+    display-encoded float32 (H, W, 3), not clipped to [0, 1]."""
+    return self._display(layer, _ocio_config())
+
+
+def _to_srgb8(self, layer="beauty"):
+    """The same as uint8 (H, W, 3): the values orb-tonemap writes to an 8-bit PNG."""
+    return self._display8(layer, _ocio_config())
+
+
+def _png_bytes(rgb8):
+    """A PNG of an (H, W, 3 or 4) uint8 array (zlib, no other dependency)."""
+    import struct
+    import zlib
+
+    height, width, channels = rgb8.shape
+    color_type = {3: 2, 4: 6}[channels]
+    raw = b"".join(b"\x00" + rgb8[row].tobytes() for row in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    header = struct.pack(">IIBBBBB", width, height, 8, color_type, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw, 6)) + chunk(b"IEND", b"")
+
+
+def _repr_png(self):
+    """The beauty as orb-tonemap's PNG shows it (Jupyter displays an image by this)."""
+    return _png_bytes(self.to_srgb8())
+
+
+def _save_image(self, path):
+    """Writes the EXR file orb-render writes for this render (the same bytes
+    but for orb:renderSeconds and orb:device), through a temporary file."""
+    import os
+
+    self._save_exr(os.fspath(path))
+
+
+Image.__getattr__ = _layer
+Image.to_srgb = _to_srgb
+Image.to_srgb8 = _to_srgb8
+Image._repr_png_ = _repr_png
+Image.png = _repr_png
+Image.save = _save_image
+
+
+def show(scene, width=320, height=240, spp=16, **options):
+    """Renders `scene` small and displays it in a notebook cell (IPython.display);
+    returns the orb.Image."""
+    image = scene.render(width, height, spp, **options)
+    try:
+        from IPython.display import display
+    except ImportError:
+        return image
+    display(image)
+    return image

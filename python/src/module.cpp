@@ -5,6 +5,7 @@
 #include "devices.h"
 #include "errors.h"
 #include "orb/cli/messages.h"
+#include "render_bindings.h"
 #include "scene_bindings.h"
 
 PYBIND11_MODULE(_orb, module) {
@@ -14,5 +15,6 @@ PYBIND11_MODULE(_orb, module) {
     orb::python::register_errors(module);
     orb::python::bind_camera(module);
     orb::python::bind_scene(module);
+    orb::python::bind_rendering(module);
     orb::python::bind_devices(module);
 }
