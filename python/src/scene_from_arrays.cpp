@@ -127,13 +127,15 @@ Scene scene_from_arrays(const py::handle& centers, const py::handle& radii, cons
         double smallest = cloud.spheres.front().radius;
         for (const Sphere& sphere : cloud.spheres) smallest = std::min(smallest, sphere.radius);
         Scene scene = point_cloud_scene(std::move(cloud), smallest, kSource);
-        if (py::isinstance<py::dict>(material)) scene.materials[0] = material_of(material.cast<py::dict>(), scene.materials[0]);
         if (preset) {
             SphereStyleOptions style;
             style.material = preset;
-            apply_sphere_styling(scene, style, kSource);
+            apply_sphere_styling(scene, style, kSource);  // leaves a valid scene valid
         }
-        validate_scene(scene, kSource);
+        if (py::isinstance<py::dict>(material)) {
+            scene.materials[0] = material_of(material.cast<py::dict>(), scene.materials[0]);
+            validate_scene(scene, kSource);  // the material's values
+        }
         return scene;
     } catch (const InputError& e) {
         throw_value_error(e.what());
