@@ -116,5 +116,7 @@ def test_bad_materials():
         orb.Scene.from_arrays(grid(2), 0.3, materials="gold")
     with pytest.raises(ValueError, match="material\\['type'\\]: unknown material type 'wood'"):
         orb.Scene.from_arrays(grid(2), 0.3, materials={"type": "wood"})
+    with pytest.raises(ValueError, match=r"^Scene\.from_arrays: materials\[0\]\.ior"):
+        orb.Scene.from_arrays(grid(2), 0.3, materials={"type": "dielectric", "ior": -1})
     with pytest.raises(ValueError, match="material: unknown key 'shine'"):
         orb.Scene.from_arrays(grid(2), 0.3, materials={"shine": 1})
