@@ -13,7 +13,7 @@ import numpy as _np
 from . import _orb
 from ._orb import Camera, Error, Image, Scene, devices
 
-__all__ = ["Camera", "Error", "Image", "Scene", "devices", "load", "show"]
+__all__ = ["Camera", "Error", "Image", "Scene", "devices", "from_ase", "load", "show"]
 
 
 def _option_word(value):
@@ -214,3 +214,35 @@ def show(scene, width=320, height=240, spp=16, **options):
         return image
     display(image)
     return image
+
+
+def _extended_xyz(symbols, positions, cell=None, pbc=None):
+    """One frame as extended XYZ text, the format Orb's XYZ importer reads."""
+    positions = _np.asarray(positions, dtype=_np.float64)
+    header = "Properties=species:S:1:pos:R:3"
+    if cell is not None and _np.any(cell):
+        lattice = " ".join(repr(float(v)) for v in _np.asarray(cell, dtype=_np.float64).ravel())
+        flags = " ".join("T" if p else "F" for p in (pbc if pbc is not None else (True, True, True)))
+        header = f'Lattice="{lattice}" {header} pbc="{flags}"'
+    rows = _np.char.add(_np.asarray(symbols, dtype=str), " ")
+    numbers = _np.char.mod("%.17g", positions)
+    lines = _np.char.add(_np.char.add(_np.char.add(rows, numbers[:, 0]), _np.char.add(" ", numbers[:, 1])),
+                         _np.char.add(" ", numbers[:, 2]))
+    return f"{len(positions)}\n{header}\n" + "\n".join(lines.tolist()) + "\n"
+
+
+def from_ase(atoms, **options):
+    """An ASE Atoms object as Orb reads the same atoms from an extended XYZ file:
+    a sphere per atom coloured and sized by element, with ``load``'s options
+    (``cell=True`` draws the cell, ``color_by=...``). ASE itself is not needed
+    to call it, only an object with ASE's Atoms methods."""
+    try:
+        symbols, positions = atoms.get_chemical_symbols(), atoms.get_positions()
+    except AttributeError:
+        raise TypeError("from_ase: expected an ase.Atoms (get_chemical_symbols, get_positions)") from None
+    cell = atoms.get_cell() if hasattr(atoms, "get_cell") else None
+    pbc = atoms.get_pbc() if hasattr(atoms, "get_pbc") else None
+    text = _extended_xyz(symbols, positions, None if cell is None else _np.asarray(cell), pbc)
+    scene, messages = Scene._load_text("<ase.Atoms>", text, _keyword_options(dict(options, **{"from": "xyz"})))
+    _warn(messages)
+    return scene

@@ -116,6 +116,11 @@ void bind_scene(py::module_& module) {
                         LoadedScene loaded = load_scene(path, options);
                         return std::make_pair(std::move(loaded.scene), std::move(loaded.warnings));
                     })
+        .def_static("_load_text",
+                    [](const std::string& source, const std::string& text, const KeywordOptions& options) {
+                        LoadedScene loaded = load_scene(source, options, &text);
+                        return std::make_pair(std::move(loaded.scene), std::move(loaded.warnings));
+                    })
         .def("_set_camera", &set_camera_options)
         .def("_set_environment", &set_environment)
         .def("__len__", [](const Scene& s) { return s.spheres.size(); })

@@ -66,12 +66,12 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
-LoadedScene load_scene(const std::string& path, const KeywordOptions& options) {
+LoadedScene load_scene(const std::string& path, const KeywordOptions& options, const std::string* text) {
     CLI::App app{"orb.load"};
     LoadArguments args;
     add_load_options(app, args);
     parse_keyword_options(app, options, "load");
-    if (path == "-") throw_value_error("load: reading stdin is orb-import's; give a file's path");
+    if (!text && path == "-") throw_value_error("load: reading stdin is orb-import's; give a file's path");
 
     const SphereStyleOptions style = cli::sphere_style_options(args.style);
     ImportOptions import_options = cli::import_options_for(args.reading);
@@ -83,9 +83,9 @@ LoadedScene load_scene(const std::string& path, const KeywordOptions& options) {
     std::optional<Environment> environment = cli::chosen_environment(args.reading.environment, ".");
 
     LoadedScene loaded;
-    ImportResult imported = is_series_pattern(path)
-                                ? import_molecular_series(path, import_options)
-                                : import_scene(read_file(path), path, folder_of(path), import_options);
+    ImportResult imported = text                      ? import_scene(*text, path, ".", import_options)
+                            : is_series_pattern(path) ? import_molecular_series(path, import_options)
+                                                      : import_scene(read_file(path), path, folder_of(path), import_options);
     if (args.strict && !imported.warnings.empty()) {
         std::string message = path + " would lose information (strict=True):";
         for (const std::string& loss : imported.warnings) message += "\n  " + loss;

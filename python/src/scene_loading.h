@@ -17,8 +17,9 @@ struct LoadedScene {
 
 // Reads `path` as orb-import reads its INPUT with `options`; its environment
 // map, if any, is named relative to the current directory (where Python
-// resolves paths). Throws as errors.h says.
-LoadedScene load_scene(const std::string& path, const KeywordOptions& options);
+// resolves paths). With `text`, that is the input, `path` only its name in
+// messages (the adapters hand over a frame they wrote). Throws as errors.h says.
+LoadedScene load_scene(const std::string& path, const KeywordOptions& options, const std::string* text = nullptr);
 
 // Applies orb-import's camera options (camera_position, look_at, up, vfov,
 // aperture, focus_distance, orthographic, auto_camera) to `scene`.
