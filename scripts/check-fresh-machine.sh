@@ -6,10 +6,13 @@
 #                                         print no compiler warning, and take at
 #                                         most ORB_FRESH_QUICKSTART_LIMIT seconds)
 #   2. ./scripts/quickstart.sh again    (a no-op: renders nothing, takes seconds)
-#   3. ./scripts/test.sh                (the whole suite passes)
-#   4. ./scripts/package.sh             (builds the .deb)
+#   3. pip install . in a virtual environment (docs/python.md), and a render
+#      from numpy arrays with the installed module
+#   4. ./scripts/test.sh                (the whole suite passes)
+#   5. ./scripts/package.sh             (builds the .deb and the wheel)
 # and in a second pristine root installs that .deb with `apt install` and
-# renders /usr/share/orb/scenes/cornell.scn to a PNG with the installed tools.
+# renders /usr/share/orb/scenes/cornell.scn to a PNG with the installed tools,
+# then installs the wheel in a virtual environment and renders from Python.
 # Prints the time of each step; exits non-zero when any step fails.
 #
 #   scripts/check-fresh-machine.sh [--quickstart-only] [--no-tests] [--keep]
@@ -139,6 +142,11 @@ timed "quick start (second run)" in_root "$first" 'cd /root/orb && ./scripts/qui
   fail "the second quick start wrote its images again; it should find them finished"
 ((step_seconds[-1] <= 60)) || fail "the second quick start took ${step_seconds[-1]} s; it should be a no-op"
 
+python_render='import numpy as np, orb; s = orb.Scene.from_arrays(np.random.default_rng(1).normal(size=(1000, 3)), 0.05); i = s.render(64, 48, 4); assert i.beauty.shape == (48, 64, 4) and i.beauty[..., :3].max() > 0; print(orb.devices()[0]["name"])'
+timed "pip install . in a venv, a render from numpy arrays" in_root "$first" \
+  "cd /root/orb && python3 -m venv --system-site-packages /root/orb-venv && /root/orb-venv/bin/pip install --quiet . &&
+   cd /tmp && /root/orb-venv/bin/python -c '$python_render'"
+
 if ((run_tests)); then
   timed "test suite (scripts/test.sh)" in_root "$first" 'cd /root/orb && ./scripts/test.sh'
 fi
@@ -159,6 +167,13 @@ if ((run_package)); then
   timed "installed tools render cornell.scn to a PNG" in_root "$second" \
     'cd /tmp && orb-render /usr/share/orb/scenes/cornell.scn --width 160 --height 120 --spp 4 -o cornell.exr &&
      orb-tonemap cornell.exr -o cornell.png && test -s cornell.png'
+  wheel=$(find "$first/root/orb/out" -maxdepth 1 -name 'orb-*.whl' | head -1)
+  [[ -n $wheel ]] || fail "scripts/package.sh wrote no orb-*.whl"
+  cp "$wheel" "$second/root/"
+  timed "the wheel in a venv renders from numpy arrays (second root)" in_root "$second" \
+    "export DEBIAN_FRONTEND=noninteractive && apt-get install -y -qq python3-venv python3-numpy >/dev/null &&
+     python3 -m venv --system-site-packages /root/v && /root/v/bin/pip install --quiet /root/$(basename "$wheel") &&
+     cd /tmp && /root/v/bin/python -c '$python_render'"
 fi
 
 echo

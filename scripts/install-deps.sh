@@ -18,6 +18,8 @@ packages=(
   openimageio-tools
   # PDB and mmCIF (header-only; pegtl is its CIF parser's)
   gemmi-dev tao-pegtl-dev
+  # the Python module (`pip install .`, docs/python.md): its headers and pybind11
+  python3-dev pybind11-dev
 )
 test_packages=(
   # GoogleTest and GoogleMock (Debian 12's libgtest-dev has no GoogleMock):
@@ -29,12 +31,16 @@ test_packages=(
   slurm-wlm munge
   # the tutorial's video step (docs.commands runs every block of the docs)
   ffmpeg
+  # the Python module's tests (python.pytest, python.notebook; -DORB_PYTHON=ON)
+  python3-pytest python3-numpy python3-nbconvert python3-ipykernel
 )
 package_packages=(
   # cpack's Depends (dpkg-shlibdeps), the package's check, reading its man pages
   dpkg-dev lintian man-db
   # the bash completions' test
   bash-completion
+  # the Python wheel beside the .deb (pip wheel)
+  python3-pip python3-numpy
 )
 for argument in "$@"; do
   case $argument in

@@ -9,7 +9,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 [[ -n "${ORB_FUZZ_SECONDS:-}" ]] && export ORB_WITH_FUZZ=1
 "$root/scripts/install-deps.sh" --tests
-"$root/scripts/build.sh" -DORB_BUILD_TESTS=ON -DORB_WERROR="$([[ ${ORB_WERROR:-0} == 1 ]] && echo ON || echo OFF)"
+"$root/scripts/build.sh" -DORB_BUILD_TESTS=ON -DORB_PYTHON=ON -DORB_WERROR="$([[ ${ORB_WERROR:-0} == 1 ]] && echo ON || echo OFF)"
 build=${ORB_BUILD_DIR:-$root/build}
 ctest --test-dir "$build" -j "${ORB_JOBS:-$(nproc)}" --output-on-failure --timeout 600
 if [[ "${ORB_SANITIZE:-0}" == 1 ]]; then "$root/scripts/sanitize.sh"; fi

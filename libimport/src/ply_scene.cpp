@@ -2,13 +2,11 @@
 // docs/orb-import.md ("PLY point clouds"); change them together.
 #include "ply_scene.h"
 
-#include "default_lights.h"
-
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <unordered_map>
 
+#include "orb/import/point_cloud.h"
 #include "orb/scene/detail/json_text.h"
 #include "srgb.h"
 #include "orb/scene/auto_framing.h"
@@ -25,35 +23,6 @@ struct Bounds {
 // PLY colours are display values (what point-cloud viewers show as is), so
 // they are sRGB-encoded; the scene holds linear Rec.709 reflectance.
 using detail::srgb_to_linear;
-
-// Looks at the cloud from above the +z side (30 degrees up), framed by the
-// rule every importer shares (orb/scene/auto_framing.h: stray points left
-// out, the framed points filling the tighter image direction but for a 10%
-// margin). Returns the radius of the framed points' bounds (half their box's
-// diagonal, at least `point_radius` so that a lone point counts), around the
-// camera's target, which places the default lights.
-double frame_cloud(Scene& scene, double point_radius, const std::string& source) {
-    constexpr double kElevation = 30.0 * std::numbers::pi / 180.0;
-    const FramingView view{{0.0, std::sin(kElevation), std::cos(kElevation)}, {0, 1, 0}, scene.camera.vfov_deg,
-                           scene.render.width, scene.render.height};
-    const Framing framing = *frame_spheres(scene.spheres, view);  // a cloud has at least one point
-    const Vec3& center = framing.target;
-    const double distance = framing.distance;
-    const Bounds framed{framing.lo, framing.hi};
-    const double radius = std::max(framed.diagonal() / 2, point_radius);
-    scene.camera.position = framing.position;
-    // Far from the origin relative to its size, the offset vanishes in rounding.
-    const Vec3& p = scene.camera.position;
-    if (std::hypot(p[0] - center[0], p[1] - center[1], p[2] - center[2]) < 0.5 * distance)
-        throw InputError(source + ": the cloud lies too far from the origin for its size (radius " +
-                         detail::format_number(radius) + " around " + detail::format_number(center[0]) + ", " +
-                         detail::format_number(center[1]) + ", " + detail::format_number(center[2]) +
-                         "): no camera can be placed in double precision; move it or pass a larger --radius");
-    scene.camera.target = center;
-    scene.camera.up = {0, 1, 0};
-    scene.camera.focus_distance = distance;
-    return radius;
-}
 
 }  // namespace
 
@@ -97,24 +66,15 @@ double default_point_radius(const std::vector<Vec3>& centers) {
 }
 
 Scene cloud_scene(VertexColumns columns, const PlyImportOptions& options, const std::string& source) {
-    Scene scene;
     const double radius = options.radius > 0 ? options.radius : default_point_radius(columns.centers);
     const std::size_t count = columns.centers.size();
-
-    // One material for every point; the points' colours, when the file has
-    // them, are the spheres' own (Scene::sphere_attributes), not a material
-    // per colour: a million colours read, hash and upload as arrays.
-    Material point;
-    point.name = "point";
-    point.color = {0.8, 0.8, 0.8};  // the scene format's default colour
-    scene.materials.push_back(point);
-    scene.spheres.resize(count);
+    PointCloud cloud;
+    cloud.spheres.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
-        Sphere& sphere = scene.spheres[i];
+        Sphere& sphere = cloud.spheres[i];
         sphere.center = columns.centers[i];
         sphere.radius = columns.radii.empty() ? radius : columns.radii[i];
     }
-    SphereAttributes& attributes = scene.sphere_attributes;
     if (!columns.colors.empty()) {
         // 256 levels per 8-bit channel: decode each level once.
         std::unordered_map<double, float> linear_of;
@@ -123,25 +83,13 @@ Scene cloud_scene(VertexColumns columns, const PlyImportOptions& options, const 
             if (inserted) found->second = static_cast<float>(srgb_to_linear(encoded));
             return found->second;
         };
-        attributes.colors.resize(3 * count);
+        cloud.colors.resize(3 * count);
         for (std::size_t i = 0; i < count; ++i)
-            for (int c = 0; c < 3; ++c) attributes.colors[3 * i + c] = linear(columns.colors[i][c]);
+            for (int c = 0; c < 3; ++c) cloud.colors[3 * i + c] = linear(columns.colors[i][c]);
     }
-    attributes.properties = std::move(columns.properties);
+    cloud.properties = std::move(columns.properties);
     columns = {};  // the sphere list is the only copy from here on
-
-    // The lights go around the framed points: stray points would push them far away.
-    const double framed_radius = frame_cloud(scene, radius, source);
-    detail::add_default_lights(scene, scene.camera.target, framed_radius);
-    // The lights' entries of the arrays: their material's colour (black), and
-    // 0 for every property (styling leaves emissive spheres alone).
-    for (std::size_t i = count; i < scene.spheres.size(); ++i) {
-        if (!attributes.colors.empty())
-            for (int c = 0; c < 3; ++c)
-                attributes.colors.push_back(static_cast<float>(scene.materials[scene.spheres[i].material].color[c]));
-        for (SphereProperty& property : attributes.properties) property.values.push_back(0.0f);
-    }
-    return scene;
+    return point_cloud_scene(std::move(cloud), radius, source);
 }
 
 }  // namespace orb::ply

@@ -8,6 +8,7 @@ namespace orb::cli {
 namespace {
 std::string g_tool_name = "orb";
 bool g_quiet = false;
+std::function<void(const std::string&)> g_warning_sink;
 
 // Each line in one write, so that lines from several threads (orb-render's
 // frame writers) never interleave within a line; the bytes of an input a
@@ -24,7 +25,10 @@ bool quiet() { return g_quiet; }
 
 void error(const std::string& message) { say("error: ", message); }
 
+void set_warning_sink(std::function<void(const std::string&)> sink) { g_warning_sink = std::move(sink); }
+
 void warning(const std::string& message) {
+    if (g_warning_sink) return g_warning_sink(message);
     if (!g_quiet) say("warning: ", message);
 }
 

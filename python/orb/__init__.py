@@ -1,0 +1,248 @@
+"""Orb from Python: scenes of spheres from files or numpy arrays (docs/python.md).
+
+The module binds Orb's libraries (pybind11, orb._orb); it never runs the tools.
+Keyword options are orb-import's long options with ``_`` for ``-``
+(``orb.load("cloud.ply", color_by="temperature", radius=0.01)``) and are checked
+by the same code, with the same messages.
+"""
+
+import warnings as _warnings
+
+import numpy as _np
+
+from . import _orb
+from ._orb import Camera, Error, Image, Scene, devices
+
+__all__ = ["Camera", "Error", "Image", "Scene", "devices", "from_ase", "load", "show"]
+
+
+def _option_word(value):
+    """A keyword's value as the command line writes it; None: a flag."""
+    if isinstance(value, (str, bytes)):
+        return value.decode() if isinstance(value, bytes) else value
+    if isinstance(value, (bool, _np.bool_)):
+        raise AssertionError("flags are handled by _keyword_options")
+    if isinstance(value, _np.ndarray) or isinstance(value, (list, tuple)):
+        return ",".join(_option_word(v) for v in _np.asarray(value).ravel().tolist())
+    if isinstance(value, (float, _np.floating)):
+        return repr(float(value))
+    return str(value)
+
+
+def _keyword_options(options):
+    """[(name, value word or None)]: True is a flag given; False and None leave an option out."""
+    words = []
+    for name, value in options.items():
+        if value is None or value is False or (isinstance(value, _np.bool_) and not value):
+            continue
+        words.append((name, None if value is True or isinstance(value, _np.bool_) else _option_word(value)))
+    return words
+
+
+def _warn(messages):
+    for message in messages:
+        _warnings.warn(message, stacklevel=3)
+
+
+def load(path, **options):
+    """Reads any scene Orb reads (orb-import --list-formats) as orb-import does.
+
+    ``options`` are orb-import's options by their long names with ``_``:
+    ``color_by``, ``colormap``, ``radius``, ``frame``, ``environment``,
+    ``look_at``, ``auto_camera=True``, ... What orb-import would warn about is a
+    Python warning. Raises FileNotFoundError, ValueError (a bad option) or
+    orb.Error (a bad file) with orb-import's message.
+    """
+    import os
+
+    scene, messages = Scene._load(os.fspath(path), _keyword_options(options))
+    _warn(messages)
+    return scene
+
+
+def _from_arrays(centers, radii, colors=None, materials=None, properties=None):
+    """A scene of spheres from arrays: centers (N, 3), radii (N,) or a number.
+
+    colors: None or (N, 3) display (sRGB-encoded) values in [0, 1], as
+    matplotlib's. materials: None (a grey diffuse material), a preset
+    ("matte", "plastic", "metal") or a dict of the scene format's material keys
+    (type, color, emission, ior, roughness, metallic) for every sphere.
+    properties: {name: (N,) numbers, or (N,) strings for a category}, for
+    ``load``'s colour and radius options' counterparts in orb-import.
+    The camera and two lights are placed as for a PLY point cloud.
+    """
+    listed = []
+    for name, values in (properties or {}).items():
+        array = _np.asarray(values)
+        if array.dtype.kind in "USO":
+            labels, indices = _np.unique(array.astype(str), return_inverse=True)
+            listed.append((str(name), indices.astype(_np.float64), [str(label) for label in labels]))
+        else:
+            listed.append((str(name), array, []))
+    return Scene._from_arrays(centers, radii, colors, materials, listed)
+
+
+def _set_camera(self, **options):
+    """Changes the camera by orb-import's camera options: camera_position, look_at,
+    up, vfov, aperture, focus_distance, orthographic, perspective=True,
+    auto_camera=True (frames the spheres anew for the scene's image)."""
+    self._set_camera(_keyword_options(options))
+
+
+def _set_environment(self, value, intensity=1.0, rotation=0.0):
+    """Lights the scene from infinitely far away, as --environment does: an
+    (R, G, B) radiance, one number, an OpenEXR map's path, or None for none."""
+    if value is None:
+        self._set_environment([])
+        return
+    self._set_environment(
+        _keyword_options({"environment": value, "environment_intensity": intensity, "environment_rotation": rotation})
+    )
+
+
+Scene.from_arrays = staticmethod(_from_arrays)
+Scene.set_camera = _set_camera
+Scene.set_environment = _set_environment
+
+
+def _save(self, path):
+    """Writes the scene: a .json name the Orb JSON scene, a .orb name its binary
+    form (for millions of spheres), as orb-import writes them; a previous file
+    survives any failure."""
+    import os
+
+    self._save(os.fspath(path))
+
+
+Scene.save = _save
+
+
+def _render(self, width, height, spp, seed=0, device="default", passes=("beauty",), denoise=False,
+            target_error=None, noise_threshold=None, time_limit=None, progress=None):
+    """Renders the scene as ``orb-render scene.orb --width W --height H --spp N --seed S`` does,
+    the same pixels bit for bit, and returns an orb.Image.
+
+    passes: orb-render's --passes names (beauty, albedo, normal, depth, ...).
+    progress: None, or a function called after every pass with a dict (pass,
+    spp, target_spp, elapsed_seconds, samples_per_second); returning False stops
+    the render after that pass (the image then holds what was rendered).
+    Ctrl-C (KeyboardInterrupt) stops it the same way and raises. The GIL is
+    released while the devices render.
+    """
+    # orb-render's own ranges and messages for its --width, --height and --spp.
+    for option, value, highest in (("--width", width, 65536), ("--height", height, 65536), ("--spp", spp, 2147483647)):
+        if not isinstance(value, (int, _np.integer)) or isinstance(value, bool) or not 1 <= value <= highest:
+            raise ValueError(f"{option}: Value {value} not in range 1 to {highest}")
+    if isinstance(passes, str):
+        passes = (passes,)
+    return _orb._render(self, width, height, spp, seed, str(device), list(passes), bool(denoise), target_error,
+                        noise_threshold, time_limit, progress)
+
+
+Scene.render = _render
+
+
+def _ocio_config():
+    import os
+
+    return os.path.join(os.path.dirname(__file__), "ocio", "config.ocio")
+
+
+def _layer(self, name):
+    try:
+        return self[name]
+    except KeyError:
+        raise AttributeError(name) from None
+
+
+def _to_srgb(self, layer="beauty"):
+    """The layer as orb-tonemap shows it by default: opaque, through the default
+    display view of Orb's OpenColorIO config ($OCIO wins, as in the tools):
+    display-encoded float32 (H, W, 3), not clipped to [0, 1]."""
+    return self._display(layer, _ocio_config())
+
+
+def _to_srgb8(self, layer="beauty"):
+    """The same as uint8 (H, W, 3): the values orb-tonemap writes to an 8-bit PNG."""
+    return self._display8(layer, _ocio_config())
+
+
+def _png_bytes(rgb8):
+    """A PNG of an (H, W, 3 or 4) uint8 array (zlib, no other dependency)."""
+    import struct
+    import zlib
+
+    height, width, channels = rgb8.shape
+    color_type = {3: 2, 4: 6}[channels]
+    raw = b"".join(b"\x00" + rgb8[row].tobytes() for row in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    header = struct.pack(">IIBBBBB", width, height, 8, color_type, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw, 6)) + chunk(b"IEND", b"")
+
+
+def _repr_png(self):
+    """The beauty as orb-tonemap's PNG shows it (Jupyter displays an image by this)."""
+    return _png_bytes(self.to_srgb8())
+
+
+def _save_image(self, path):
+    """Writes the EXR file orb-render writes for this render (the same bytes
+    but for orb:renderSeconds and orb:device), through a temporary file."""
+    import os
+
+    self._save_exr(os.fspath(path))
+
+
+Image.__getattr__ = _layer
+Image.to_srgb = _to_srgb
+Image.to_srgb8 = _to_srgb8
+Image._repr_png_ = _repr_png
+Image.png = _repr_png
+Image.save = _save_image
+
+
+def show(scene, width=320, height=240, spp=16, **options):
+    """Renders `scene` small and displays it in a notebook cell (IPython.display);
+    returns the orb.Image."""
+    image = scene.render(width, height, spp, **options)
+    try:
+        from IPython.display import display
+    except ImportError:
+        return image
+    display(image)
+    return image
+
+
+def _extended_xyz(symbols, positions, cell=None, pbc=None):
+    """One frame as extended XYZ text, the format Orb's XYZ importer reads."""
+    positions = _np.asarray(positions, dtype=_np.float64)
+    header = "Properties=species:S:1:pos:R:3"
+    if cell is not None and _np.any(cell):
+        lattice = " ".join(repr(float(v)) for v in _np.asarray(cell, dtype=_np.float64).ravel())
+        flags = " ".join("T" if p else "F" for p in (pbc if pbc is not None else (True, True, True)))
+        header = f'Lattice="{lattice}" {header} pbc="{flags}"'
+    rows = _np.char.add(_np.asarray(symbols, dtype=str), " ")
+    numbers = _np.char.mod("%.17g", positions)
+    lines = _np.char.add(_np.char.add(_np.char.add(rows, numbers[:, 0]), _np.char.add(" ", numbers[:, 1])),
+                         _np.char.add(" ", numbers[:, 2]))
+    return f"{len(positions)}\n{header}\n" + "\n".join(lines.tolist()) + "\n"
+
+
+def from_ase(atoms, **options):
+    """An ASE Atoms object as Orb reads the same atoms from an extended XYZ file:
+    a sphere per atom coloured and sized by element, with ``load``'s options
+    (``cell=True`` draws the cell, ``color_by=...``). ASE itself is not needed
+    to call it, only an object with ASE's Atoms methods."""
+    try:
+        symbols, positions = atoms.get_chemical_symbols(), atoms.get_positions()
+    except AttributeError:
+        raise TypeError("from_ase: expected an ase.Atoms (get_chemical_symbols, get_positions)") from None
+    cell = atoms.get_cell() if hasattr(atoms, "get_cell") else None
+    pbc = atoms.get_pbc() if hasattr(atoms, "get_pbc") else None
+    text = _extended_xyz(symbols, positions, None if cell is None else _np.asarray(cell), pbc)
+    scene, messages = Scene._load_text("<ase.Atoms>", text, _keyword_options(dict(options, **{"from": "xyz"})))
+    _warn(messages)
+    return scene

@@ -1,0 +1,28 @@
+// orb.devices(): the OpenCL devices, as orb-render --list-devices lists them.
+#include <pybind11/stl.h>
+
+#include "devices.h"
+#include "orb/render/device.h"
+
+namespace py = pybind11;
+
+namespace orb::python {
+
+void bind_devices(py::module_& module) {
+    module.def(
+        "devices",
+        [] {
+            py::list listed;
+            for (const render::DeviceInfo& d : render::list_devices())
+                listed.append(py::dict(py::arg("index") = d.index,
+                                       py::arg("type") = d.is_gpu ? "gpu" : d.is_cpu ? "cpu" : "other",
+                                       py::arg("name") = d.name, py::arg("platform") = d.platform,
+                                       py::arg("vendor") = d.vendor, py::arg("version") = d.version,
+                                       py::arg("compute_units") = d.compute_units,
+                                       py::arg("memory_bytes") = d.global_memory_bytes));
+            return listed;
+        },
+        "Every OpenCL device, as orb-render --list-devices lists them: index, type, name, platform, ...");
+}
+
+}  // namespace orb::python
