@@ -127,7 +127,7 @@ int run_frames(RenderPlan& plan, const RenderOptions& options, RenderOutputs& ou
     const Clock::time_point start = Clock::now();
 
     std::optional<render::Renderer> renderer;
-    BackgroundWriter writer;  // after the renderer: destroyed first, so a pending write ends before it
+    BackgroundWriter writer(std::max<std::size_t>(1, plan.frames_in_flight));  // after the renderer: destroyed first, so a pending write ends before it
     std::vector<RunStats> rendered;
     std::vector<std::shared_ptr<denoise::DenoiseTimes>> denoise_times;  // each rendered frame's, known once its write is done
     std::vector<long> skipped;
