@@ -38,8 +38,9 @@ std::vector<OrderedWrites::Done> OrderedWrites::submit(std::unique_ptr<Write> wr
     slot->sequence = next_sequence_++;
     queued_.push_back(slot.get());
     slots_.push_back(std::move(slot));
-    // A worker per write in flight at most, started when none is free.
-    if (idle_workers_ == 0 && workers_.size() < max_in_flight_) workers_.emplace_back([this] { work(); });
+    // A worker per write in flight at most, started when more writes wait
+    // than workers are free (a free worker may not have woken for the last one yet).
+    if (queued_.size() > idle_workers_ && workers_.size() < max_in_flight_) workers_.emplace_back([this] { work(); });
     lock.unlock();
     changed_.notify_all();
     return done;
