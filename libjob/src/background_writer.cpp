@@ -32,14 +32,14 @@ public:
     std::string_view make() override { return job_.image.encode(*encoding_); }
     void written() override {
         // (Nothing to say for orb-render --benchmark --frames.)
-        if (!job_.written.empty()) {
+        if (!job_.written.empty())
             say(messages_, job_.warn ? MessageKind::Warning : MessageKind::Info, job_.label + job_.written);
-        }
         job_.claim.reset();
     }
     void not_written(const std::string& why) override {
-        say(messages_, MessageKind::Error, job_.label + "not written: " +
-                   (why.empty() ? "the run stops, since an earlier frame could not be written" : why));
+        say(messages_, MessageKind::Error,
+            job_.label + "not written: " +
+                (why.empty() ? "the run stops, since an earlier frame could not be written" : why));
         job_.claim.reset();
     }
 
