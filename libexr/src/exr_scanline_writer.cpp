@@ -5,14 +5,11 @@
 #include <Imath/half.h>
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cstring>
-#include <exception>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 
+#include "block_workers.h"
 #include "exr_zip_block.h"
 
 namespace orb::exr::detail {
@@ -118,29 +115,16 @@ void pack_block(const std::vector<Channel>& channels, int width, int first_row, 
         }
 }
 
-// Runs job(block, worker) for every block on every core; rethrows the first error.
+// Runs job(block, compressor, raw) for every block on the shared block
+// workers; rethrows the first error. Each thread keeps its compressor and
+// its packing memory from block to block and from file to file.
 template <typename Job>
 void for_each_block(int blocks, Job job) {
-    const int workers = std::max(1, std::min<int>(blocks, static_cast<int>(std::thread::hardware_concurrency())));
-    std::atomic<int> next{0};
-    std::exception_ptr error;
-    std::mutex error_lock;
-    const auto work = [&] {
-        try {
-            ZipBlockCompressor compressor;
-            std::vector<std::uint8_t> raw;
-            for (int block = next++; block < blocks; block = next++) job(block, compressor, raw);
-        } catch (...) {
-            const std::lock_guard<std::mutex> lock(error_lock);
-            if (!error) error = std::current_exception();
-            next = blocks;
-        }
-    };
-    std::vector<std::thread> threads;
-    for (int i = 1; i < workers; ++i) threads.emplace_back(work);
-    work();
-    for (std::thread& thread : threads) thread.join();
-    if (error) std::rethrow_exception(error);
+    run_blocks(blocks, [&](int block) {
+        thread_local ZipBlockCompressor compressor;
+        thread_local std::vector<std::uint8_t> raw;
+        job(block, compressor, raw);
+    });
 }
 
 }  // namespace

@@ -16,11 +16,11 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
-#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <variant>
 
+#include "block_workers.h"
 #include "exr_header_attributes.h"
 #include "exr_scanline_writer.h"
 #include "film_channels.h"
@@ -102,23 +102,11 @@ private:
 void fill_all_planes(const Film& film, const detail::PlaneSet& set, const std::vector<detail::Plane>& planes) {
     const auto width = static_cast<std::size_t>(film.width);
     const auto rows = static_cast<std::size_t>(film.height);
-    const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, rows);
-    std::exception_ptr error;
-    std::mutex error_lock;
-    const auto work = [&](std::size_t worker) {
-        try {
-            detail::fill_planes(film, set, planes, rows * worker / workers * width,
-                                rows * (worker + 1) / workers * width);
-        } catch (...) {
-            const std::lock_guard<std::mutex> lock(error_lock);
-            if (!error) error = std::current_exception();
-        }
-    };
-    std::vector<std::thread> threads;
-    for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work, w);
-    work(0);
-    for (std::thread& thread : threads) thread.join();
-    if (error) std::rethrow_exception(error);
+    const std::size_t parts = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, rows);
+    detail::run_blocks(static_cast<int>(parts), [&](int part) {
+        const auto p = static_cast<std::size_t>(part);
+        detail::fill_planes(film, set, planes, rows * p / parts * width, rows * (p + 1) / parts * width);
+    });
 }
 
 }  // namespace

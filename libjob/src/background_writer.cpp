@@ -1,7 +1,11 @@
 #include "orb/job/background_writer.h"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "orb/job/seconds_since.h"
@@ -16,23 +20,64 @@ std::string name_of(const BackgroundWriter::Job& job) {
     return label.empty() ? job.output->display_name() : label;
 }
 
-}  // namespace
+// One frame on the writer's workers: encoded into memory reused from frame
+// to frame, said done once its file is in place, its claim released then
+// (or once it failed: others may take it).
+class FrameWrite final : public OrderedWrites::Write {
+public:
+    FrameWrite(BackgroundWriter::Job job, std::unique_ptr<exr::ExrEncoding> encoding, const MessageSink& messages)
+        : job_(std::move(job)), encoding_(std::move(encoding)), messages_(messages) {}
 
-BackgroundWriter::BackgroundWriter(MessageSink messages, std::size_t max_in_flight)
-    : messages_(std::move(messages)), max_in_flight_(max_in_flight ? max_in_flight : 1) {}
+    ImageOutput& output() override { return *job_.output; }
+    std::string_view make() override { return job_.image.encode(*encoding_); }
+    void written() override {
+        // (Nothing to say for orb-render --benchmark --frames.)
+        if (!job_.written.empty())
+            say(messages_, job_.warn ? MessageKind::Warning : MessageKind::Info, job_.label + job_.written);
+        job_.claim.reset();
+    }
+    void not_written(const std::string& why) override {
+        say(messages_, MessageKind::Error,
+            job_.label + "not written: " +
+                (why.empty() ? "the run stops, since an earlier frame could not be written" : why));
+        job_.claim.reset();
+    }
 
-BackgroundWriter::~BackgroundWriter() {
-    for (Write& write : in_flight_)
-        if (write.thread.joinable()) write.thread.join();
+    BackgroundWriter::Job& job() { return job_; }
+    std::unique_ptr<exr::ExrEncoding>& encoding() { return encoding_; }
+
+private:
+    BackgroundWriter::Job job_;
+    std::unique_ptr<exr::ExrEncoding> encoding_;
+    const MessageSink& messages_;  // the writer's, which outlives its writes
+};
+
+std::uint64_t physical_memory_bytes() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+    return pages > 0 && page > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) : 0;
 }
 
-void BackgroundWriter::wait_for_oldest() {
-    Write& oldest = in_flight_.front();
-    if (oldest.thread.joinable()) oldest.thread.join();
-    if (*oldest.error) failed_.push_back(name_of(*oldest.job));
-    spare_.push_back(std::move(oldest.job->image.film));
-    spare_encodings_.push_back(std::move(oldest.encoding));
-    in_flight_.pop_front();
+}  // namespace
+
+std::size_t BackgroundWriter::frames_in_flight(std::uint64_t bytes_per_frame) {
+    const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+    std::size_t count = std::clamp<std::size_t>(cores, 3, 16);
+    const std::uint64_t memory = physical_memory_bytes();
+    if (memory > 0 && bytes_per_frame > 0)
+        count = std::min<std::size_t>(count, std::max<std::uint64_t>(1, memory / 4 / bytes_per_frame));
+    return count;
+}
+
+BackgroundWriter::BackgroundWriter(MessageSink messages, std::size_t max_in_flight)
+    : messages_(std::move(messages)), writes_(max_in_flight) {}
+
+void BackgroundWriter::take_back(std::vector<OrderedWrites::Done> writes) {
+    for (OrderedWrites::Done& done : writes) {
+        auto& frame = static_cast<FrameWrite&>(*done.write);
+        if (!done.written) failed_.push_back(name_of(frame.job()));
+        spare_.push_back(std::move(frame.job().image.film));
+        spare_encodings_.push_back(std::move(frame.encoding()));
+    }
 }
 
 void BackgroundWriter::throw_if_any_failed() {
@@ -46,62 +91,35 @@ void BackgroundWriter::throw_if_any_failed() {
 
 void BackgroundWriter::finish() {
     const Clock::time_point start = Clock::now();
-    while (!in_flight_.empty()) wait_for_oldest();
+    take_back(writes_.take_done(/*wait=*/true));
     waited_ += seconds_since(start);
     throw_if_any_failed();
 }
 
 void BackgroundWriter::submit(Job job) {
-    const Clock::time_point start = Clock::now();
-    while (in_flight_.size() >= max_in_flight_) wait_for_oldest();
     // Frames written meanwhile: a failure among them ends the run now, and
     // this frame, rendered but not written, is named with them.
-    while (!in_flight_.empty() && in_flight_.front().job.use_count() == 1) wait_for_oldest();
-    waited_ += seconds_since(start);
+    take_back(writes_.take_done(/*wait=*/false));
     if (!failed_.empty()) {
         say(messages_, MessageKind::Error, job.label + "not written: the run stops, since " + failed_.front() + " could not be written");
         failed_.push_back(name_of(job));
         throw_if_any_failed();
     }
-    std::shared_ptr<exr::ExrEncoding> encoding;
+    std::unique_ptr<exr::ExrEncoding> encoding;
     if (spare_encodings_.empty()) {
-        encoding = std::make_shared<exr::ExrEncoding>();
+        encoding = std::make_unique<exr::ExrEncoding>();
     } else {
         encoding = std::move(spare_encodings_.back());
         spare_encodings_.pop_back();
     }
-    Write write{std::make_shared<Job>(std::move(job)), std::move(encoding), std::make_shared<std::exception_ptr>(), {}};
-    write.thread = std::thread([job = write.job, encoding = write.encoding, error = write.error, this] {
-        // A frame is said to be done once its file is in place, and each
-        // frame that fails says why.
-        try {
-            job->output->write(job->image.encode(*encoding));
-            // (Nothing to say for orb-render --benchmark --frames.)
-            if (!job->written.empty()) {
-                if (job->warn)
-                    say(messages_, MessageKind::Warning, job->label + job->written);
-                else
-                    say(messages_, MessageKind::Info, job->label + job->written);
-            }
-        } catch (const std::exception& e) {
-            say(messages_, MessageKind::Error, job->label + "not written: " + e.what());
-            *error = std::current_exception();
-        } catch (...) {
-            say(messages_, MessageKind::Error, job->label + "not written");
-            *error = std::current_exception();
-        }
-        job->claim.reset();  // the frame is on disk (or failed): others may take it now
-    });
-    in_flight_.push_back(std::move(write));
+    const Clock::time_point start = Clock::now();
+    take_back(writes_.submit(std::make_unique<FrameWrite>(std::move(job), std::move(encoding), messages_)));
+    waited_ += seconds_since(start);
 }
 
 Film BackgroundWriter::take_spare_film() {
     // A frame already written gives its memory back without waiting for one.
-    while (!in_flight_.empty() && spare_.empty()) {
-        Write& oldest = in_flight_.front();
-        if (oldest.job.use_count() > 1) break;  // its thread still holds the job: still writing
-        wait_for_oldest();
-    }
+    if (spare_.empty()) take_back(writes_.take_done(/*wait=*/false));
     if (spare_.empty()) return {};
     Film film = std::move(spare_.back());
     spare_.pop_back();

@@ -1,5 +1,7 @@
 #include "orb/job/frame_run.h"
 
+#include <algorithm>
+
 #include "orb/exr/render_request.h"
 #include "orb/job/background_writer.h"
 
@@ -23,7 +25,7 @@ FramesRun run_frames(RenderPlan& plan, const std::vector<Job>& jobs, const Frame
     const bool finish_existing = options.skip_existing || options.claim;
     FramesRun run;
     std::optional<render::Renderer> renderer;
-    BackgroundWriter writer(plan.messages);  // after the renderer: destroyed first, so a pending write ends before it
+    BackgroundWriter writer(plan.messages, std::max<std::size_t>(1, plan.frames_in_flight));  // after the renderer: destroyed first, so a pending write ends before it
     std::vector<std::shared_ptr<denoise::DenoiseTimes>> denoise_times;  // each rendered frame's, known once its write is done
     PosePrefetch prefetch;
     const auto stop_requested = [&] { return options.cancel && options.cancel->load(); };

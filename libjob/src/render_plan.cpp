@@ -160,19 +160,18 @@ PosedFrame pose_scene_at(const RenderPlan& plan, long frame) {
     return posed;
 }
 
-// The host memory orb-render needs beside the renderer's: the film read
-// back and its EXR encoding (the values, the exact sums where the image
-// will carry them, the compressed blocks), for every film a frame run holds
-// at once (the one rendering and BackgroundWriter's in flight).
-std::uint64_t host_bytes_beside_renderer(const RenderPlan& plan, const PlanOptions& o) {
+// The host memory an image needs beside the renderer's: the film read back
+// and its EXR encoding (the values, the exact sums where the image will
+// carry them, the compressed blocks). A frame run holds several at once (the
+// one rendering and BackgroundWriter's in flight).
+std::uint64_t image_bytes(const RenderPlan& plan, const PlanOptions& o) {
     const auto pixels = static_cast<std::uint64_t>(plan.config.width) * static_cast<std::uint64_t>(plan.config.height);
     std::uint64_t film = 0;
     for (const film::ChannelInfo& info : film::kChannels)
         if ((plan.config.film_channels & film::channel_bit(info.channel)) != 0) film += film::pixel_bytes(info) * pixels;
     // Checkpoints, slices and renders that --time will stop short carry their exact sums (render_film.cpp).
     const bool exact_sums = !plan.half && (o.checkpoints_or_time_limit || plan.slice);
-    const std::uint64_t image = film + 2 * exr::encoding_bytes(plan.passes, exact_sums, pixels);
-    return renders_frames(o) ? (1 + BackgroundWriter::kDefaultInFlight) * image : image;
+    return film + 2 * exr::encoding_bytes(plan.passes, exact_sums, pixels);
 }
 
 RenderPlan plan_render(const PlanOptions& o, SceneInput input, const render::DevelopmentKnobs& knobs);
@@ -181,7 +180,9 @@ RenderPlan plan_render(const PlanOptions& o, SceneInput input, const render::Dev
 
 RenderPlan make_render_plan(const PlanOptions& o, SceneInput input, const render::DevelopmentKnobs& knobs) {
     RenderPlan plan = plan_render(o, std::move(input), knobs);
-    plan.config.caller_host_bytes = host_bytes_beside_renderer(plan, o);
+    const std::uint64_t image = image_bytes(plan, o);
+    if (renders_frames(o)) plan.frames_in_flight = BackgroundWriter::frames_in_flight(image);
+    plan.config.caller_host_bytes = (1 + plan.frames_in_flight) * image;
     // The denoiser's device starts, and its filter is set up for the
     // image's size, on a thread of their own while kernels build and
     // samples render.

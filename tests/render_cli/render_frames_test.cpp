@@ -10,6 +10,7 @@
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -221,4 +222,28 @@ TEST_F(RenderCli, FrameUsageErrors) {
     EXPECT_EQ(missing.exit_code, 1);
     EXPECT_NE(missing.err.find("does not exist"), std::string::npos) << missing.err;
     EXPECT_EQ(missing.err.find("device: "), std::string::npos) << missing.err;
+}
+
+// --benchmark --frames says where a frame's time goes (the render path, one
+// frame's writing step by step, the writers' pace at 1 to N frames at once)
+// and leaves none of its frames behind.
+TEST_F(RenderCli, FramesBenchmarkBreaksAFrameDownAndLeavesNoFile) {
+    const std::string scene = write_scene(moving_ball_scene());
+    const std::string scratch = path("tmp");
+    fs::create_directory(scratch);
+    const char* old = std::getenv("TMPDIR");
+    const std::string restore = old ? old : "";
+    ::setenv("TMPDIR", scratch.c_str(), 1);
+    const auto run = render({scene, "--benchmark", "--frames", "1-3", "--spp", "1"});
+    if (old)
+        ::setenv("TMPDIR", restore.c_str(), 1);
+    else
+        ::unsetenv("TMPDIR");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    for (const char* part : {"frames written at once", "render (1 spp)", "read back (started)", "wait for writer",
+                             "the last writes", "the loop", "one frame written alone", "read back", "encode",
+                             "write+fsync", "rename", "the writer alone", "1: "})
+        EXPECT_NE(run.err.find(part), std::string::npos) << part << "\n" << run.err;
+    EXPECT_NE(run.out.find("frame_overhead_ms="), std::string::npos) << run.out;
+    EXPECT_TRUE(fs::is_empty(scratch));
 }

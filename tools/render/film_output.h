@@ -17,7 +17,8 @@ namespace orb::render_cli {
 class OutputFileImage final : public job::ImageOutput {
 public:
     explicit OutputFileImage(cli::OutputFile file) : file_(std::move(file)) {}
-    void write(std::string_view bytes) override { file_.write(bytes); }
+    void stage(std::string_view bytes) override { file_.stage(bytes); }
+    void commit(std::string_view bytes) override { file_.commit(bytes); }
     std::string display_name() const override { return file_.display_name(); }
     std::string path() const override { return file_.path(); }
 

@@ -157,7 +157,7 @@ void check_option_combinations(const RenderOptions& o) {
                                   : o.time_limit      ? "--time"
                                   : o.half            ? "--half"
                                   : o.compression && !renders_frames(o) ? "--compression (but --benchmark --frames takes it)"
-                                  : o.denoise         ? "--denoise"
+                                  : o.denoise && !renders_frames(o) ? "--denoise (but --benchmark --frames takes it)"
                                                       : nullptr;
         if (conflicting)
             throw UsageError(std::string("--benchmark writes no image and takes no ") + conflicting +

@@ -97,19 +97,18 @@ int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options) {
         plan, jobs_of(plan, options), static_cast<int>(options.spp.value_or(1)),
         [](const std::string& path) { return std::make_unique<OutputFileImage>(cli::OutputFile(path, "-o")); },
         on_frames_renderer);
-    std::string line = "frames benchmark: " + std::to_string(bench.frames) + " frames at " +
-                       std::to_string(plan.config.width) + "x" + std::to_string(plan.config.height) + ", layers " +
-                       exr::format_passes(plan.passes) + (plan.half ? " (half)" : "") + ", " +
-                       exr::compression_name(plan.compression) + " " + std::to_string(bench.bytes_per_frame / 1000) +
-                       " kB a frame, " + job::kernel_builds_text(bench.kernel_builds) + "; per frame, mean (max) ms:";
-    char text[128];
-    const double n = static_cast<double>(bench.frames);
-    for (const job::FramesBenchmark::Phase& phase : bench.phases) {
-        std::snprintf(text, sizeof text, " %s %.1f (%.1f);", phase.name.c_str(), 1000.0 * phase.total / n,
-                      1000.0 * phase.most);
-        line += text;
-    }
-    cli::info(line);
+    char text[96];
+    std::snprintf(text, sizeof text, " then the last writes %.1f ms; the loop %.1f ms a frame;", bench.last_writes_ms,
+                  bench.loop_ms);
+    cli::info("frames benchmark: " + std::to_string(bench.frames) + " frames at " + std::to_string(plan.config.width) +
+              "x" + std::to_string(plan.config.height) + ", layers " + exr::format_passes(plan.passes) +
+              (plan.half ? " (half)" : "") + ", " + exr::compression_name(plan.compression) + " " +
+              std::to_string(bench.bytes_per_frame / 1000) + " kB a frame, " +
+              job::kernel_builds_text(bench.kernel_builds) + ", " + std::to_string(bench.in_flight) +
+              " frames written at once; per frame, mean (max) ms:" + job::FramesBenchmark::format(bench.loop) + text);
+    cli::info("frames benchmark: one frame written alone, mean (max) ms:" + job::FramesBenchmark::format(bench.alone));
+    cli::info("frames benchmark: the writer alone, " + std::to_string(bench.writer_frames) +
+              " frames, ms a frame with N frames written at once (N: ms): " + bench.writer_pace_text());
     // The time a frame adds to the render path besides its samples.
     std::printf("frame_overhead_ms=%.1f\n", bench.overhead_ms);
     std::fflush(stdout);

@@ -170,7 +170,7 @@ void OutputFile::release() noexcept {
     detail::unlock_output(held_lock_);
 }
 
-void OutputFile::write(std::string_view bytes) {
+void OutputFile::write_stream(std::string_view bytes) {
     if (kind_ == Kind::Stdout) {
         try {
             write_all(STDOUT_FILENO, bytes);
@@ -192,10 +192,20 @@ void OutputFile::write(std::string_view bytes) {
             fail_write(path_, option_, std::strerror(e.code().value()));
         }
         if (::close(fd) != 0) fail_write(path_, option_, std::strerror(errno));
-        return;
     }
+}
 
-    if (temp_fd_ < 0) open_temporary();
+void OutputFile::write(std::string_view bytes) {
+    stage(bytes);
+    commit(bytes);
+}
+
+void OutputFile::stage(std::string_view bytes) {
+    if (kind_ != Kind::File) return;  // a stream is written by commit(), in its turn
+    if (temp_fd_ < 0) {
+        discard_temporary();  // one staged and never put in place
+        open_temporary();
+    }
     // Every step is checked: a full disk or a quota may only show at fsync or close.
     const auto fail = [&](const char* step, int error) {
         discard_temporary();
@@ -210,7 +220,19 @@ void OutputFile::write(std::string_view bytes) {
     if (::fsync(temp_fd_) != 0) fail("flushing to disk: ", errno);
     const int fd = std::exchange(temp_fd_, -1);
     if (::close(fd) != 0) fail("closing: ", errno);
-    if (::rename(temp_path_.c_str(), target_.c_str()) != 0) fail("renaming into place: ", errno);
+}
+
+void OutputFile::commit(std::string_view bytes) {
+    if (kind_ != Kind::File) {
+        write_stream(bytes);
+        return;
+    }
+    if (temp_path_.empty() || temp_fd_ >= 0) throw std::logic_error(path_ + ": put in place before it was staged");
+    if (::rename(temp_path_.c_str(), target_.c_str()) != 0) {
+        const int error = errno;
+        discard_temporary();
+        fail_write(path_, option_, std::string("renaming into place: ") + std::strerror(error));
+    }
     temp_path_.clear();
     sync_folder(target_);
     detail::remove_stale_temporaries(target_);

@@ -111,6 +111,7 @@ struct RenderPlan {
     // read, posed anew for each frame by pose_frame.
     std::vector<long> frames;
     Scene imported;
+    std::size_t frames_in_flight = 0;  // frames BackgroundWriter writes at once (0 without --frames)
     // A molecular or particle trajectory (orb/request/scene_input.h): each
     // frame is read from the file when it is posed, and `imported` stays empty.
     std::shared_ptr<const FrameSource> trajectory;

@@ -37,6 +37,14 @@ public:
     // again (checkpoints), each call atomic. Throws std::runtime_error naming
     // the file on any error; a file's previous content is then untouched.
     void write(std::string_view bytes);
+    // write() in two steps, for a writer that makes several files at once
+    // but puts them in place in order: stage() writes a file's bytes to its
+    // temporary file and flushes them to disk, commit() renames that into
+    // place. A stream (or stdout) is written by commit() alone, so `bytes`
+    // must be the same in both calls. Each throws as write() does; after a
+    // failure the previous content is untouched and no temporary file stays.
+    void stage(std::string_view bytes);
+    void commit(std::string_view bytes);
 
     Kind kind() const { return kind_; }
     const std::string& path() const { return path_; }
@@ -53,6 +61,7 @@ public:
     static void remove_stale_lock(const std::string& path) noexcept;
 
 private:
+    void write_stream(std::string_view bytes);
     void open_temporary();
     void discard_temporary() noexcept;
     void release() noexcept;
