@@ -40,6 +40,7 @@ nlohmann::ordered_json to_json(const RunStats& s) {
                              {"stop_reason", s.stop_reason},
                              {"output", s.output}};
     if (s.setup_seconds) j["setup_seconds"] = *s.setup_seconds;
+    j["kernel_build_seconds"] = s.kernel_build_seconds;
     if (s.estimated_relmse) j["estimated_relmse"] = *s.estimated_relmse;
     if (s.active_pixels) j["active_pixels"] = *s.active_pixels;
     if (s.decisions) j["decisions"] = *s.decisions;
@@ -68,6 +69,7 @@ RunStats renderer_stats(const render::Renderer& renderer) {
     stats.bvh_seconds = tree.seconds;
     stats.spp = renderer.samples_per_pixel();
     stats.samples = renderer.pixel_samples();
+    stats.kernel_build_seconds = renderer.kernel_build_seconds();
     return stats;
 }
 

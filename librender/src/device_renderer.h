@@ -103,6 +103,9 @@ public:
 
     std::uint64_t device_memory_bytes() const;
     int programs_built() const { return session_->programs_built(); }
+    // Seconds spent building kernels from source (the compiler and the
+    // first launch), over every scene set so far; 0 when all were loaded.
+    double kernel_build_seconds() const { return kernel_build_seconds_; }
 
 private:
     std::string build_options(const SceneLayout& scene) const;
@@ -117,6 +120,7 @@ private:
     DeviceFilm film_;
     const cl::Program* program_ = nullptr;
     bool kernel_prepared_ = false;  // prepare_kernel() has run for program_
+    double kernel_build_seconds_ = 0;
     cl::Kernel kernel_;
     int simd_lanes_ = 0;  // > 0: kernel_ has this many lanes (ORB_LANES)
     SceneBuffers scene_buffers_;

@@ -38,15 +38,16 @@ DeviceSession::DeviceSession(const DeviceInfo& device, const SessionOptions& opt
     source_ = program_source(options_.kernel_dir);
 }
 
-const cl::Program& DeviceSession::program(const std::string& build_options, const std::function<void()>& on_slow_build)
+const cl::Program& DeviceSession::program(const std::string& build_options, const std::function<void()>& on_slow_build,
+                                          std::unique_ptr<SlowBuildNotice>* building)
 {
     const std::lock_guard<std::mutex> lock(programs_mutex_);
     auto found = programs_.find(build_options);
     if (found != programs_.end()) return found->second;
-    cl::Program built = build_program(context_, device_, source_, build_options, options_.use_binary_cache,
-                                     options_.show_build_log, on_slow_build)
-                           .program;
-    return programs_.emplace(build_options, std::move(built)).first->second;
+    ProgramBuild built = build_program(context_, device_, source_, build_options, options_.use_binary_cache,
+                                       options_.show_build_log, on_slow_build);
+    if (building) *building = std::move(built.building);
+    return programs_.emplace(build_options, std::move(built.program)).first->second;
 }
 
 cl::CommandQueue& DeviceSession::transfer_queue()

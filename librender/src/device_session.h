@@ -15,6 +15,7 @@
 
 #include "opencl.h"
 #include "orb/render/device.h"
+#include "slow_build_notice.h"
 
 namespace orb::render {
 
@@ -54,8 +55,11 @@ public:
 
     // The program built from the kernels with these compiler options; built
     // on the first request, then the same one. Throws std::runtime_error with
-    // the build log when it does not build. `on_slow_build`: see build_program.
-    const cl::Program& program(const std::string& build_options, const std::function<void()>& on_slow_build = {});
+    // the build log when it does not build. `on_slow_build`: see build_program;
+    // `building`, when given, receives a build from source's notice, still
+    // timing, for the caller to finish() after the kernel's first launch.
+    const cl::Program& program(const std::string& build_options, const std::function<void()>& on_slow_build = {},
+                               std::unique_ptr<SlowBuildNotice>* building = nullptr);
 
     // Programs built or loaded so far (one per distinct set of options).
     int programs_built() const;

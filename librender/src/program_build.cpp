@@ -4,19 +4,16 @@
 
 #include <array>
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
 #include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 namespace orb::render {
@@ -162,37 +159,6 @@ std::optional<cl::Program> try_load_binary(const cl::Context& context, const cl:
     }
 }
 
-// Calls a function if a build from source is still running after a delay,
-// from a thread of its own; nothing when the build ends first.
-class SlowBuildNotice {
-public:
-    SlowBuildNotice(const std::function<void()>& notice, std::chrono::milliseconds delay)
-    {
-        if (!notice) return;
-        waiter_ = std::thread([this, notice, delay] {
-            std::unique_lock<std::mutex> lock(mutex_);
-            if (!ended_.wait_for(lock, delay, [this] { return done_; })) notice();
-        });
-    }
-    ~SlowBuildNotice()
-    {
-        {
-            const std::lock_guard<std::mutex> lock(mutex_);
-            done_ = true;
-        }
-        ended_.notify_all();
-        if (waiter_.joinable()) waiter_.join();
-    }
-    SlowBuildNotice(const SlowBuildNotice&) = delete;
-    SlowBuildNotice& operator=(const SlowBuildNotice&) = delete;
-
-private:
-    std::mutex mutex_;
-    std::condition_variable ended_;
-    bool done_ = false;
-    std::thread waiter_;
-};
-
 }  // namespace
 
 std::string binary_cache_dir()
@@ -217,12 +183,12 @@ ProgramBuild build_program(const cl::Context& context, const cl::Device& device,
         const std::vector<unsigned char> binary = read_cached_binary(cache_file, key);
         if (!binary.empty())
             if (std::optional<cl::Program> program = try_load_binary(context, device, binary, options))
-                return {*program, true};
+                return {*program, true, nullptr};
     }
 
     cl::Program program(context, source);
+    auto building = std::make_unique<SlowBuildNotice>(on_slow_build, std::chrono::seconds(1));
     try {
-        const SlowBuildNotice notice(on_slow_build, std::chrono::seconds(1));
         program.build({device}, options.c_str());
     } catch (const cl::Error& error) {
         const std::string device_name = device.getInfo<CL_DEVICE_NAME>();
@@ -235,7 +201,7 @@ ProgramBuild build_program(const cl::Context& context, const cl::Device& device,
         const std::vector<unsigned char> binary = program_binary(program);
         if (!binary.empty()) write_cached_binary(cache_file, key, binary);
     }
-    return {program, false};
+    return {program, false, std::move(building)};
 }
 
 }  // namespace orb::render

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "opencl.h"
+#include "slow_build_notice.h"
 #include "orb/tables/kernel_features.h"
 
 namespace orb::render {
@@ -47,6 +49,9 @@ std::string binary_cache_dir();
 struct ProgramBuild {
     cl::Program program;
     bool loaded_from_cache = false;
+    // A build from source: its time so far, still running, for the caller
+    // to finish() once the kernel's first launch has run (null when loaded).
+    std::unique_ptr<SlowBuildNotice> building;
 };
 
 // Builds `source` for `device`. With `use_cache`, first tries a cached binary
@@ -55,8 +60,8 @@ struct ProgramBuild {
 // refreshed (atomically, failures ignored). A failed source build throws
 // std::runtime_error carrying the compiler's build log. With
 // `show_build_log` (the development knob ORB_SHOW_BUILD_LOG), a source
-// build's log goes to stderr. `on_slow_build`, when set, is called (from
-// another thread) once a build from source has run for a second.
+// build's log goes to stderr. `on_slow_build`, when set, is called once a
+// build from source has run for a second (slow_build_notice.h).
 ProgramBuild build_program(const cl::Context& context, const cl::Device& device, const std::string& source,
                            const std::string& options, bool use_cache, bool show_build_log = false,
                            const std::function<void()>& on_slow_build = {});

@@ -424,6 +424,13 @@ std::uint64_t Renderer::device_memory_bytes() const
     return total;
 }
 
+double Renderer::kernel_build_seconds() const
+{
+    double longest = 0;
+    for (const auto& device : impl_->devices) longest = std::max(longest, device->kernel_build_seconds());
+    return longest;
+}
+
 int Renderer::programs_built() const
 {
     int total = 0;

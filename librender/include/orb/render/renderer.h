@@ -214,6 +214,10 @@ public:
 
     std::uint64_t device_memory_bytes() const;  // buffers allocated, over all devices
     int programs_built() const;                 // kernel programs built or loaded, over all devices
+    // Seconds the kernels took to build from source (compiler and first
+    // launch) on the slowest device, over every scene set so far; 0 when
+    // they came from the binary cache.
+    double kernel_build_seconds() const;
 
 private:
     struct Impl;
