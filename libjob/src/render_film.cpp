@@ -42,8 +42,7 @@ private:
     bool keeps_exact_sums(bool finished) const {
         if (options_.half) return false;
         if (!finished || slice_) return true;
-        const SampleRanges& held = renderer_.sample_ranges();
-        return !(held.ranges().size() == 1 && held.first() == 0);
+        return !holds_samples_from_zero(renderer_.sample_ranges());
     }
 
     const render::Renderer& renderer_;
@@ -83,6 +82,8 @@ std::string devices_line(const render::Renderer& renderer) {
 std::string kernel_builds_text(int builds) {
     return std::to_string(builds) + (builds == 1 ? " kernel build" : " kernel builds");
 }
+
+bool holds_samples_from_zero(const SampleRanges& held) { return held.ranges().size() == 1 && held.first() == 0; }
 
 const char* stop_reason_name(render::StopReason reason) {
     switch (reason) {

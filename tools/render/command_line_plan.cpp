@@ -1,5 +1,6 @@
 #include "command_line_plan.h"
 
+#include "interrupt.h"
 #include "orb/cli/legend_output.h"
 #include "orb/cli/messages.h"
 #include "orb/job/scene_pose.h"
@@ -44,6 +45,10 @@ job::MessageSink command_line_messages() {
             case job::MessageKind::Error: cli::error(message); break;
         }
     };
+}
+
+job::OutputRun output_run(const RenderOptions& o, job::FilmProgress& progress) {
+    return {o.time_limit, o.checkpoint, &interrupt_requested(), &progress};
 }
 
 job::RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {

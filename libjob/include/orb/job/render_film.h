@@ -30,6 +30,9 @@ std::string devices_label(const render::Renderer& renderer);
 std::string devices_line(const render::Renderer& renderer);
 const char* stop_reason_name(render::StopReason reason);
 std::string kernel_builds_text(int builds);  // "1 kernel build", "2 kernel builds"
+// Whether a film holds the samples 0 ... n-1 in one range: the whole
+// render from its start, not a slice (docs/orb-render.md, "Exact sums").
+bool holds_samples_from_zero(const SampleRanges& held);
 
 // The layers an image's one encode adds after the film's: `denoised`, when
 // a denoiser is given (--denoise; final images only, never checkpoints).
