@@ -7,6 +7,14 @@ namespace orb::job {
 
 std::string label_of(const Job& job) { return job.frame ? "frame " + std::to_string(*job.frame) + ": " : ""; }
 
+std::vector<Job> jobs_of(const std::vector<long>& frames, const std::string& still,
+                         const std::function<std::string(long frame)>& output_of) {
+    if (frames.empty()) return {Job{std::nullopt, still}};
+    std::vector<Job> jobs;
+    for (long frame : frames) jobs.push_back({frame, output_of(frame)});
+    return jobs;
+}
+
 void pose_for(RenderPlan& plan, const Job& job) {
     if (job.frame && !posed_at(plan, *job.frame)) pose_frame(plan, *job.frame);
 }

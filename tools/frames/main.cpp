@@ -136,9 +136,9 @@ int main(int argc, char** argv) {
             if (s.missing) judge.emplace(s.scene, s.render, frames, s.reading,
                                         orb::cli::sphere_style_options(s.style));
             if (legend) legend->write(judge->styled(), s.scene, s.style.color_range.empty() && judge->frames_differ());
-            std::vector<orb::job::Job> jobs;
-            for (int frame : spec)
-                jobs.push_back({frame, s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, frame)});
+            std::vector<orb::job::Job> jobs = orb::job::jobs_of({spec.begin(), spec.end()}, "", [&](long frame) {
+                return s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, static_cast<int>(frame));
+            });
             // What orb-render --skip-existing would render, by its rule (a present file that does not count says why).
             if (judge)
                 jobs = orb::job::unfinished(

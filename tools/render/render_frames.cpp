@@ -58,14 +58,11 @@ std::unique_ptr<job::ImageOutput> prepare_image(const std::string& path, const R
 }  // namespace
 
 std::vector<job::Job> jobs_of(const job::RenderPlan& plan, const RenderOptions& options) {
-    if (plan.frames.empty()) return {job::Job{std::nullopt, options.output}};
     // With --frame N a name without a frame-number field is taken as it is.
     const bool pattern = cli::count_frame_fields(options.output) > 0;
-    std::vector<job::Job> jobs;
-    for (long frame : plan.frames)
-        jobs.push_back(
-            {frame, pattern ? cli::expand_frame_pattern(options.output, static_cast<int>(frame)) : options.output});
-    return jobs;
+    return job::jobs_of(plan.frames, options.output, [&](long frame) {
+        return pattern ? cli::expand_frame_pattern(options.output, static_cast<int>(frame)) : options.output;
+    });
 }
 
 void on_frames_renderer(render::Renderer& renderer) {

@@ -23,6 +23,12 @@ struct Job {
 // "frame 12: ", or "" when the job is no frame.
 std::string label_of(const Job& job);
 
+// The jobs of a run: one per frame in the order given, its output named by
+// `output_of` (orb-render: the -o pattern with the frame's number); without
+// frames, the one output `still` of a render that is no frame.
+std::vector<Job> jobs_of(const std::vector<long>& frames, const std::string& still,
+                         const std::function<std::string(long frame)>& output_of);
+
 // Poses the plan at the job's frame, unless it is posed there already.
 void pose_for(RenderPlan& plan, const Job& job);
 
