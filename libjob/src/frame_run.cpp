@@ -84,11 +84,8 @@ FramesRun run_frames(RenderPlan& plan, const std::vector<Job>& jobs, const Frame
         }
         run.rendered.push_back(outcome.stats);
         denoise_times.push_back(outcome.image.denoise_times);
-        const std::string summary = hooks.summary(outcome, *renderer, *output);
         const bool interrupted = outcome.reason == render::StopReason::Interrupted;
-        const std::string written = interrupted ? "interrupted: wrote " + summary
-                                    : outcome.reason == render::StopReason::ReachedTime ? "time limit reached: " + summary
-                                                                                       : "done: " + summary;
+        const std::string written = written_line(outcome.reason, hooks.summary(outcome, *renderer, *output), false);
         // Written while the next frame renders, which says so once its file
         // is in place; a failed write ends the run at the next frame.
         writer.submit({std::move(outcome.image), std::move(output), std::move(claim), label, written, interrupted});

@@ -96,6 +96,18 @@ const char* stop_reason_name(render::StopReason reason) {
     return "?";
 }
 
+std::string written_line(render::StopReason reason, const std::string& summary, bool still) {
+    switch (reason) {
+        case render::StopReason::Interrupted: return "interrupted: wrote " + summary;
+        case render::StopReason::ReachedTime: return "time limit reached: " + summary;
+        case render::StopReason::Converged:
+            return (still ? "every pixel below --noise-threshold: " : "done: ") + summary;
+        case render::StopReason::ReachedError: return (still ? "--target-error reached: " : "done: ") + summary;
+        case render::StopReason::ReachedSpp: break;
+    }
+    return "done: " + summary;
+}
+
 FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, FilmRun run) {
     const std::uint64_t start_spp = renderer.samples_per_pixel();
     const std::uint64_t start_samples = renderer.pixel_samples();

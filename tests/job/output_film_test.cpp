@@ -161,6 +161,17 @@ TEST_F(OutputFilm, TheWrittenStatsAddTheSetUpAndTheDenoisersTimes) {
     EXPECT_EQ(stats.denoise->seconds, 0.75);
 }
 
+TEST(WrittenLine, SaysWhyTheRenderStoppedAndAStillNamesItsAdaptiveGoal) {
+    using render::StopReason;
+    EXPECT_EQ(written_line(StopReason::ReachedSpp, "S", true), "done: S");
+    EXPECT_EQ(written_line(StopReason::ReachedTime, "S", true), "time limit reached: S");
+    EXPECT_EQ(written_line(StopReason::Interrupted, "S", false), "interrupted: wrote S");
+    EXPECT_EQ(written_line(StopReason::Converged, "S", true), "every pixel below --noise-threshold: S");
+    EXPECT_EQ(written_line(StopReason::ReachedError, "S", true), "--target-error reached: S");
+    EXPECT_EQ(written_line(StopReason::Converged, "S", false), "done: S");
+    EXPECT_EQ(written_line(StopReason::ReachedError, "S", false), "done: S");
+}
+
 TEST(ProgressEstimate, TheRateGivesTheTimeToTheTargetAndATimeLimitCutsItShort) {
     render::ProgressState state;
     state.spp = 16;

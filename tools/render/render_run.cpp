@@ -52,16 +52,12 @@ int run_render(const job::RenderPlan& plan, const RenderOptions& options, Render
     image.write(outcome.image.encode());
     if (outputs.stats) outputs.stats->write(job::stats_json(job::written_stats(outcome, ready.setup_seconds)));
 
-    const std::string summary = film_summary(outcome, renderer, image);
+    const std::string written = job::written_line(outcome.reason, film_summary(outcome, renderer, image), true);
     if (outcome.reason == render::StopReason::Interrupted) {
-        cli::warning("interrupted: wrote " + summary);
+        cli::warning(written);
         return stopped_exit_code();
     }
-    const char* how = outcome.reason == render::StopReason::ReachedTime    ? "time limit reached: "
-                      : outcome.reason == render::StopReason::Converged ? "every pixel below --noise-threshold: "
-                      : outcome.reason == render::StopReason::ReachedError ? "--target-error reached: "
-                                                                           : "done: ";
-    cli::info(how + summary);
+    cli::info(written);
     return cli::kSuccess;
 }
 
