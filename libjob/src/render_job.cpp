@@ -154,7 +154,7 @@ std::vector<DeviceListing> list_devices() {
     std::vector<DeviceListing> listing;
     for (const render::DeviceInfo& d : render::list_devices())
         listing.push_back({d.index, d.is_gpu ? "gpu" : d.is_cpu ? "cpu" : "other", d.compute_units,
-                           d.global_memory_bytes, d.platform, d.name});
+                           d.global_memory_bytes, d.platform, d.name, d.vendor, d.version});
     return listing;
 }
 
