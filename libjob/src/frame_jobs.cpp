@@ -7,6 +7,14 @@ namespace orb::job {
 
 std::string label_of(const Job& job) { return job.frame ? "frame " + std::to_string(*job.frame) + ": " : ""; }
 
+std::vector<Job> jobs_of(const std::vector<long>& frames, const std::string& still,
+                         const std::function<std::string(long frame)>& output_of) {
+    if (frames.empty()) return {Job{std::nullopt, still}};
+    std::vector<Job> jobs;
+    for (long frame : frames) jobs.push_back({frame, output_of(frame)});
+    return jobs;
+}
+
 void pose_for(RenderPlan& plan, const Job& job) {
     if (job.frame && !posed_at(plan, *job.frame)) pose_frame(plan, *job.frame);
 }
@@ -57,6 +65,25 @@ exr::OutputJudgement judge(RenderPlan& plan, const Job& job) {
     return exr::judge_output(job.output, request_for(plan, job.frame), exr::RenderCheck::Pixels);
 }
 
+std::vector<Job> unfinished(const std::vector<Job>& jobs,
+                            const std::function<exr::OutputJudgement(const Job&)>& judge, const MessageSink& notes) {
+    std::vector<Job> left;
+    for (const Job& job : jobs) {
+        const exr::OutputJudgement verdict = judge(job);
+        if (verdict.state == exr::OutputState::Finished) continue;
+        if (verdict.state != exr::OutputState::Missing)
+            say(notes, MessageKind::Info, label_of(job) + job.output + ": " + verdict.reason);
+        left.push_back(job);
+    }
+    return left;
+}
+
+std::vector<Job> unfinished(RenderPlan& plan, const std::vector<Job>& jobs) {
+    return unfinished(
+        jobs, [&](const Job& job) { return exr::judge_output(job.output, request_for(plan, job.frame)); },
+        plan.messages);
+}
+
 bool continue_from(RenderPlan& plan, const std::string& label, const std::string& output,
                    render::Renderer& renderer) {
     try {
@@ -70,6 +97,7 @@ bool continue_from(RenderPlan& plan, const std::string& label, const std::string
         if (!file.exact) say(plan.messages, MessageKind::Warning, label + output + ": " + exr::kMeansOnly);
         file.film = {};  // on the device now; the metadata stays for orb:renderSeconds
         plan.resumed = std::move(file);
+        plan.resumed_path = output;
         return true;
     } catch (const std::exception& e) {
         say(plan.messages, MessageKind::Warning,

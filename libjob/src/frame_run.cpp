@@ -28,7 +28,7 @@ FramesRun run_frames(RenderPlan& plan, const std::vector<Job>& jobs, const Frame
     BackgroundWriter writer(plan.messages, std::max<std::size_t>(1, plan.frames_in_flight));  // after the renderer: destroyed first, so a pending write ends before it
     std::vector<std::shared_ptr<denoise::DenoiseTimes>> denoise_times;  // each rendered frame's, known once its write is done
     PosePrefetch prefetch;
-    const auto stop_requested = [&] { return options.cancel && options.cancel->load(); };
+    const auto stop_requested = [&] { return options.film.cancel && options.film.cancel->load(); };
     const auto finish = [&] {
         writer.finish();
         for (std::size_t i = 0; i < run.rendered.size(); ++i)
@@ -76,25 +76,27 @@ FramesRun run_frames(RenderPlan& plan, const std::vector<Job>& jobs, const Frame
             continue_from(plan, label, job.output, *renderer))
             ++run.continued;
         if (index + 1 < jobs.size()) prefetch.start(plan, jobs[index + 1], *renderer);
-        FilmOutcome outcome =
-            hooks.render(*renderer, plan, *output, label, claim ? &*claim : nullptr, writer.take_spare_film());
+        FilmOutcome outcome = render_into(*renderer, plan, options.film, *output, label, claim ? &*claim : nullptr,
+                                          writer.take_spare_film(), /*read_later=*/true);
         if (!outcome.rendered) {
             run.stopped_before_image = label;
             return finish();
         }
         run.rendered.push_back(outcome.stats);
         denoise_times.push_back(outcome.image.denoise_times);
-        const std::string summary = hooks.summary(outcome, *renderer, *output);
         const bool interrupted = outcome.reason == render::StopReason::Interrupted;
-        const std::string written = interrupted ? "interrupted: wrote " + summary
-                                    : outcome.reason == render::StopReason::ReachedTime ? "time limit reached: " + summary
-                                                                                       : "done: " + summary;
+        const std::string written = written_line(outcome.reason, hooks.summary(outcome, *renderer, *output), false);
         // Written while the next frame renders, which says so once its file
         // is in place; a failed write ends the run at the next frame.
         writer.submit({std::move(outcome.image), std::move(output), std::move(claim), label, written, interrupted});
         if (interrupted) break;
     }
     return finish();
+}
+
+std::string frames_run_stats_json(const RenderPlan& plan, const FramesRun& run) {
+    if (plan.frames.size() > 1 || run.rendered.empty()) return frames_stats_json(run.rendered, run.skipped);
+    return stats_json(run.rendered.front());
 }
 
 }  // namespace orb::job

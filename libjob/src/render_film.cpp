@@ -42,8 +42,7 @@ private:
     bool keeps_exact_sums(bool finished) const {
         if (options_.half) return false;
         if (!finished || slice_) return true;
-        const SampleRanges& held = renderer_.sample_ranges();
-        return !(held.ranges().size() == 1 && held.first() == 0);
+        return !holds_samples_from_zero(renderer_.sample_ranges());
     }
 
     const render::Renderer& renderer_;
@@ -84,6 +83,8 @@ std::string kernel_builds_text(int builds) {
     return std::to_string(builds) + (builds == 1 ? " kernel build" : " kernel builds");
 }
 
+bool holds_samples_from_zero(const SampleRanges& held) { return held.ranges().size() == 1 && held.first() == 0; }
+
 const char* stop_reason_name(render::StopReason reason) {
     switch (reason) {
         case render::StopReason::ReachedSpp: return "spp";
@@ -93,6 +94,18 @@ const char* stop_reason_name(render::StopReason reason) {
         case render::StopReason::ReachedError: return "error";
     }
     return "?";
+}
+
+std::string written_line(render::StopReason reason, const std::string& summary, bool still) {
+    switch (reason) {
+        case render::StopReason::Interrupted: return "interrupted: wrote " + summary;
+        case render::StopReason::ReachedTime: return "time limit reached: " + summary;
+        case render::StopReason::Converged:
+            return (still ? "every pixel below --noise-threshold: " : "done: ") + summary;
+        case render::StopReason::ReachedError: return (still ? "--target-error reached: " : "done: ") + summary;
+        case render::StopReason::ReachedSpp: break;
+    }
+    return "done: " + summary;
 }
 
 FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, FilmRun run) {

@@ -11,6 +11,7 @@
 
 #include "orb/denoise/exr_memory_streams.h"
 #include "orb/job/benchmarks.h"
+#include "orb/job/output_film.h"
 #include "orb/job/render_film.h"
 #include "orb/job/render_plan.h"
 #include "orb/render/device.h"
@@ -54,7 +55,7 @@ RenderedImage render_still(const Scene& scene, const StillSettings& settings, co
     RenderPlan plan = make_render_plan(options, SceneInput{scene, settings.label, nullptr}, render::DevelopmentKnobs{});
     const ReadyRenderer ready = make_ready_renderer(plan);
     render::Renderer& renderer = *ready.renderer;
-    renderer.clear(plan.first_sample);
+    start_film(plan, renderer);
 
     // The caller's flag and the callback's answer both stop the loop after the pass in flight.
     std::atomic<bool> stop{cancel && cancel->load()};
@@ -153,7 +154,7 @@ std::vector<DeviceListing> list_devices() {
     std::vector<DeviceListing> listing;
     for (const render::DeviceInfo& d : render::list_devices())
         listing.push_back({d.index, d.is_gpu ? "gpu" : d.is_cpu ? "cpu" : "other", d.compute_units,
-                           d.global_memory_bytes, d.platform, d.name});
+                           d.global_memory_bytes, d.platform, d.name, d.vendor, d.version});
     return listing;
 }
 

@@ -129,6 +129,7 @@ void apply_resume(const PlanOptions& o, const Scene& imported, RenderPlan& plan)
                          " samples per pixel, more than the " + std::to_string(plan.target_spp) + " asked for");
     set_passes(plan, given.passes ? *given.passes : file.passes);
     plan.resumed = std::move(file);
+    plan.resumed_path = path;
     apply_adaptive(o, plan);
     exr::require_resumable(*plan.resumed, plan.passes, path);
 }

@@ -2,7 +2,7 @@
 #include <pybind11/stl.h>
 
 #include "devices.h"
-#include "orb/render/device.h"
+#include "orb/job/render_job.h"
 
 namespace py = pybind11;
 
@@ -13,13 +13,11 @@ void bind_devices(py::module_& module) {
         "devices",
         [] {
             py::list listed;
-            for (const render::DeviceInfo& d : render::list_devices())
-                listed.append(py::dict(py::arg("index") = d.index,
-                                       py::arg("type") = d.is_gpu ? "gpu" : d.is_cpu ? "cpu" : "other",
-                                       py::arg("name") = d.name, py::arg("platform") = d.platform,
-                                       py::arg("vendor") = d.vendor, py::arg("version") = d.version,
-                                       py::arg("compute_units") = d.compute_units,
-                                       py::arg("memory_bytes") = d.global_memory_bytes));
+            for (const job::DeviceListing& d : job::list_devices())
+                listed.append(py::dict(py::arg("index") = d.index, py::arg("type") = d.type, py::arg("name") = d.name,
+                                       py::arg("platform") = d.platform, py::arg("vendor") = d.vendor,
+                                       py::arg("version") = d.version, py::arg("compute_units") = d.compute_units,
+                                       py::arg("memory_bytes") = d.memory_bytes));
             return listed;
         },
         "Every OpenCL device, as orb-render --list-devices lists them: index, type, name, platform, ...");

@@ -72,5 +72,21 @@ TEST_F(FrameLoop, AStaticSceneSaysEveryFrameIsTheSame) {
     EXPECT_NE(messages_[0].find("same image"), std::string::npos) << messages_[0];
 }
 
+TEST(FrameJobs, OnePerFrameInTheOrderGivenOrTheOneOutputOfAStill) {
+    const auto name = [](long frame) { return "beauty." + std::to_string(frame) + ".exr"; };
+    const std::vector<Job> frames = jobs_of({12, 3, 7}, "unused.exr", name);
+    ASSERT_EQ(frames.size(), 3u);
+    EXPECT_EQ(frames[0].frame, 12);
+    EXPECT_EQ(frames[0].output, "beauty.12.exr");
+    EXPECT_EQ(frames[2].frame, 7);
+    EXPECT_EQ(frames[2].output, "beauty.7.exr");
+
+    const std::vector<Job> still = jobs_of({}, "still.exr", name);
+    ASSERT_EQ(still.size(), 1u);
+    EXPECT_FALSE(still[0].frame.has_value());
+    EXPECT_EQ(still[0].output, "still.exr");
+    EXPECT_EQ(label_of(still[0]), "");
+}
+
 }  // namespace
 }  // namespace orb::job::test

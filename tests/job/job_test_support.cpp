@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "orb/job/output_film.h"
 #include "orb/tables/film_channels.h"
 
 namespace orb::job::test {
@@ -30,10 +31,7 @@ RenderPlan JobTest::plan(const Scene& scene, PlanOptions options, const render::
 
 FilmOutcome JobTest::run(RenderPlan& plan, std::optional<int> stop_after) {
     render::Renderer renderer(plan.scene, plan.config);
-    if (plan.resumed)
-        renderer.load_film(plan.resumed->film);
-    else
-        renderer.clear(plan.first_sample);
+    start_film(plan, renderer);
     std::atomic<bool> stop{false};
     FilmRun run;
     run.cancel = &stop;

@@ -4,7 +4,7 @@
 // it, and a writer ended with writes still in flight.
 #include "orb/job/ordered_writes.h"
 
-#include "orb/cli/output_file.h"
+#include "job_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -28,20 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using orb::job::OrderedWrites;
-
-// orb-render's kind of output (tools/render/film_output.h): an
-// orb::cli::OutputFile, staged beside its target and renamed into place.
-class FileOutput final : public orb::job::ImageOutput {
-public:
-    explicit FileOutput(const std::string& path) : file_(path, "-o") {}
-    void stage(std::string_view bytes) override { file_.stage(bytes); }
-    void commit(std::string_view bytes) override { file_.commit(bytes); }
-    std::string display_name() const override { return file_.display_name(); }
-    std::string path() const override { return file_.path(); }
-
-private:
-    orb::cli::OutputFile file_;
-};
+using orb::job::test::FileOutput;
 
 // What the writes saw, shared by all of them.
 struct Record {

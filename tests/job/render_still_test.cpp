@@ -133,6 +133,7 @@ TEST(ListDevices, SaysWhatOrbRenderListDevicesPrints) {
         EXPECT_TRUE(device.type == "gpu" || device.type == "cpu" || device.type == "other") << device.type;
         EXPECT_FALSE(device.name.empty());
         EXPECT_GT(device.compute_units, 0u);
+        EXPECT_EQ(device.version.rfind("OpenCL ", 0), 0u) << device.version;  // CL_DEVICE_VERSION's form
     }
 }
 

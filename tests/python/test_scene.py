@@ -98,4 +98,6 @@ def test_render_settings_are_checked(cloud):
 
 def test_devices_lists_opencl_devices():
     devices = orb.devices()
-    assert devices and {"index", "type", "name", "platform", "compute_units", "memory_bytes"} <= set(devices[0])
+    assert devices and {"index", "type", "name", "platform", "vendor", "version", "compute_units",
+                        "memory_bytes"} <= set(devices[0])
+    assert all(device["type"] in ("gpu", "cpu", "other") for device in devices)

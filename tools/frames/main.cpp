@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "missing_frames.h"
 #include "orb/cli/frame_spec.h"
@@ -15,6 +16,7 @@
 #include "orb/cli/legend_output.h"
 #include "orb/cli/sphere_style_options.h"
 #include "orb/cli/tool_main.h"
+#include "orb/job/frame_jobs.h"
 
 using orb::cli::UsageError;
 
@@ -134,20 +136,16 @@ int main(int argc, char** argv) {
             if (s.missing) judge.emplace(s.scene, s.render, frames, s.reading,
                                         orb::cli::sphere_style_options(s.style));
             if (legend) legend->write(judge->styled(), s.scene, s.style.color_range.empty() && judge->frames_differ());
+            std::vector<orb::job::Job> jobs = orb::job::jobs_of({spec.begin(), spec.end()}, "", [&](long frame) {
+                return s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, static_cast<int>(frame));
+            });
+            // What orb-render --skip-existing would render, by its rule (a present file that does not count says why).
+            if (judge)
+                jobs = orb::job::unfinished(
+                    jobs, [&](const orb::job::Job& job) { return judge->judge(job.output, *job.frame); },
+                    [](orb::job::MessageKind, const std::string& note) { orb::cli::info(note); });
             std::string out;
-            for (int frame : spec) {
-                const std::string path = s.pattern.empty() ? "" : orb::cli::expand_frame_pattern(s.pattern, frame);
-                if (judge) {
-                    const orb::exr::OutputJudgement verdict = judge->judge(path, frame);
-                    if (verdict.state == orb::exr::OutputState::Finished) continue;
-                    // An absent file is the usual case and says nothing new; a present one that does
-                    // not count (stopped short, truncated, another render) is worth a note.
-                    if (verdict.state != orb::exr::OutputState::Missing)
-                        orb::cli::info("frame " + std::to_string(frame) + ": " + path + ": " + verdict.reason);
-                }
-                out += s.paths ? path : std::to_string(frame);
-                out += '\n';
-            }
+            for (const orb::job::Job& job : jobs) out += (s.paths ? job.output : std::to_string(*job.frame)) + '\n';
             return orb::cli::print_to_stdout(out);
         });
 }

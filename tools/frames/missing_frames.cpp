@@ -13,15 +13,12 @@ MissingFrames::MissingFrames(const std::string& scene_path, const request::Reque
     // The orbit is checked before a scene of millions of spheres is read.
     settings_ = request::resolve_request(options, nullptr, &frames, true);
     if (scene_path.empty()) return;
-    trajectory_ = request::open_trajectory(scene_path, reading);
-    if (trajectory_) {
-        label_ = scene_path;
-        scene_ = job::for_frame(1, [&] { return job::trajectory_frame(*trajectory_, 1, label_); });
-        styled_ = job::for_frame(1, [&] { return apply_sphere_styling(*scene_, style_, label_); });
-    } else {
-        scene_ = request::read_scene(scene_path, label_, reading);
-        styled_ = apply_sphere_styling(*scene_, style_, label_);
-    }
+    job::SceneInput input = request::read_scene_input(scene_path, reading);
+    trajectory_ = std::move(input.trajectory);
+    label_ = std::move(input.label);
+    scene_ = std::move(input.imported);
+    const auto style_scene = [&] { return apply_sphere_styling(*scene_, style_, label_); };
+    styled_ = trajectory_ ? job::for_frame(1, style_scene) : style_scene();
     settings_ = request::resolve_request(options, &scene_->render, &frames, true);
 }
 

@@ -1,5 +1,6 @@
 #include "command_line_plan.h"
 
+#include "interrupt.h"
 #include "orb/cli/legend_output.h"
 #include "orb/cli/messages.h"
 #include "orb/job/scene_pose.h"
@@ -46,18 +47,15 @@ job::MessageSink command_line_messages() {
     };
 }
 
+job::OutputRun output_run(const RenderOptions& o, job::FilmProgress& progress) {
+    return {o.time_limit, o.checkpoint, &interrupt_requested(), &progress};
+}
+
 job::RenderPlan make_render_plan(const RenderOptions& o, const render::DevelopmentKnobs& knobs) {
-    job::SceneInput input;
     // Usage errors before the scene is read; kept for the frames a trajectory reads later.
     const SphereStyleOptions style = cli::sphere_style_options(o.style);
     std::optional<cli::LegendOutput> legend = cli::LegendOutput::prepare(o.style, {{"SCENE", o.scene}});
-    input.trajectory = request::open_trajectory(o.scene, o.reading);
-    if (input.trajectory) {
-        input.label = o.scene;
-        input.imported = job::for_frame(1, [&] { return job::trajectory_frame(*input.trajectory, 1, input.label); });
-    } else {
-        input.imported = request::read_scene(o.scene, input.label, o.reading);
-    }
+    job::SceneInput input = request::read_scene_input(o.scene, o.reading);
     // Before the hash: a styled scene is another scene (its outputs say so, and --resume checks it).
     const auto style_scene = [&] { return cli::apply_sphere_style(input.imported, style, input.label); };
     const SphereStyleResult styled = input.trajectory ? job::for_frame(1, style_scene) : style_scene();

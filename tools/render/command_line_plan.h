@@ -4,6 +4,7 @@
 #pragma once
 
 #include "orb/job/messages.h"
+#include "orb/job/output_film.h"
 #include "orb/job/render_plan.h"
 #include "orb/render/development_knobs.h"
 #include "render_options.h"
@@ -13,6 +14,10 @@ namespace orb::render_cli {
 // The job's messages as orb-render's others: warnings (and errors) always,
 // notes unless -q (orb::cli::warning, orb::cli::info).
 job::MessageSink command_line_messages();
+
+// How each film renders into its output: --time, --checkpoint, stopped by
+// SIGINT/SIGTERM/SIGHUP (interrupt.h), its progress shown by `progress`.
+job::OutputRun output_run(const RenderOptions& options, job::FilmProgress& progress);
 
 // Throws orb::InputError for bad input or a resume that would not continue
 // the same render, orb::cli::UsageError for a bad --orbit.

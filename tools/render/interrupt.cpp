@@ -2,6 +2,8 @@
 
 #include <csignal>
 
+#include "orb/cli/tool_main.h"
+
 namespace orb::render_cli {
 namespace {
 
@@ -36,5 +38,7 @@ void install_interrupt_handlers() {
 const std::atomic<bool>& interrupt_requested() { return g_stop; }
 
 int interrupt_exit_code() { return g_first_signal == 0 ? 0 : 128 + static_cast<int>(g_first_signal); }
+
+int stopped_exit_code() { return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure; }
 
 }  // namespace orb::render_cli

@@ -36,14 +36,13 @@ int main(int argc, char** argv) {
             // covers reading the file that --resume continues in place.
             RenderOutputs outputs = prepare_render_outputs(options);
             const auto reading = std::chrono::steady_clock::now();
-            RenderPlan plan = make_render_plan(options, knobs);
+            orb::job::RenderPlan plan = make_render_plan(options, knobs);
             plan.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - reading).count();
             if (options.benchmark)
                 return renders_frames(options) ? run_frames_benchmark(plan, options)
                                                : run_benchmark(plan, options, outputs);
             // Frames, and outputs left alone when complete, are prepared one at a time.
-            if (renders_frames(options) || options.skip_existing || options.claim || options.missing)
-                return run_frames(plan, options, outputs);
+            if (runs_frame_loop(options)) return run_frames(plan, options, outputs);
             return run_render(plan, options, outputs);
         });
 }

@@ -2,12 +2,9 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <limits>
-#include <utility>
 
 #include "orb/cli/messages.h"
 
@@ -40,30 +37,35 @@ std::string format_duration(double seconds) {
     return text;
 }
 
-ProgressReporter::ProgressReporter(bool quiet, double pixels, double time_limit, std::string label, double interval)
+std::string film_summary(const job::FilmOutcome& outcome, const render::Renderer& renderer, const job::ImageOutput& image) {
+    const SampleRanges& held = renderer.sample_ranges();
+    return std::to_string(outcome.stats.spp) + " spp" +
+           (job::holds_samples_from_zero(held) ? "" : " (samples " + held.format() + ")") + " in " +
+           format_duration(outcome.stats.seconds) + " (" + format_rate(outcome.stats.samples_per_second) + ") -> " +
+           image.display_name();
+}
+
+ProgressReporter::ProgressReporter(bool quiet, double time_limit, double interval)
     : enabled_(!quiet),
       terminal_(::isatty(STDERR_FILENO) == 1),
-      pixels_(pixels),
       time_limit_(time_limit),
-      label_(std::move(label)),
       interval_(interval),
       last_line_(std::chrono::steady_clock::now()) {}
 
-std::string ProgressReporter::status_line(const render::ProgressState& s) const {
-    // This run's samples per pixel per second gives the time to the target;
-    // a time limit ends the render sooner if it comes first.
-    const double spp_per_second = pixels_ > 0 ? s.samples_per_second / pixels_ : 0;
-    double eta = spp_per_second > 0 ? double(s.target_spp - std::min(s.spp, s.target_spp)) / spp_per_second
-                                    : std::numeric_limits<double>::infinity();
-    if (time_limit_ > 0) eta = std::min(eta, std::max(0.0, time_limit_ - s.elapsed_seconds));
-    const double fraction = s.target_spp ? std::min(1.0, double(s.spp) / double(s.target_spp)) : 1.0;
+void ProgressReporter::start(const std::string& label, double pixels) {
+    label_ = label;
+    pixels_ = pixels;
+    last_line_ = std::chrono::steady_clock::now();  // a log's first line of the film comes `interval` after its start
+}
 
+std::string ProgressReporter::status_line(const render::ProgressState& s) const {
+    const job::ProgressEstimate estimate = job::estimate_progress(s, pixels_, time_limit_);
     char text[256];
     std::snprintf(text, sizeof text, "%spass %d  %llu/%llu spp (%3.0f%%)  %s  elapsed %s  ETA %s", label_.c_str(),
                   s.pass,
                   static_cast<unsigned long long>(s.spp), static_cast<unsigned long long>(s.target_spp),
-                  100.0 * fraction, format_rate(s.samples_per_second).c_str(),
-                  format_duration(s.elapsed_seconds).c_str(), format_duration(eta).c_str());
+                  100.0 * estimate.fraction, format_rate(s.samples_per_second).c_str(),
+                  format_duration(s.elapsed_seconds).c_str(), format_duration(estimate.eta_seconds).c_str());
     return text;
 }
 

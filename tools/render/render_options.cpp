@@ -184,6 +184,8 @@ void check_option_combinations(const RenderOptions& o) {
 
 bool renders_frames(const RenderOptions& o) { return o.frame.has_value() || o.frames.has_value(); }
 
+bool runs_frame_loop(const RenderOptions& o) { return renders_frames(o) || o.skip_existing || o.claim || o.missing; }
+
 std::vector<long> parse_frames_option(const std::string& spec) {
     try {
         const cli::FrameSpec parsed = cli::parse_frame_spec(spec);

@@ -57,6 +57,9 @@ void check_option_combinations(const RenderOptions& options);
 
 // True for --frame or --frames.
 bool renders_frames(const RenderOptions& options);
+// True for frames, and for outputs left alone when complete (--skip-existing,
+// --claim, --missing): the frame loop, which prepares each output just before its frame.
+bool runs_frame_loop(const RenderOptions& options);
 
 // The frames of --frames (docs/frames.md), in order. Throws orb::cli::UsageError.
 std::vector<long> parse_frames_option(const std::string& spec);

@@ -1,16 +1,14 @@
 #include "render_run.h"
 
-#include <chrono>
 #include <cstdio>
-#include <iostream>
 #include <memory>
 
+#include "command_line_plan.h"
 #include "interrupt.h"
 #include "orb/cli/messages.h"
 #include "orb/cli/tool_main.h"
-#include "orb/render/progressive.h"
-#include "film_output.h"
 #include "orb/job/benchmarks.h"
+#include "orb/job/output_film.h"
 #include "progress_reporter.h"
 #include "render_frames.h"
 
@@ -19,7 +17,7 @@ namespace {
 
 // The renderer for `plan`, said as it is ready: a million spheres take
 // seconds before the first pass, and the line says where they went.
-job::ReadyRenderer said_ready_renderer(const RenderPlan& plan) {
+job::ReadyRenderer said_ready_renderer(const job::RenderPlan& plan) {
     job::ReadyRenderer ready = job::make_ready_renderer(plan);
     const render::Renderer& r = *ready.renderer;
     cli::info(job::devices_line(r));
@@ -36,50 +34,34 @@ job::ReadyRenderer said_ready_renderer(const RenderPlan& plan) {
 
 }  // namespace
 
-int run_render(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
+int run_render(const job::RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
     const job::ReadyRenderer ready = said_ready_renderer(plan);
     render::Renderer& renderer = *ready.renderer;
-    if (plan.resumed) {
-        renderer.load_film(plan.resumed->film);
-        cli::info("resuming " + options.resume + " at " + std::to_string(plan.resumed->film.samples_per_pixel) +
-                  " spp (samples " + plan.resumed->film.sample_ranges.format() + ")");
-        if (!plan.resumed->exact) cli::warning(options.resume + ": " + exr::kMeansOnly);
-    } else {
-        renderer.clear(plan.first_sample);
-    }
-
+    job::start_film(plan, renderer);
     // From here on SIGINT/SIGTERM end the render gracefully; before, during
     // the kernel build, there is nothing to save and they end it at once.
     install_interrupt_handlers();
 
     OutputFileImage image(std::move(*outputs.image));
-    FilmOutcome outcome = render_film(renderer, plan, options, image, "", nullptr);
+    ProgressReporter progress(cli::quiet(), options.time_limit.value_or(0), options.progress_interval);
+    job::FilmOutcome outcome = job::render_into(renderer, plan, output_run(options, progress), image);
     if (!outcome.rendered) {
         cli::error("interrupted before the first pass finished; no image written");
-        return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
+        return stopped_exit_code();
     }
     image.write(outcome.image.encode());
-    if (outputs.stats) {
-        RunStats stats = outcome.stats;
-        stats.setup_seconds = ready.setup_seconds;
-        if (outcome.image.denoise_times) stats.denoise = *outcome.image.denoise_times;
-        outputs.stats->write(job::stats_json(stats));
-    }
+    if (outputs.stats) outputs.stats->write(job::stats_json(job::written_stats(outcome, ready.setup_seconds)));
 
-    const std::string summary = film_summary(outcome, renderer, image);
+    const std::string written = job::written_line(outcome.reason, film_summary(outcome, renderer, image), true);
     if (outcome.reason == render::StopReason::Interrupted) {
-        cli::warning("interrupted: wrote " + summary);
-        return interrupt_exit_code() ? interrupt_exit_code() : cli::kFailure;
+        cli::warning(written);
+        return stopped_exit_code();
     }
-    const char* how = outcome.reason == render::StopReason::ReachedTime    ? "time limit reached: "
-                      : outcome.reason == render::StopReason::Converged ? "every pixel below --noise-threshold: "
-                      : outcome.reason == render::StopReason::ReachedError ? "--target-error reached: "
-                                                                           : "done: ";
-    cli::info(how + summary);
+    cli::info(written);
     return cli::kSuccess;
 }
 
-int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
+int run_benchmark(const job::RenderPlan& plan, const RenderOptions& options, RenderOutputs& outputs) {
     const job::StillBenchmark bench = job::run_still_benchmark(said_ready_renderer(plan), options.benchmark_seconds);
     const render::BenchmarkResult& result = bench.result;
     cli::info("benchmark: " + std::to_string(result.samples) + " samples in " + format_duration(result.seconds) +
@@ -91,7 +73,7 @@ int run_benchmark(const RenderPlan& plan, const RenderOptions& options, RenderOu
     return cli::kSuccess;
 }
 
-int run_frames_benchmark(RenderPlan& plan, const RenderOptions& options) {
+int run_frames_benchmark(job::RenderPlan& plan, const RenderOptions& options) {
     // Samples per frame: --spp, else 1.
     const job::FramesBenchmark bench = job::run_frames_benchmark(
         plan, jobs_of(plan, options), static_cast<int>(options.spp.value_or(1)),

@@ -8,6 +8,7 @@
 #include "orb/cli/io.h"
 #include "orb/cli/messages.h"
 #include "orb/exr/environment_map.h"
+#include "orb/job/scene_pose.h"
 #include "orb/scene/animation.h"
 #include "orb/import/import.h"
 #include "orb/import/importers.h"
@@ -101,6 +102,18 @@ std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, cons
     cli::warn_about_other_formats_options(reading, frames->format(), path);
     for (const std::string& message : frames->warnings()) cli::warning(message);
     return frames;
+}
+
+job::SceneInput read_scene_input(const std::string& path, const cli::SceneReading& reading) {
+    job::SceneInput input;
+    input.trajectory = open_trajectory(path, reading);
+    if (input.trajectory) {
+        input.label = path;
+        input.imported = job::for_frame(1, [&] { return job::trajectory_frame(*input.trajectory, 1, input.label); });
+    } else {
+        input.imported = read_scene(path, input.label, reading);
+    }
+    return input;
 }
 
 }  // namespace orb::request

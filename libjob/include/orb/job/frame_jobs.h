@@ -23,6 +23,12 @@ struct Job {
 // "frame 12: ", or "" when the job is no frame.
 std::string label_of(const Job& job);
 
+// The jobs of a run: one per frame in the order given, its output named by
+// `output_of` (orb-render: the -o pattern with the frame's number); without
+// frames, the one output `still` of a render that is no frame.
+std::vector<Job> jobs_of(const std::vector<long>& frames, const std::string& still,
+                         const std::function<std::string(long frame)>& output_of);
+
 // Poses the plan at the job's frame, unless it is posed there already.
 void pose_for(RenderPlan& plan, const Job& job);
 
@@ -40,6 +46,18 @@ void set_up(RenderPlan& plan, const Job& job, std::optional<render::Renderer>& r
 // definition of finished, orb::exr::judge_output). Every block is decoded:
 // a frame skipped or continued by mistake costs more than reading it.
 exr::OutputJudgement judge(RenderPlan& plan, const Job& job);
+
+// The jobs whose outputs `judge` does not find finished, in order: what
+// --skip-existing would render (orb-render --missing, orb-frames --missing).
+// An output that is there but does not count (stopped short, damaged,
+// another render) is noted, "frame 12: out.exr: why", to `notes`; an absent
+// one is the usual case and says nothing new.
+std::vector<Job> unfinished(const std::vector<Job>& jobs,
+                            const std::function<exr::OutputJudgement(const Job&)>& judge, const MessageSink& notes);
+// The same against what the plan asks, from the outputs' headers only (as
+// orb-frames --missing reads them): --missing renders nothing, so it reads
+// no pixels either.
+std::vector<Job> unfinished(RenderPlan& plan, const std::vector<Job>& jobs);
 
 // Loads the samples of `output` into the renderer, which set_up() left
 // empty at the plan's first sample. Returns false, after saying why

@@ -17,6 +17,7 @@
 #include "orb/job/frame_claim.h"
 #include "orb/job/frame_jobs.h"
 #include "orb/job/image_output.h"
+#include "orb/job/output_film.h"
 #include "orb/job/render_film.h"
 #include "orb/job/render_plan.h"
 #include "orb/job/run_stats.h"
@@ -27,20 +28,17 @@ struct FrameRunOptions {
     bool skip_existing = false;  // finished outputs are skipped, those stopped short continued
     bool claim = false;          // each output is claimed before it renders (frame_claim.h); implies skip_existing
     double claim_stale_after = 600;  // seconds without a refresh before another host's claim is taken over
-    const std::atomic<bool>* cancel = nullptr;  // checked before each frame (render_film checks it between passes)
+    // How each frame renders into its output (render_into); its cancel flag
+    // is also checked before each frame.
+    OutputRun film;
 };
 
-// What the front end does for the loop (orb-render: its output files,
-// progress lines and messages).
+// What the front end does for the loop (orb-render: its output files and
+// messages).
 struct FrameRunHooks {
     // The output of a job about to render, ready to be written (orb-render
     // locks it and makes its temporary file). What it throws ends the run.
     std::function<std::unique_ptr<ImageOutput>(const Job&)> prepare_output;
-    // Renders the set-up plan into a film (render_film with the front end's
-    // progress and checkpoints), its film read later into `reuse`.
-    std::function<FilmOutcome(render::Renderer&, const RenderPlan&, ImageOutput& output, const std::string& label,
-                              FrameClaim* claim, Film reuse)>
-        render;
     // What the line said once a frame's file is in place ends with ("64 spp in 2.1 s ... -> out.exr").
     std::function<std::string(const FilmOutcome&, const render::Renderer&, const ImageOutput&)> summary;
     std::function<void(render::Renderer&)> renderer_made;  // once, when the loop's renderer exists
@@ -62,5 +60,10 @@ struct FramesRun {
 // image could not be written, and orb::InputError for a frame that cannot be posed.
 FramesRun run_frames(RenderPlan& plan, const std::vector<Job>& jobs, const FrameRunOptions& options,
                      const FrameRunHooks& hooks);
+
+// What --stats-json says of a run of the frame loop: for one frame asked
+// (or a still's one output) that was rendered, that render's object
+// (stats_json); else every frame rendered and those skipped (frames_stats_json).
+std::string frames_run_stats_json(const RenderPlan& plan, const FramesRun& run);
 
 }  // namespace orb::job

@@ -29,7 +29,16 @@ std::string devices_label(const render::Renderer& renderer);
 // or "devices: A; B" for several.
 std::string devices_line(const render::Renderer& renderer);
 const char* stop_reason_name(render::StopReason reason);
+// The line said once an image is in place, by why its render stopped:
+// "done: SUMMARY", "time limit reached: SUMMARY", "interrupted: wrote
+// SUMMARY" (a warning); a still's line also names the adaptive goal it
+// reached ("every pixel below --noise-threshold: ", "--target-error
+// reached: "), a frame's says "done: " of it.
+std::string written_line(render::StopReason reason, const std::string& summary, bool still);
 std::string kernel_builds_text(int builds);  // "1 kernel build", "2 kernel builds"
+// Whether a film holds the samples 0 ... n-1 in one range: the whole
+// render from its start, not a slice (docs/orb-render.md, "Exact sums").
+bool holds_samples_from_zero(const SampleRanges& held);
 
 // The layers an image's one encode adds after the film's: `denoised`, when
 // a denoiser is given (--denoise; final images only, never checkpoints).

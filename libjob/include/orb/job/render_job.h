@@ -138,6 +138,8 @@ struct DeviceListing {
     std::uint64_t memory_bytes = 0;
     std::string platform;
     std::string name;
+    std::string vendor;   // the device's vendor and OpenCL version, which the list leaves out
+    std::string version;
 };
 // Throws orb::render::NoOpenCLError (whose message says how to install PoCL) without any OpenCL platform.
 std::vector<DeviceListing> list_devices();

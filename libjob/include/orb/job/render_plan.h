@@ -98,6 +98,7 @@ struct RenderPlan {
     // The film to continue from (--resume, or an output --skip-existing
     // continues); its metadata stays once its film is on the device.
     std::optional<exr::ExrFilm> resumed;
+    std::string resumed_path;  // the file `resumed` was read from
     // --denoise: the passes include its guides, and the denoiser is loaded
     // before anything renders (not for --missing, which renders nothing),
     // shared by every frame.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "orb/cli/scene_reading.h"
+#include "orb/job/render_plan.h"
 #include "orb/scene/error.h"
 #include "orb/import/molecular.h"
 #include "orb/scene/scene.h"
@@ -30,5 +31,11 @@ Scene read_scene(const std::string& path, std::string& label, const cli::SceneRe
 // has the environment `reading` chooses. Prints the reader's warnings.
 // Throws orb::InputError.
 std::shared_ptr<const FrameSource> open_trajectory(const std::string& path, const cli::SceneReading& reading);
+
+// The scene a render job poses, read as orb-render reads it (orb-frames
+// --missing --scene reads it the same): a trajectory opened with its frame 1
+// read (open_trajectory; its errors say "frame 1: "), else the whole scene
+// (read_scene). Throws orb::InputError.
+job::SceneInput read_scene_input(const std::string& path, const cli::SceneReading& reading);
 
 }  // namespace orb::request
