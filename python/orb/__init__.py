@@ -129,17 +129,64 @@ def _render(self, width, height, spp, seed=0, device="default", passes=("beauty"
     Ctrl-C (KeyboardInterrupt) stops it the same way and raises. The GIL is
     released while the devices render.
     """
-    # orb-render's own ranges and messages for its --width, --height and --spp.
+    return _orb._render(self, *_render_arguments(width, height, spp, seed, device, passes, denoise, target_error,
+                                                  noise_threshold, time_limit), progress)
+
+
+def _render_arguments(width, height, spp, seed, device, passes, denoise, target_error, noise_threshold, time_limit):
+    """The arguments render and render_progressive share, checked with orb-render's ranges and messages."""
     for option, value, highest in (("--width", width, 65536), ("--height", height, 65536), ("--spp", spp, 2147483647)):
         if not isinstance(value, (int, _np.integer)) or isinstance(value, bool) or not 1 <= value <= highest:
             raise ValueError(f"{option}: Value {value} not in range 1 to {highest}")
     if isinstance(passes, str):
         passes = (passes,)
-    return _orb._render(self, width, height, spp, seed, str(device), list(passes), bool(denoise), target_error,
-                        noise_threshold, time_limit, progress)
+    return (int(width), int(height), int(spp), seed, str(device), list(passes), bool(denoise), target_error,
+            noise_threshold, time_limit)
+
+
+def _render_progressive(self, width, height, spp, seed=0, device="default", passes=("beauty",), denoise=False,
+                        target_error=None, noise_threshold=None, time_limit=None, every=1.0, every_passes=None):
+    """Renders as ``render`` does with the same arguments, yielding orb.Image
+    objects as the film converges: the image of the first pass, then one every
+    ``every`` seconds (or every ``every_passes`` passes), each the mean of the
+    samples so far (``image.spp``, ``image.final`` False), and last the
+    render's own image, bit for bit ``render``'s (``image.final`` True).
+
+    The render runs on a thread of its own from this call on and never waits
+    for the loop: a loop body slower than ``every`` sees fewer images, always
+    the newest. Leaving the loop early (``break``, ``close()``) stops the
+    render after the pass in flight; Ctrl-C stops it and raises
+    KeyboardInterrupt. Errors of the scene or device come from the first
+    ``next()``, bad arguments from this call.
+    """
+    arguments = _render_arguments(width, height, spp, seed, device, passes, denoise, target_error, noise_threshold,
+                                  time_limit)
+    if every_passes is not None:
+        if not isinstance(every_passes, (int, _np.integer)) or isinstance(every_passes, bool) or every_passes < 1:
+            raise ValueError(f"every_passes: expected a whole number >= 1, got {every_passes!r}")
+        every_seconds, every_passes = 0.0, int(every_passes)
+    else:
+        if isinstance(every, bool) or not isinstance(every, (int, float, _np.integer, _np.floating)) or \
+                not 0 < every < float("inf"):
+            raise ValueError(f"every: expected seconds > 0, got {every!r}")
+        every_seconds, every_passes = float(every), 0
+    return _images_of(_orb._render_progressive(self, *arguments, every_seconds, every_passes))
+
+
+def _images_of(render):
+    """A generator over a progressive render's images; closing it stops the render."""
+    try:
+        while True:
+            image = render.next()
+            if image is None:
+                return
+            yield image
+    finally:
+        render.close()
 
 
 Scene.render = _render
+Scene.render_progressive = _render_progressive
 
 
 def _ocio_config():
@@ -204,31 +251,60 @@ Image.png = _repr_png
 Image.save = _save_image
 
 
-def show(scene, width=320, height=240, spp=16, **options):
-    """Renders `scene` small and displays it in a notebook cell (IPython.display);
-    returns the orb.Image."""
-    image = scene.render(width, height, spp, **options)
+def show(scene, width=320, height=240, spp=16, every=0.5, **options):
+    """Renders `scene` small and shows it converging in one notebook cell
+    (IPython.display, updated every ``every`` seconds); returns the final
+    orb.Image. Outside IPython it renders once and returns the image.
+    ``options`` are ``render``'s (seed, device, passes, ...)."""
     try:
+        from IPython import get_ipython
         from IPython.display import display
     except ImportError:
-        return image
-    display(image)
+        get_ipython = None
+    if get_ipython is None or get_ipython() is None:
+        return scene.render(width, height, spp, **options)
+    shown = None
+    for image in scene.render_progressive(width, height, spp, every=every, **options):
+        if shown is None:
+            shown = display(image, display_id=True)
+        else:
+            shown.update(image)
     return image
 
 
-def _extended_xyz(symbols, positions, cell=None, pbc=None):
-    """One frame as extended XYZ text, the format Orb's XYZ importer reads."""
+def _extended_xyz(symbols, positions, cell=None, pbc=None, columns=()):
+    """One frame as extended XYZ text, the format Orb's XYZ importer reads.
+    columns: (name, "S", "I" or "R", values) for more per-atom columns, which
+    the importer keeps as properties of that name."""
     positions = _np.asarray(positions, dtype=_np.float64)
-    header = "Properties=species:S:1:pos:R:3"
+    properties = "species:S:1:pos:R:3" + "".join(f":{name}:{kind}:1" for name, kind, _ in columns)
+    header = f"Properties={properties}"
     if cell is not None and _np.any(cell):
         lattice = " ".join(repr(float(v)) for v in _np.asarray(cell, dtype=_np.float64).ravel())
         flags = " ".join("T" if p else "F" for p in (pbc if pbc is not None else (True, True, True)))
         header = f'Lattice="{lattice}" {header} pbc="{flags}"'
-    rows = _np.char.add(_np.asarray(symbols, dtype=str), " ")
+    lines = _np.asarray(symbols, dtype=str)
     numbers = _np.char.mod("%.17g", positions)
-    lines = _np.char.add(_np.char.add(_np.char.add(rows, numbers[:, 0]), _np.char.add(" ", numbers[:, 1])),
-                         _np.char.add(" ", numbers[:, 2]))
+    words = [numbers[:, 0], numbers[:, 1], numbers[:, 2]]
+    for _, kind, values in columns:
+        values = _np.asarray(values)
+        words.append(values.astype(str) if kind == "S" else _np.char.mod("%d" if kind == "I" else "%.17g", values))
+    for column in words:
+        lines = _np.char.add(_np.char.add(lines, " "), column)
     return f"{len(positions)}\n{header}\n" + "\n".join(lines.tolist()) + "\n"
+
+
+def _scene_of_xyz(source, text, options, frame=None):
+    """The scene Orb reads from extended XYZ text, with ``load``'s options;
+    ``frame`` picks a frame of several (the adapters' trajectories)."""
+    options = dict(options, **{"from": "xyz"})
+    if frame is not None:
+        options["frame"] = frame
+    scene, messages = Scene._load_text(source, text, _keyword_options(options))
+    if frame is not None:  # the importer's note that the text holds several frames is the adapter's own doing
+        messages = [m for m in messages if not m.startswith(f"{source}: holds ")]
+    _warn(messages)
+    return scene
 
 
 def from_ase(atoms, **options):
@@ -243,6 +319,5 @@ def from_ase(atoms, **options):
     cell = atoms.get_cell() if hasattr(atoms, "get_cell") else None
     pbc = atoms.get_pbc() if hasattr(atoms, "get_pbc") else None
     text = _extended_xyz(symbols, positions, None if cell is None else _np.asarray(cell), pbc)
-    scene, messages = Scene._load_text("<ase.Atoms>", text, _keyword_options(dict(options, **{"from": "xyz"})))
-    _warn(messages)
-    return scene
+    return _scene_of_xyz("<ase.Atoms>", text, options)
+

@@ -146,7 +146,7 @@ void bind_scene(py::module_& module) {
             [](Scene& s, int v) { set_render_setting(s, &RenderSettings::max_depth, v); })
         .def("_save", &save_scene)
         .def("to_json", &write_scene_json, "The canonical Orb JSON text.")
-        .def("__eq__", [](const Scene& a, const Scene& b) { return a == b; })
+        .def("__eq__", [](const Scene& a, const Scene& b) { return a == b; }, py::is_operator())
         .def("__repr__", [](const Scene& s) {
             return "<orb.Scene: " + std::to_string(s.spheres.size()) + " spheres, " +
                    std::to_string(s.materials.size()) + " materials>";
