@@ -13,7 +13,7 @@ import numpy as _np
 from . import _orb
 from ._orb import Camera, Error, Image, Scene, devices
 
-__all__ = ["Camera", "Error", "Image", "Scene", "devices", "from_ase", "load", "show"]
+__all__ = ["Camera", "Error", "Image", "Scene", "devices", "frames", "from_ase", "from_mdanalysis", "load", "show"]
 
 
 def _option_word(value):
@@ -321,3 +321,97 @@ def from_ase(atoms, **options):
     text = _extended_xyz(symbols, positions, None if cell is None else _np.asarray(cell), pbc)
     return _scene_of_xyz("<ase.Atoms>", text, options)
 
+
+_MDANALYSIS_SOURCE = "<MDAnalysis AtomGroup>"
+
+
+def _atom_group(atoms, function):
+    """An MDAnalysis AtomGroup: the one given, or a Universe's atoms."""
+    group = getattr(atoms, "atoms", None)
+    if group is None or not hasattr(group, "positions") or not hasattr(group, "universe"):
+        raise TypeError(f"{function}: expected an MDAnalysis Universe or AtomGroup")
+    return group
+
+
+def _guessed_element(name):
+    """The element MDAnalysis guesses from an atom name (its guesser moved in MDAnalysis 2.8)."""
+    try:
+        from MDAnalysis.topology.guessers import guess_atom_element
+    except ImportError:
+        from MDAnalysis.guesser.default_guesser import DefaultGuesser
+
+        guess_atom_element = DefaultGuesser(None).guess_atom_element
+    return guess_atom_element(name)
+
+
+def _mdanalysis_xyz(group):
+    """The group's atoms at the trajectory's current frame as extended XYZ text,
+    with the columns Orb's PDB importer keeps as properties, where the topology has them."""
+    names = _np.asarray(group.names, dtype=str) if hasattr(group, "names") else None
+    elements = _np.asarray(group.elements, dtype=str) if hasattr(group, "elements") else None
+    if elements is None:
+        if names is None:
+            raise ValueError("from_mdanalysis: the topology has neither elements nor atom names")
+        elements = _np.array([_guessed_element(n) for n in names], dtype=str)
+    elif names is not None and not _np.all(_np.char.strip(elements) != ""):
+        blank = _np.char.strip(elements) == ""
+        elements = elements.astype("<U3")  # room for a guessed symbol
+        elements[blank] = [_guessed_element(n) for n in names[blank]]
+    elements = _np.where(_np.char.strip(elements) == "", "X", elements)
+
+    def words(attribute):
+        # A categorical column when every atom has a word (extended XYZ separates columns by spaces).
+        if not hasattr(group, attribute):
+            return None
+        values = _np.asarray(getattr(group, attribute), dtype=str)
+        if values.size and all(v and not any(c.isspace() for c in v) for v in values.tolist()):
+            return values
+        return None
+
+    columns = []
+    chains = words("chainIDs")
+    if chains is None:
+        chains = words("segids")
+    for name, kind, values in (("chain", "S", chains), ("residue_name", "S", words("resnames")),
+                               ("residue_number", "I", group.resids if hasattr(group, "resids") else None),
+                               ("atom_name", "S", words("names")),
+                               ("b_factor", "R", group.tempfactors if hasattr(group, "tempfactors") else None),
+                               ("occupancy", "R", group.occupancies if hasattr(group, "occupancies") else None)):
+        if values is not None:
+            columns.append((name, kind, values))
+    cell = None
+    dimensions = group.dimensions
+    if dimensions is not None and _np.all(_np.asarray(dimensions[:3]) > 0):
+        from MDAnalysis.lib.mdamath import triclinic_vectors
+
+        cell = triclinic_vectors(dimensions)
+    return _extended_xyz(elements, group.positions, cell, None, columns)
+
+
+def from_mdanalysis(atoms, **options):
+    """An MDAnalysis Universe or AtomGroup at its trajectory's current frame, as
+    Orb reads the same atoms from a molecular file: a sphere per atom coloured
+    and sized by element (MDAnalysis's elements, else its guess from the atom
+    names), the box as the cell (``cell=True`` draws it), the topology's chain,
+    residue_name, residue_number, atom_name, b_factor and occupancy as
+    properties for ``color_by``, with ``load``'s options."""
+    return _scene_of_xyz(_MDANALYSIS_SOURCE, _mdanalysis_xyz(_atom_group(atoms, "from_mdanalysis")), options)
+
+
+def frames(atoms, start=None, stop=None, step=None, **options):
+    """One Scene per frame of an MDAnalysis trajectory (``trajectory[start:stop:step]``),
+    each as ``from_mdanalysis`` makes it, but with the camera and lights of the
+    first frame, as ``orb-render --frames`` renders a trajectory: a video of
+    them holds still."""
+    group = _atom_group(atoms, "frames")
+    if "frame" in options:
+        raise TypeError("frames() got an unexpected keyword argument 'frame'")
+    first = None
+    for _ in group.universe.trajectory[start:stop:step]:
+        text = _mdanalysis_xyz(group)
+        if first is None:
+            first = text
+            yield _scene_of_xyz(_MDANALYSIS_SOURCE, text, options)
+        else:
+            # Frame 2 of (first frame, this frame): the importer keeps the first frame's view.
+            yield _scene_of_xyz(_MDANALYSIS_SOURCE, first + text, options, frame=2)
