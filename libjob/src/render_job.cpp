@@ -126,8 +126,9 @@ void RenderedImage::save_exr(const std::string& path) const {
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
     if (ec) {
+        const std::string why = ec.message();  // before removing the temporary file resets `ec`
         std::filesystem::remove(temporary, ec);
-        throw std::runtime_error(path + ": cannot write: " + ec.message());
+        throw std::runtime_error(path + ": cannot write: " + why);
     }
 }
 

@@ -92,3 +92,28 @@ def test_comparisons_and_wrong_types_are_pythons(cornell):
         cornell.camera.orbit("far")
     with pytest.raises(TypeError):
         orb.Scene()
+
+
+def test_a_refused_camera_change_leaves_the_camera_as_it_was(cornell):
+    before = repr(cornell.camera)
+    with pytest.raises(orb.Error, match="is where the scene's camera stands"):
+        cornell.camera.look_at(cornell.camera.position)
+    with pytest.raises(orb.Error, match="is the point the scene's camera looks at"):
+        cornell.set_camera(camera_position=cornell.camera.target)
+    with strictly(ValueError, "--orbit: expected a number of degrees, got 'nan'"):
+        cornell.camera.orbit(float("nan"))
+    assert repr(cornell.camera) == before
+    assert cornell.render(4, 4, 1).final
+
+
+def test_a_missing_environment_map_is_file_not_found_and_a_bad_radiance_orb_error(cornell):
+    with strictly(FileNotFoundError, "--environment missing.exr: no such file"):
+        cornell.set_environment("missing.exr")
+    with strictly(orb.Error, "--environment -1: radiance must be finite, >= 0 and <= 1e12 (times the intensity)"):
+        cornell.set_environment(-1)
+
+
+def test_an_image_written_over_a_folder_says_why(cornell, tmp_path):
+    with strictly(orb.Error, f"{tmp_path}: cannot write: Is a directory"):
+        cornell.render(4, 4, 1).save(tmp_path)
+    assert list(tmp_path.iterdir()) == []
