@@ -1,6 +1,7 @@
 """Every binding's errors: the tools' messages as orb.Error, ValueError, TypeError or
 FileNotFoundError (docs/python.md, "Errors"), never a bare RuntimeError or a crash."""
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -117,3 +118,24 @@ def test_an_image_written_over_a_folder_says_why(cornell, tmp_path):
     with strictly(orb.Error, f"{tmp_path}: cannot write: Is a directory"):
         cornell.render(4, 4, 1).save(tmp_path)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_renders_started_together_on_threads_all_render(scenes_dir):
+    # In a fresh interpreter: the first renders find the OpenCL platform together.
+    code = """
+import sys, threading, orb
+scene = orb.load(sys.argv[1])
+errors, images = [], []
+def render(seed):
+    try:
+        images.append(scene.render(16, 12, 2, seed=seed).spp)
+        images.append(list(scene.render_progressive(16, 12, 2, seed=seed))[-1].spp)
+    except Exception as e:
+        errors.append(repr(e))
+threads = [threading.Thread(target=render, args=(seed,)) for seed in range(4)]
+[t.start() for t in threads]
+[t.join() for t in threads]
+print(errors, images)
+"""
+    result = subprocess.run([sys.executable, "-c", code, scenes_dir / "cornell.scn"], capture_output=True, text=True)
+    assert result.returncode == 0 and result.stdout == "[] [2, 2, 2, 2, 2, 2, 2, 2]\n", result.stderr
