@@ -132,3 +132,10 @@ def test_show_outside_ipython_renders_once(cornell, monkeypatch):
     monkeypatch.setattr(ipython, "get_ipython", lambda: None)
     image = orb.show(cornell, width=16, height=12, spp=2)
     assert image.final and np.array_equal(image.beauty, cornell.render(16, 12, 2).beauty)
+
+
+def test_with_denoise_every_image_has_the_denoised_layer_and_the_last_is_renders(cornell):
+    images = list(cornell.render_progressive(32, 24, 16, seed=2, denoise=True, every_passes=1))
+    assert all(image.layer_names == ["beauty", "albedo", "normal", "denoised"] for image in images)
+    rendered = cornell.render(32, 24, 16, seed=2, denoise=True)
+    assert np.array_equal(images[-1].denoised, rendered.denoised) and np.array_equal(images[-1].beauty, rendered.beauty)
