@@ -31,8 +31,9 @@ test_packages=(
   slurm-wlm munge
   # the tutorial's video step (docs.commands runs every block of the docs)
   ffmpeg
-  # the Python module's tests (python.pytest, python.notebook; -DORB_PYTHON=ON)
-  python3-pytest python3-numpy python3-nbconvert python3-ipykernel
+  # the Python module's tests (python.pytest, python.notebook; -DORB_PYTHON=ON);
+  # MDAnalysis for orb.from_mdanalysis and orb.frames, which the module imports only when called
+  python3-pytest python3-numpy python3-nbconvert python3-ipykernel python3-mdanalysis
 )
 package_packages=(
   # cpack's Depends (dpkg-shlibdeps), the package's check, reading its man pages

@@ -117,6 +117,7 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, Film
     limits.target_spp = plan.target_spp;
     limits.max_seconds = run.time_limit.value_or(0);
     limits.checkpoint_seconds = run.checkpoint.value_or(0);
+    limits.checkpoint_passes = run.checkpoint_passes;
     std::optional<render::AdaptiveSampler> adaptive;
     if (plan.adaptive.any()) {
         adaptive.emplace(renderer, plan.adaptive,

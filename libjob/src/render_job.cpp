@@ -5,6 +5,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -69,6 +70,23 @@ RenderedImage render_still(const Scene& scene, const StillSettings& settings, co
         const Progress now{state.pass, state.spp, state.target_spp, state.elapsed_seconds, state.samples_per_second};
         if (!progress(now, preview)) stop = true;
     };
+    if (settings.on_snapshot) {
+        run.checkpoint = settings.snapshot_seconds > 0 ? std::optional<double>(settings.snapshot_seconds) : std::nullopt;
+        run.checkpoint_passes = settings.snapshot_seconds > 0 ? 0 : std::max(settings.snapshot_passes, 1);
+        run.on_checkpoint = [&](FinalImage& checkpoint, const render::ProgressState& state) {
+            RenderedImage snapshot;
+            snapshot.film = std::move(checkpoint.film);
+            snapshot.metadata = std::move(checkpoint.metadata);
+            snapshot.options = checkpoint.options;  // a checkpoint's: exact sums, so that it can be continued
+            snapshot.denoiser = plan.denoiser;      // the same layers as the final image
+            snapshot.snapshot = true;
+            snapshot.stats = renderer_stats(renderer);
+            snapshot.stats.passes = state.pass;
+            snapshot.stats.seconds = state.elapsed_seconds;
+            snapshot.stats.samples_per_second = state.samples_per_second;
+            settings.on_snapshot(std::move(snapshot));
+        };
+    }
     FilmOutcome outcome = render_film(renderer, plan, std::move(run));
     if (!outcome.rendered) throw std::runtime_error("stopped before the first pass finished; there is no image");
     outcome.image.wait_for_film();  // warns of sums out of range, as orb-render's final write does
@@ -109,8 +127,9 @@ void RenderedImage::save_exr(const std::string& path) const {
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
     if (ec) {
+        const std::string why = ec.message();  // before removing the temporary file resets `ec`
         std::filesystem::remove(temporary, ec);
-        throw std::runtime_error(path + ": cannot write: " + ec.message());
+        throw std::runtime_error(path + ": cannot write: " + why);
     }
 }
 

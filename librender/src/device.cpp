@@ -1,6 +1,7 @@
 // Enumerating OpenCL devices and choosing one.
 #include <algorithm>
 #include <cctype>
+#include <mutex>
 #include <sstream>
 
 #include "opencl_devices.h"
@@ -37,13 +38,24 @@ std::vector<cl::Device> devices_of(const cl::Platform& platform)
     return devices;
 }
 
-// All devices in list order, with their platforms.
-std::vector<std::pair<cl::Platform, cl::Device>> all_devices()
+std::vector<std::pair<cl::Platform, cl::Device>> enumerate_devices()
 {
     std::vector<std::pair<cl::Platform, cl::Device>> out;
     for (const cl::Platform& platform : platforms_or_throw())
         for (const cl::Device& device : devices_of(platform)) out.emplace_back(platform, device);
     return out;
+}
+
+// All devices in list order, with their platforms. The ICD loader and PoCL
+// set themselves up during the first enumeration, which is not safe from
+// several threads at once (renders started together on an embedding's
+// threads crashed there, or found no platform): the first one runs alone,
+// the others wait for it (and try again if it threw).
+std::vector<std::pair<cl::Platform, cl::Device>> all_devices()
+{
+    static std::once_flag set_up;
+    std::call_once(set_up, [] { (void)enumerate_devices(); });
+    return enumerate_devices();
 }
 
 std::string lowercase(std::string text)

@@ -44,7 +44,15 @@ StopReason render_progressively(PassRenderer& renderer, const ProgressiveLimits&
     state.target_spp = limits.target_spp;
 
     Clock::time_point last_checkpoint = start;
+    int last_checkpoint_pass = 0;
     bool checkpointed = false;
+    const bool checkpoints = limits.checkpoint_seconds > 0 || limits.checkpoint_passes > 0;
+    // The first checkpoint after the first pass, then one every so many passes or seconds.
+    auto checkpoint_due = [&] {
+        if (!checkpointed) return true;
+        if (limits.checkpoint_passes > 0) return state.pass - last_checkpoint_pass >= limits.checkpoint_passes;
+        return seconds_between(last_checkpoint, Clock::now()) >= limits.checkpoint_seconds;
+    };
     double seconds_per_sample_per_pixel = 0;  // from the latest pass
 
     auto reached = [&](StopReason& reason) {
@@ -79,11 +87,11 @@ StopReason render_progressively(PassRenderer& renderer, const ProgressiveLimits&
         // The final image is written by the caller once the loop ends, so a
         // checkpoint is only worth its time while more passes will follow.
         StopReason ignored;
-        if (limits.checkpoint_seconds > 0 && !reached(ignored) &&
-            (!checkpointed || seconds_between(last_checkpoint, Clock::now()) >= limits.checkpoint_seconds)) {
+        if (checkpoints && !reached(ignored) && checkpoint_due()) {
             if (callbacks.on_checkpoint) callbacks.on_checkpoint(state);
             checkpointed = true;
             last_checkpoint = Clock::now();
+            last_checkpoint_pass = state.pass;
         }
     }
 

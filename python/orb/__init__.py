@@ -13,7 +13,7 @@ import numpy as _np
 from . import _orb
 from ._orb import Camera, Error, Image, Scene, devices
 
-__all__ = ["Camera", "Error", "Image", "Scene", "devices", "from_ase", "load", "show"]
+__all__ = ["Camera", "Error", "Image", "Scene", "devices", "frames", "from_ase", "from_mdanalysis", "load", "show"]
 
 
 def _option_word(value):
@@ -129,17 +129,64 @@ def _render(self, width, height, spp, seed=0, device="default", passes=("beauty"
     Ctrl-C (KeyboardInterrupt) stops it the same way and raises. The GIL is
     released while the devices render.
     """
-    # orb-render's own ranges and messages for its --width, --height and --spp.
+    return _orb._render(self, *_render_arguments(width, height, spp, seed, device, passes, denoise, target_error,
+                                                  noise_threshold, time_limit), progress)
+
+
+def _render_arguments(width, height, spp, seed, device, passes, denoise, target_error, noise_threshold, time_limit):
+    """The arguments render and render_progressive share, checked with orb-render's ranges and messages."""
     for option, value, highest in (("--width", width, 65536), ("--height", height, 65536), ("--spp", spp, 2147483647)):
         if not isinstance(value, (int, _np.integer)) or isinstance(value, bool) or not 1 <= value <= highest:
             raise ValueError(f"{option}: Value {value} not in range 1 to {highest}")
     if isinstance(passes, str):
         passes = (passes,)
-    return _orb._render(self, width, height, spp, seed, str(device), list(passes), bool(denoise), target_error,
-                        noise_threshold, time_limit, progress)
+    return (int(width), int(height), int(spp), seed, str(device), list(passes), bool(denoise), target_error,
+            noise_threshold, time_limit)
+
+
+def _render_progressive(self, width, height, spp, seed=0, device="default", passes=("beauty",), denoise=False,
+                        target_error=None, noise_threshold=None, time_limit=None, every=1.0, every_passes=None):
+    """Renders as ``render`` does with the same arguments, yielding orb.Image
+    objects as the film converges: the image of the first pass, then one every
+    ``every`` seconds (or every ``every_passes`` passes), each the mean of the
+    samples so far (``image.spp``, ``image.final`` False), and last the
+    render's own image, bit for bit ``render``'s (``image.final`` True).
+
+    The render runs on a thread of its own from this call on and never waits
+    for the loop: a loop body slower than ``every`` sees fewer images, always
+    the newest. Leaving the loop early (``break``, ``close()``) stops the
+    render after the pass in flight; Ctrl-C stops it and raises
+    KeyboardInterrupt. Errors of the scene or device come from the first
+    ``next()``, bad arguments from this call.
+    """
+    arguments = _render_arguments(width, height, spp, seed, device, passes, denoise, target_error, noise_threshold,
+                                  time_limit)
+    if every_passes is not None:
+        if not isinstance(every_passes, (int, _np.integer)) or isinstance(every_passes, bool) or every_passes < 1:
+            raise ValueError(f"every_passes: expected a whole number >= 1, got {every_passes!r}")
+        every_seconds, every_passes = 0.0, int(every_passes)
+    else:
+        if isinstance(every, bool) or not isinstance(every, (int, float, _np.integer, _np.floating)) or \
+                not 0 < every < float("inf"):
+            raise ValueError(f"every: expected seconds > 0, got {every!r}")
+        every_seconds, every_passes = float(every), 0
+    return _images_of(_orb._render_progressive(self, *arguments, every_seconds, every_passes))
+
+
+def _images_of(render):
+    """A generator over a progressive render's images; closing it stops the render."""
+    try:
+        while True:
+            image = render.next()
+            if image is None:
+                return
+            yield image
+    finally:
+        render.close()
 
 
 Scene.render = _render
+Scene.render_progressive = _render_progressive
 
 
 def _ocio_config():
@@ -204,31 +251,60 @@ Image.png = _repr_png
 Image.save = _save_image
 
 
-def show(scene, width=320, height=240, spp=16, **options):
-    """Renders `scene` small and displays it in a notebook cell (IPython.display);
-    returns the orb.Image."""
-    image = scene.render(width, height, spp, **options)
+def show(scene, width=320, height=240, spp=16, every=0.5, **options):
+    """Renders `scene` small and shows it converging in one notebook cell
+    (IPython.display, updated every ``every`` seconds); returns the final
+    orb.Image. Outside IPython it renders once and returns the image.
+    ``options`` are ``render``'s (seed, device, passes, ...)."""
     try:
+        from IPython import get_ipython
         from IPython.display import display
     except ImportError:
-        return image
-    display(image)
+        get_ipython = None
+    if get_ipython is None or get_ipython() is None:
+        return scene.render(width, height, spp, **options)
+    shown = None
+    for image in scene.render_progressive(width, height, spp, every=every, **options):
+        if shown is None:
+            shown = display(image, display_id=True)
+        else:
+            shown.update(image)
     return image
 
 
-def _extended_xyz(symbols, positions, cell=None, pbc=None):
-    """One frame as extended XYZ text, the format Orb's XYZ importer reads."""
+def _extended_xyz(symbols, positions, cell=None, pbc=None, columns=()):
+    """One frame as extended XYZ text, the format Orb's XYZ importer reads.
+    columns: (name, "S", "I" or "R", values) for more per-atom columns, which
+    the importer keeps as properties of that name."""
     positions = _np.asarray(positions, dtype=_np.float64)
-    header = "Properties=species:S:1:pos:R:3"
+    properties = "species:S:1:pos:R:3" + "".join(f":{name}:{kind}:1" for name, kind, _ in columns)
+    header = f"Properties={properties}"
     if cell is not None and _np.any(cell):
         lattice = " ".join(repr(float(v)) for v in _np.asarray(cell, dtype=_np.float64).ravel())
         flags = " ".join("T" if p else "F" for p in (pbc if pbc is not None else (True, True, True)))
         header = f'Lattice="{lattice}" {header} pbc="{flags}"'
-    rows = _np.char.add(_np.asarray(symbols, dtype=str), " ")
+    lines = _np.asarray(symbols, dtype=str)
     numbers = _np.char.mod("%.17g", positions)
-    lines = _np.char.add(_np.char.add(_np.char.add(rows, numbers[:, 0]), _np.char.add(" ", numbers[:, 1])),
-                         _np.char.add(" ", numbers[:, 2]))
+    words = [numbers[:, 0], numbers[:, 1], numbers[:, 2]]
+    for _, kind, values in columns:
+        values = _np.asarray(values)
+        words.append(values.astype(str) if kind == "S" else _np.char.mod("%d" if kind == "I" else "%.17g", values))
+    for column in words:
+        lines = _np.char.add(_np.char.add(lines, " "), column)
     return f"{len(positions)}\n{header}\n" + "\n".join(lines.tolist()) + "\n"
+
+
+def _scene_of_xyz(source, text, options, frame=None):
+    """The scene Orb reads from extended XYZ text, with ``load``'s options;
+    ``frame`` picks a frame of several (the adapters' trajectories)."""
+    options = dict(options, **{"from": "xyz"})
+    if frame is not None:
+        options["frame"] = frame
+    scene, messages = Scene._load_text(source, text, _keyword_options(options))
+    if frame is not None:  # the importer's note that the text holds several frames is the adapter's own doing
+        messages = [m for m in messages if not m.startswith(f"{source}: holds ")]
+    _warn(messages)
+    return scene
 
 
 def from_ase(atoms, **options):
@@ -243,6 +319,99 @@ def from_ase(atoms, **options):
     cell = atoms.get_cell() if hasattr(atoms, "get_cell") else None
     pbc = atoms.get_pbc() if hasattr(atoms, "get_pbc") else None
     text = _extended_xyz(symbols, positions, None if cell is None else _np.asarray(cell), pbc)
-    scene, messages = Scene._load_text("<ase.Atoms>", text, _keyword_options(dict(options, **{"from": "xyz"})))
-    _warn(messages)
-    return scene
+    return _scene_of_xyz("<ase.Atoms>", text, options)
+
+
+_MDANALYSIS_SOURCE = "<MDAnalysis AtomGroup>"
+
+
+def _atom_group(atoms, function):
+    """An MDAnalysis AtomGroup: the one given, or a Universe's atoms."""
+    group = getattr(atoms, "atoms", None)
+    if group is None or not hasattr(group, "positions") or not hasattr(group, "universe"):
+        raise TypeError(f"{function}: expected an MDAnalysis Universe or AtomGroup")
+    return group
+
+
+def _guessed_element(name):
+    """The element MDAnalysis guesses from an atom name (its guesser moved in MDAnalysis 2.8)."""
+    try:
+        from MDAnalysis.topology.guessers import guess_atom_element
+    except ImportError:
+        from MDAnalysis.guesser.default_guesser import DefaultGuesser
+
+        guess_atom_element = DefaultGuesser(None).guess_atom_element
+    return guess_atom_element(name)
+
+
+def _mdanalysis_xyz(group):
+    """The group's atoms at the trajectory's current frame as extended XYZ text,
+    with the columns Orb's PDB importer keeps as properties, where the topology has them."""
+    names = _np.asarray(group.names, dtype=str) if hasattr(group, "names") else None
+    elements = _np.asarray(group.elements, dtype=str) if hasattr(group, "elements") else None
+    if elements is None:
+        if names is None:
+            raise ValueError("from_mdanalysis: the topology has neither elements nor atom names")
+        elements = _np.array([_guessed_element(n) for n in names], dtype=str)
+    elif names is not None and not _np.all(_np.char.strip(elements) != ""):
+        blank = _np.char.strip(elements) == ""
+        elements = elements.astype("<U3")  # room for a guessed symbol
+        elements[blank] = [_guessed_element(n) for n in names[blank]]
+    elements = _np.where(_np.char.strip(elements) == "", "X", elements)
+
+    def words(attribute):
+        # A categorical column when every atom has a word (extended XYZ separates columns by spaces).
+        if not hasattr(group, attribute):
+            return None
+        values = _np.asarray(getattr(group, attribute), dtype=str)
+        if values.size and all(v and not any(c.isspace() for c in v) for v in values.tolist()):
+            return values
+        return None
+
+    columns = []
+    chains = words("chainIDs")
+    if chains is None:
+        chains = words("segids")
+    for name, kind, values in (("chain", "S", chains), ("residue_name", "S", words("resnames")),
+                               ("residue_number", "I", group.resids if hasattr(group, "resids") else None),
+                               ("atom_name", "S", words("names")),
+                               ("b_factor", "R", group.tempfactors if hasattr(group, "tempfactors") else None),
+                               ("occupancy", "R", group.occupancies if hasattr(group, "occupancies") else None)):
+        if values is not None:
+            columns.append((name, kind, values))
+    cell = None
+    dimensions = group.dimensions
+    if dimensions is not None and _np.all(_np.asarray(dimensions[:3]) > 0):
+        from MDAnalysis.lib.mdamath import triclinic_vectors
+
+        cell = triclinic_vectors(dimensions)
+    return _extended_xyz(elements, group.positions, cell, None, columns)
+
+
+def from_mdanalysis(atoms, **options):
+    """An MDAnalysis Universe or AtomGroup at its trajectory's current frame, as
+    Orb reads the same atoms from a molecular file: a sphere per atom coloured
+    and sized by element (MDAnalysis's elements, else its guess from the atom
+    names), the box as the cell (``cell=True`` draws it), the topology's chain,
+    residue_name, residue_number, atom_name, b_factor and occupancy as
+    properties for ``color_by``, with ``load``'s options."""
+    return _scene_of_xyz(_MDANALYSIS_SOURCE, _mdanalysis_xyz(_atom_group(atoms, "from_mdanalysis")), options)
+
+
+def frames(atoms, start=None, stop=None, step=None, **options):
+    """One Scene per frame of an MDAnalysis trajectory (``trajectory[start:stop:step]``),
+    each as ``from_mdanalysis`` makes it, but with the camera and lights of the
+    first frame, as ``orb-render --frames`` renders a trajectory: a video of
+    them holds still."""
+    group = _atom_group(atoms, "frames")
+    if "frame" in options:
+        raise TypeError("frames() got an unexpected keyword argument 'frame'")
+    first = None
+    for _ in group.universe.trajectory[start:stop:step]:
+        text = _mdanalysis_xyz(group)
+        if first is None:
+            first = text
+            yield _scene_of_xyz(_MDANALYSIS_SOURCE, text, options)
+        else:
+            # Frame 2 of (first frame, this frame): the importer keeps the first frame's view.
+            yield _scene_of_xyz(_MDANALYSIS_SOURCE, first + text, options, frame=2)

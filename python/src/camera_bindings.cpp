@@ -7,6 +7,7 @@
 
 #include "keyword_options.h"
 #include "orb/cli/camera_options.h"
+#include "orb/cli/orbit_options.h"
 #include "orb/scene/camera_orbit.h"
 #include "scene_bindings.h"
 
@@ -32,7 +33,9 @@ void set_camera(Camera& camera, const KeywordOptions& options) {
     cli::CameraOptions parsed;
     cli::add_camera_options(app, parsed);
     parse_keyword_options(app, options, "Camera");
-    cli::apply_camera_options(parsed, camera, "camera");
+    Camera changed = camera;  // a change refused leaves the camera as it was
+    cli::apply_camera_options(parsed, changed, "camera");
+    camera = changed;
 }
 
 }  // namespace
@@ -71,7 +74,17 @@ void bind_camera(py::module_& module) {
             py::arg("target"), py::arg("position") = py::none(), py::arg("up") = py::none(),
             "Looks at `target`, from `position` and with `up` when given (--look-at, --camera-position, --up).")
         .def(
-            "orbit", [](Camera& c, double degrees) { c = orbit_camera(c, degrees); }, py::arg("degrees"),
+            "orbit",
+            [](Camera& c, double degrees) {
+                // Checked as orb-render's --orbit is: NaN would leave a camera that sees nothing.
+                CLI::App app{"orb.Camera.orbit"};
+                app.set_help_flag();
+                cli::OrbitOptions orbit;
+                cli::add_orbit_options(app, orbit);
+                parse_keyword_options(app, {{"orbit", number_word(degrees)}}, "orbit");
+                c = orbit_camera(c, *orbit.degrees);
+            },
+            py::arg("degrees"),
             "Turns the camera about its target along its up vector, right-handed (orb-render --orbit's turn).")
         .def(
             "orthographic", [](Camera& c, double height) { set_camera(c, {{"orthographic", number_word(height)}}); },

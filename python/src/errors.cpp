@@ -24,7 +24,7 @@ void throw_file_not_found(const std::string& message) { throw FileNotFound(messa
 void register_errors(py::module_& module) {
     // Created once with the module and kept for its lifetime (pybind11's own pattern).
     static py::exception<InputError> error(module, "Error", PyExc_RuntimeError);
-    error.doc() = "Bad input: a scene, file or value Orb cannot use (the tools' exit status 1).";
+    error.doc() = "What ends a tool with exit status 1: a scene, file or device Orb cannot use, with the tool's message.";
     py::register_exception_translator([](std::exception_ptr thrown) {
         try {
             if (thrown) std::rethrow_exception(thrown);
@@ -38,6 +38,17 @@ void register_errors(py::module_& module) {
             PyErr_SetString(PyExc_ValueError, e.what());
         } catch (const CLI::Error& e) {
             PyErr_SetString(PyExc_ValueError, e.what());
+        } catch (const py::builtin_exception&) {
+            throw;  // pybind11's own (ValueError, KeyError, TypeError, ...): its translator raises them
+        } catch (const py::error_already_set&) {
+            throw;  // a Python exception on its way back (KeyboardInterrupt, a callback's)
+        } catch (const std::bad_alloc&) {
+            throw;  // MemoryError
+        } catch (const std::exception& e) {
+            // Whatever else a library throws (no such device, a file that
+            // cannot be written, an OpenCL failure) ends a tool with its
+            // message and exit status 1: here orb.Error, not a bare RuntimeError.
+            PyErr_SetString(error.ptr(), e.what());
         }
     });
 }

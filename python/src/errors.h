@@ -1,8 +1,10 @@
-// How the libraries' errors reach Python (docs/python.md, "Errors"): bad
-// input (orb::InputError, the tools' exit status 1) raises orb.Error, a
-// RuntimeError; a bad option or argument (the tools' usage errors, exit
-// status 2) raises ValueError; a missing file raises FileNotFoundError. The
-// message is the tools' own.
+// How the libraries' errors reach Python (docs/python.md, "Errors"): what
+// ends a tool with exit status 1 (bad input, orb::InputError; no such
+// device; a file that cannot be written) raises orb.Error, a RuntimeError;
+// a bad option or argument (the tools' usage errors, exit status 2) raises
+// ValueError; a missing file raises FileNotFoundError; pybind11's own
+// (TypeError for a wrong type, KeyError) and MemoryError stay what they are.
+// The message is the tools' own.
 #pragma once
 
 #include <pybind11/pybind11.h>

@@ -5,6 +5,7 @@
 #include "devices.h"
 #include "errors.h"
 #include "orb/cli/messages.h"
+#include "progressive_render.h"
 #include "render_bindings.h"
 #include "scene_bindings.h"
 
@@ -16,5 +17,6 @@ PYBIND11_MODULE(_orb, module) {
     orb::python::bind_camera(module);
     orb::python::bind_scene(module);
     orb::python::bind_rendering(module);
+    orb::python::bind_progressive_rendering(module);
     orb::python::bind_devices(module);
 }

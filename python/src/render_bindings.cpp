@@ -7,26 +7,18 @@
 #include <memory>
 
 #include "errors.h"
-#include "orb/exr/environment_map.h"
-#include "orb/exr/passes.h"
 #include "orb/image/color_config.h"
 #include "orb/image/passes.h"
 #include "orb/image/quantize.h"
 #include "orb/image/tonemap.h"
 #include "orb/job/render_job.h"
 #include "orb/scene/scene.h"
+#include "still_render.h"
 
 namespace py = pybind11;
 
 namespace orb::python {
 namespace {
-
-// The rendered image and its layers as the EXR holds them; numpy arrays of
-// the layers point into `layers` and keep this alive through their base.
-struct RenderedLayers {
-    job::RenderedImage image;
-    std::vector<job::Layer> layers;
-};
 
 const job::Layer& layer_named(const RenderedLayers& rendered, const std::string& name) {
     for (const job::Layer& layer : rendered.layers)
@@ -93,36 +85,14 @@ std::shared_ptr<RenderedLayers> render(const Scene& posed, int width, int height
                                        const std::vector<std::string>& passes, bool denoise,
                                        std::optional<double> target_error, std::optional<double> noise_threshold,
                                        std::optional<double> time_limit, const py::object& progress) {
-    job::StillSettings settings;
-    settings.width = width;
-    settings.height = height;
-    settings.spp = spp;
-    settings.seed = seed;
-    settings.device = device;
-    std::string list;
-    for (const std::string& pass : passes) list += (list.empty() ? "" : ",") + pass;
-    try {
-        settings.passes = exr::parse_passes(list);
-    } catch (const InputError& e) {
-        throw_value_error(e.what());
-    }
-    settings.denoise = denoise;
-    settings.target_error = target_error;
-    settings.noise_threshold = noise_threshold;
-    settings.time_limit = time_limit;
+    job::StillSettings settings = still_settings(width, height, spp, seed, device, passes, denoise, target_error,
+                                                 noise_threshold, time_limit);
     std::vector<std::string> warnings;
     settings.on_message = [&warnings](job::MessageKind kind, const std::string& message) {
         if (kind != job::MessageKind::Info) warnings.push_back(message);
     };
-
-    // The environment map's texels, as orb-render loads them after reading a scene.
-    const Scene* scene = &posed;
     Scene with_map;
-    if (posed.environment.kind == EnvironmentKind::Map && !posed.environment.image) {
-        with_map = posed;
-        exr::load_environment_map(with_map, ".", "scene");
-        scene = &with_map;
-    }
+    const Scene* scene = &scene_to_render(posed, with_map);
 
     // Ctrl-C: the render stops after the pass in flight, then KeyboardInterrupt.
     bool interrupted = false;
@@ -143,12 +113,12 @@ std::shared_ptr<RenderedLayers> render(const Scene& posed, int width, int height
             return false;
         }
     };
-    auto rendered = std::make_shared<RenderedLayers>();
+    job::RenderedImage image;
     {
         py::gil_scoped_release released;
-        rendered->image = job::render_still(*scene, settings, on_pass);
-        rendered->layers = rendered->image.layers();
+        image = job::render_still(*scene, settings, on_pass);
     }
+    std::shared_ptr<RenderedLayers> rendered = with_layers(std::move(image));
     py::module_ warnings_module = py::module_::import("warnings");
     for (const std::string& message : warnings) warnings_module.attr("warn")(message);
     if (interrupted) {
@@ -181,6 +151,7 @@ void bind_rendering(py::module_& module) {
             "A layer as a (H, W, C) float32 array that shares the image's memory.")
         .def("channels", [](const RenderedLayers& r, const std::string& name) { return layer_named(r, name).channels; })
         .def_property_readonly("stopped", [](const RenderedLayers& r) { return r.image.stopped; })
+        .def_property_readonly("final", [](const RenderedLayers& r) { return !r.image.snapshot; })
         .def_property_readonly("spp", [](const RenderedLayers& r) { return r.image.stats.spp; })
         .def_property_readonly("width", [](const RenderedLayers& r) { return r.image.film.width; })
         .def_property_readonly("height", [](const RenderedLayers& r) { return r.image.film.height; })

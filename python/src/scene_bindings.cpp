@@ -5,9 +5,13 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <filesystem>
+#include <sstream>
+
 #include "errors.h"
 #include "keyword_options.h"
 #include "orb/cli/environment_options.h"
+#include "orb/cli/number_checks.h"
 #include "orb/scene/error.h"
 #include "orb/scene/scene_json.h"
 #include "scene_from_arrays.h"
@@ -32,6 +36,16 @@ py::object environment_value(const Environment& environment) {
     return py::none();
 }
 
+// An --environment value that is not a radiance (numbers) names a map: a
+// missing one is FileNotFoundError, as for orb.load's file.
+bool names_a_missing_file(const std::string& value) {
+    bool numbers = true;
+    std::stringstream pieces(value);
+    for (std::string piece; std::getline(pieces, piece, ',');) numbers = numbers && cli::parse_number(piece);
+    std::error_code ignored;
+    return !numbers && !std::filesystem::exists(value, ignored);
+}
+
 // --environment VALUE with its intensity and rotation, checked as the tools check them.
 void set_environment(Scene& scene, const KeywordOptions& options) {
     CLI::App app{"orb.Scene.set_environment"};
@@ -43,7 +57,12 @@ void set_environment(Scene& scene, const KeywordOptions& options) {
         scene.environment = {};
         return;
     }
-    scene.environment = *cli::chosen_environment(choice, ".");
+    try {
+        scene.environment = *cli::chosen_environment(choice, ".");
+    } catch (const InputError& e) {
+        if (names_a_missing_file(choice.value)) throw_file_not_found(e.what());
+        throw;
+    }
 }
 
 // An emissive sphere of its own material, with empty entries in the
@@ -146,7 +165,7 @@ void bind_scene(py::module_& module) {
             [](Scene& s, int v) { set_render_setting(s, &RenderSettings::max_depth, v); })
         .def("_save", &save_scene)
         .def("to_json", &write_scene_json, "The canonical Orb JSON text.")
-        .def("__eq__", [](const Scene& a, const Scene& b) { return a == b; })
+        .def("__eq__", [](const Scene& a, const Scene& b) { return a == b; }, py::is_operator())
         .def("__repr__", [](const Scene& s) {
             return "<orb.Scene: " + std::to_string(s.spheres.size()) + " spheres, " +
                    std::to_string(s.materials.size()) + " materials>";

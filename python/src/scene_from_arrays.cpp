@@ -67,26 +67,39 @@ std::vector<SphereProperty> properties_of(const py::list& properties, long count
     return result;
 }
 
+// A material key's value as `T`, else ValueError naming the key and what it takes.
+template <typename T>
+T material_value(const py::handle& value, const std::string& key, const char* expected) {
+    try {
+        return value.cast<T>();
+    } catch (const py::cast_error&) {
+        throw_value_error("material['" + key + "']: expected " + expected + ", got " +
+                          std::string(py::repr(value)));
+    }
+}
+
 // The shared material as a dict of the scene format's keys (docs/scene-format.md).
 Material material_of(const py::dict& keys, Material material) {
     for (const auto& [key_value, value] : keys) {
+        if (!py::isinstance<py::str>(key_value))
+            throw_value_error("material: expected str keys, got " + std::string(py::repr(key_value)));
         const std::string key = key_value.cast<std::string>();
         if (key == "type") {
-            const std::string type = value.cast<std::string>();
+            const std::string type = material_value<std::string>(value, key, "a material type's name");
             bool known = false;
             for (MaterialType candidate : kMaterialTypes)
                 if (type == material_type_name(candidate)) material.type = candidate, known = true;
             if (!known) throw_value_error("material['type']: unknown material type '" + type + "'");
         } else if (key == "color") {
-            material.color = value.cast<Vec3>();
+            material.color = material_value<Vec3>(value, key, "(R, G, B) numbers");
         } else if (key == "emission") {
-            material.emission = value.cast<Vec3>();
+            material.emission = material_value<Vec3>(value, key, "(R, G, B) numbers");
         } else if (key == "ior") {
-            material.ior = value.cast<double>();
+            material.ior = material_value<double>(value, key, "a number");
         } else if (key == "roughness") {
-            material.roughness = value.cast<double>();
+            material.roughness = material_value<double>(value, key, "a number");
         } else if (key == "metallic") {
-            material.metallic = value.cast<double>();
+            material.metallic = material_value<double>(value, key, "a number");
         } else {
             throw_value_error("material: unknown key '" + key +
                               "' (expected type, color, emission, ior, roughness, metallic)");

@@ -112,7 +112,14 @@ void set_camera_options(Scene& scene, const KeywordOptions& options) {
     cli::CameraOptions camera;
     cli::add_camera_options(app, camera);
     parse_keyword_options(app, options, "set_camera");
-    cli::apply_camera_options(camera, scene, scene.render.width, scene.render.height, "set_camera");
+    // A change refused leaves the scene as it was (the options change its camera alone).
+    const Camera before = scene.camera;
+    try {
+        cli::apply_camera_options(camera, scene, scene.render.width, scene.render.height, "set_camera");
+    } catch (...) {
+        scene.camera = before;
+        throw;
+    }
 }
 
 }  // namespace orb::python

@@ -112,6 +112,39 @@ TEST_F(RenderStill, TheCallbackStopsItAfterAPassAndSeesTheFilm) {
     EXPECT_TRUE(image.options.exact_sums);  // stopped short: continuable bit for bit
 }
 
+TEST_F(RenderStill, SnapshotsComeBetweenPassesAndLeaveTheFinalImageAsItWas) {
+    StillSettings settings;
+    settings.width = 8;
+    settings.height = 6;
+    settings.spp = 64;
+    const RenderedImage plain = render_still(orb::test::small_scene(), settings);
+    std::vector<RenderedImage> snapshots;
+    int passes = 0;
+    settings.snapshot_passes = 1;
+    settings.on_snapshot = [&](RenderedImage&& snapshot) { snapshots.push_back(std::move(snapshot)); };
+    const RenderedImage image = render_still(orb::test::small_scene(), settings, [&](const Progress&, const PreviewAccess&) {
+        ++passes;
+        return true;
+    });
+    EXPECT_TRUE(image.layers().front().pixels == plain.layers().front().pixels) << "snapshots changed the final image";
+    EXPECT_EQ(image.film.samples_per_pixel, 64u);
+    EXPECT_FALSE(image.snapshot);
+    // One after every pass but the last, whose image is the result.
+    ASSERT_EQ(static_cast<int>(snapshots.size()), passes - 1);
+    ASSERT_FALSE(snapshots.empty());
+    EXPECT_EQ(snapshots.front().film.samples_per_pixel, 1u);  // the first pass is one sample
+    for (std::size_t i = 0; i < snapshots.size(); ++i) {
+        const RenderedImage& snapshot = snapshots[i];
+        EXPECT_TRUE(snapshot.snapshot && !snapshot.stopped);
+        EXPECT_EQ(snapshot.stats.spp, snapshot.film.samples_per_pixel);
+        EXPECT_LT(snapshot.film.samples_per_pixel, 64u);
+        if (i > 0) {
+            EXPECT_GT(snapshot.film.samples_per_pixel, snapshots[i - 1].film.samples_per_pixel);
+        }
+        EXPECT_EQ(snapshot.layers().front().name, "beauty");
+    }
+}
+
 TEST_F(RenderStill, ACancelFlagSetBeforehandStopsItBeforeAnyImage) {
     StillSettings settings;
     settings.width = 8;

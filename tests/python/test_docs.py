@@ -15,7 +15,7 @@ def python_blocks(document):
 
 def scaled_down(block):
     """Renders run at 64 x 48 with 2 samples, as the shell blocks of the docs run scaled down."""
-    return re.sub(r"\.render\(\d+, \d+, spp=\d+", ".render(64, 48, spp=2", block)
+    return re.sub(r"\.render(_progressive)?\(\d+, \d+, spp=\d+", r".render\1(64, 48, spp=2", block)
 
 
 @pytest.mark.parametrize("document", ["docs/python.md", "README.md"])

@@ -91,7 +91,7 @@ def test_bad_settings_raise(cornell):
         cornell.render(0, 8, 1)
     with pytest.raises(ValueError, match="^--spp: Value -1 not in range 1 to 2147483647$"):
         cornell.render(8, 8, -1)
-    with pytest.raises(RuntimeError, match="no OpenCL device with index 7; the devices are:"):
+    with pytest.raises(orb.Error, match="no OpenCL device with index 7; the devices are:"):
         cornell.render(8, 8, 1, device="7")
 
 

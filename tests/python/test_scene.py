@@ -74,7 +74,7 @@ def test_environment_colour_map_and_none(cloud, scenes_dir, tmp_path):
     assert orb.load(tmp_path / "lit.json").environment["map"] == cloud.environment["map"]
     cloud.set_environment(None)
     assert cloud.environment is None
-    with pytest.raises(orb.Error, match="--environment missing.exr: no such file"):
+    with pytest.raises(FileNotFoundError, match="--environment missing.exr: no such file"):
         cloud.set_environment("missing.exr")
     with pytest.raises(orb.Error, match="radiance must be finite"):
         cloud.set_environment((-1, 0, 0))

@@ -111,6 +111,20 @@ TEST_F(LoopTest, CheckpointsAfterTheFirstPassThenEveryInterval) {
     EXPECT_LT(checkpoints.back().spp, limits.target_spp);
 }
 
+TEST_F(LoopTest, CheckpointsEveryGivenNumberOfPasses) {
+    fake::control().suggested = 5;
+    fake::FakeRenderer renderer = make_renderer();
+    ProgressiveLimits limits;
+    limits.target_spp = 1 + 5 * 12;  // 13 passes
+    limits.checkpoint_passes = 4;
+    std::vector<int> passes;
+    ProgressiveCallbacks callbacks;
+    callbacks.on_checkpoint = [&](const ProgressState& s) { passes.push_back(s.pass); };
+    render_progressively(renderer, limits, callbacks, never);
+    // The first pass's image, then every fourth pass while more follow (none after the last, pass 13).
+    EXPECT_EQ(passes, (std::vector<int>{1, 5, 9}));
+}
+
 TEST_F(LoopTest, ReportsSamplesPerSecondOfThisRun) {
     fake::control().seconds_per_sample = 0.005;
     fake::control().suggested = 10;

@@ -98,6 +98,7 @@ struct FilmOutcome {
 struct FilmRun {
     std::optional<double> time_limit;  // --time SECONDS
     std::optional<double> checkpoint;  // --checkpoint SECONDS: a checkpoint is due this often
+    int checkpoint_passes = 0;         // > 0: a checkpoint every this many passes instead (a live preview)
     // The caller's stop flag (orb-render's signal handler sets it), checked
     // between passes: the pass in flight completes. Null: never stopped.
     const std::atomic<bool>* cancel = nullptr;

@@ -27,6 +27,8 @@
 
 namespace orb::job {
 
+struct RenderedImage;
+
 // One image of an in-memory scene: what orb-render's options say of a
 // still, with orb-render's defaults.
 struct StillSettings {
@@ -55,6 +57,16 @@ struct StillSettings {
     std::string label = "<memory>";
     // Warnings and notes (a slow kernel build, sums out of range); none: dropped.
     MessageSink on_message;
+    // Snapshots while rendering, for a live preview of the converging image:
+    // the image so far (the mean of the samples drawn, taken between passes
+    // as orb-render --checkpoint takes its checkpoints), handed over after
+    // the first pass, then every `snapshot_seconds` seconds or every
+    // `snapshot_passes` passes (neither: after every pass) while more passes
+    // follow; the render's end is render_still's result, never a snapshot.
+    // Called on the rendering thread, the devices idle until it returns.
+    std::function<void(RenderedImage&& snapshot)> on_snapshot;
+    double snapshot_seconds = 0;
+    int snapshot_passes = 0;
 };
 
 // A render's progress after a pass (as orb-render's progress line shows it).
@@ -103,6 +115,7 @@ struct RenderedImage {
     exr::ExrWriteOptions options;  // layers, HALF, compression (orb-render's default, ZIP) and exact sums
     std::shared_ptr<denoise::Denoiser> denoiser;  // --denoise: computes the `denoised` layer when encoded
     bool stopped = false;  // stopped short (the callback, the cancel flag or the time limit), not finished
+    bool snapshot = false; // StillSettings::on_snapshot's: the film while it rendered, more passes following
     RunStats stats;        // what orb-render --stats-json says of it (no output path)
 
     // Each layer as the EXR holds it: beauty, the requested passes, and

@@ -35,7 +35,8 @@ public:
 struct ProgressiveLimits {
     std::uint64_t target_spp = 64;   // total samples per pixel, counting resumed ones
     double max_seconds = 0;          // 0 = no time limit
-    double checkpoint_seconds = 0;   // 0 = no checkpoints
+    double checkpoint_seconds = 0;   // 0 = no checkpoints by time
+    int checkpoint_passes = 0;       // > 0: a checkpoint every this many passes instead (a live preview's pace)
     PassGate* gate = nullptr;        // adaptive sampling, or none
 };
 
