@@ -1,18 +1,10 @@
 // Ray-sphere intersection: the spheres outside the BVH (huge ones, or all of
 // a small scene) in a linear loop over packets of four, then the 4-wide BVH
-// (librender/src/sphere_bvh.h), whose leaves are one packet each.
-//
-// Robustness without epsilons:
-//  * The discriminant is formed as r^2 - |oc - (oc.d) d|^2 (squared distance
-//    from the centre to the ray's closest point), which keeps its precision
-//    for the radius-1e4 "walls" of the Cornell box (Haines et al., "Precision
-//    improvements for ray/sphere intersection", Ray Tracing Gems, 2019).
-//  * A ray leaving the surface of sphere `self` never re-hits that surface at
-//    its start: for `self` only the far root counts, and only when the ray
-//    heads into the sphere (oc.d < 0). Other spheres need no offset.
-//  * BVH boxes are built to contain each sphere as stored here (float centre,
-//    float radius squared), so the box test never culls a hit the sphere test
-//    would find.
+// (librender/src/sphere_bvh.h), whose leaves are one packet each. The test
+// of a ray against a sphere is one text (ORB_DEFINE_SPHERE_DISTANCE, below)
+// in three forms: one ray and one sphere, one ray and a packet's four
+// spheres (CPUs' traversal), each lane's ray and one sphere (intersect_lanes.cl);
+// the tree is walked by one loop (traverse_tree) for every device.
 
 #define ORB_NO_HIT 1e30f
 // The host builds the program with ORB_BVH 0 for a scene without a tree
@@ -33,6 +25,58 @@
 #define ORB_MAX(a, b) select(b, a, isgreater(a, b))
 #endif
 
+// The ray-sphere test, the one home of its robustness rules. Distance along
+// the ray (o, d) to the sphere (centre, radius2 the radius squared), or
+// ORB_NO_HIT where the ray misses it; is_self: the sphere is the one the ray
+// leaves (the path's `self`), as a comparison's result. Rules, with no
+// epsilon anywhere:
+//  * d is of unit length, so b = oc.d is where along the ray it passes the
+//    centre closest (oc = o - centre).
+//  * The discriminant is r^2 - |oc - b d|^2, the squared radius less the
+//    squared distance from the centre to the ray's closest point, not
+//    b^2 - (|oc|^2 - r^2): it keeps its precision for the radius-1e4 "walls"
+//    of the Cornell box (Haines et al., "Precision improvements for
+//    ray/sphere intersection", Ray Tracing Gems, 2019). Below 0: a miss; the
+//    square root is taken of it clamped at 0, so that no lane's NaN matters.
+//  * Which root: the near one, -b - sqrt(disc), unless it is not ahead
+//    (t <= 0: the origin is inside the sphere or past it); then the far one,
+//    -b + sqrt(disc). A hit is ahead: t > 0.
+//  * A ray leaving the surface of sphere `self` never re-hits that surface
+//    at its start: for `self` only the far root counts, and only when the
+//    ray heads into the sphere (b < 0); leaving it outwards misses it. Other
+//    spheres need no offset.
+//  * BVH boxes are built to contain each sphere as stored (float centre,
+//    float radius squared), so the box test never culls a hit this test
+//    would find.
+// The forms: scalar (F float, I int, V3 float3 under f3_), a packet of four
+// spheres (float4, int4, packet_v3 under p4_), the lanes (lfloat, lint, lv3
+// under lv3_). All are written with select, & and |, which mean the same for
+// a scalar comparison (1) and a vector one (-1 per lane); a scalar ! is 0 or
+// 1 and a vector's 0 or -1, so it is right in both.
+// Rounding: -cl-mad-enable lets the compiler fuse a multiply and an add only
+// within one expression, so each step the text names is one expression in
+// every form (P##_sub_scaled is oc - d b, P##_dot a sum of products), never
+// a composition of helpers: the three forms then round alike, as the three
+// hand-written copies this text replaced did (images bit for bit the same).
+// Inlined copies may still round differently in different programs, so what
+// must not depend on the program (the centre ray's depth) takes the scalar
+// form of the hit sphere (sphere_distance).
+#define ORB_DEFINE_SPHERE_DISTANCE(Q, F, I, V3, P, name)                                      \
+    Q F name(V3 o, V3 d, V3 centre, F radius2, I is_self)                                      \
+    {                                                                                          \
+        const V3 oc = P##_sub(o, centre);                                                      \
+        const F b = P##_dot(oc, d);                                                            \
+        const V3 f = P##_sub_scaled(oc, d, b);                                                 \
+        const F disc = radius2 - P##_dot(f, f);                                                \
+        const F s = sqrt(ORB_MAX(disc, (F)(0.0f)));                                            \
+        const F t_near = -b - s;                                                               \
+        const F t = select(t_near, -b + s, is_self | (t_near <= (F)(0.0f)));                   \
+        const I hit = (disc >= (F)(0.0f)) & (t > (F)(0.0f)) & !(is_self & (b >= (F)(0.0f)));   \
+        return select((F)(ORB_NO_HIT), t, hit);                                                \
+    }
+
+ORB_DEFINE_SPHERE_DISTANCE(inline, float, int, float3, f3, ray_sphere_distance)
+
 typedef struct {
     float t;  // distance along the (unit) ray direction
     int id;   // sphere slot (index into the spheres table), -1 for a miss
@@ -40,27 +84,22 @@ typedef struct {
 
 inline float packet_lane(SCENE_MEM const float4* v, int lane) { return ((SCENE_MEM const float*)v)[lane]; }
 
-// Distance along the ray to lane `lane` of a packet (sphere slot `id`), by
-// the rules above, or ORB_NO_HIT when the ray misses it (padding lanes too).
-inline float lane_distance(SCENE_MEM const SpherePacket* packet, int lane, int id, float3 o, float3 d, int self)
+// Distance along the ray to lane `lane` of a packet (sphere slot `id`), or
+// ORB_NO_HIT when the ray misses it (padding lanes too).
+inline float packet_sphere_distance(SCENE_MEM const SpherePacket* packet, int lane, int id, float3 o, float3 d,
+                                    int self)
 {
-    const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
+    const float3 centre = (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
                                    packet_lane(&packet->centre_z, lane));
-    const float b = dot(oc, d);
-    const float3 f = oc - b * d;
-    const float disc = packet_lane(&packet->radius2, lane) - dot(f, f);
-    if (disc < 0.0f) return ORB_NO_HIT;
-    const float s = sqrt(disc);
-    const bool is_self = id == self;
-    if (is_self && b >= 0.0f) return ORB_NO_HIT;
-    const float t_near = -b - s;
-    const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
-    return t > 0.0f ? t : ORB_NO_HIT;
+    return ray_sphere_distance(o, d, centre, packet_lane(&packet->radius2, lane), id == self);
 }
 
 #if !ORB_SCALAR_TRAVERSAL
 // Four spheres per step in SIMD lanes: CPUs execute the float4 arithmetic as
 // one vector instruction each.
+ORB_DEFINE_V3_OF(inline __attribute__((always_inline)), float4, packet_v3, p4)
+ORB_DEFINE_SPHERE_DISTANCE(inline __attribute__((always_inline)), float4, int4, packet_v3, p4, ray_spheres_distance)
+
 typedef struct {
     float4 t;
     int4 id;
@@ -72,34 +111,20 @@ inline void best_init(BestHit* best)
     best->id = (int4)(-1);
 }
 
-// The four lanes' hit distances along the ray (the near root, or the far one
-// from inside or for `self`), and in *hits which lanes are hit at all.
-inline float4 packet_roots(SCENE_MEM const SpherePacket* packet, int4 id, float3 o, float3 d, int self, int4* hits)
+// The four lanes' distances along the ray (spheres id), ORB_NO_HIT where missed.
+inline float4 packet_distances(SCENE_MEM const SpherePacket* packet, int4 id, float3 o, float3 d, int self)
 {
-    const float4 ocx = (float4)(o.x) - packet->centre_x;
-    const float4 ocy = (float4)(o.y) - packet->centre_y;
-    const float4 ocz = (float4)(o.z) - packet->centre_z;
-    const float4 b = ocx * d.x + ocy * d.y + ocz * d.z;
-    const float4 fx = ocx - b * d.x;
-    const float4 fy = ocy - b * d.y;
-    const float4 fz = ocz - b * d.z;
-    const float4 disc = packet->radius2 - (fx * fx + fy * fy + fz * fz);
-    const float4 s = sqrt(ORB_MAX(disc, (float4)(0.0f)));
-    const float4 t_near = -b - s;
-    const int4 is_self = id == (int4)(self);
-    const float4 t = select(t_near, -b + s, is_self | (t_near <= (float4)(0.0f)));
-    *hits = (disc >= (float4)(0.0f)) & (t > (float4)(0.0f)) & ~(is_self & (b >= (float4)(0.0f)));
-    return t;
+    const packet_v3 centre = p4_make(packet->centre_x, packet->centre_y, packet->centre_z);
+    return ray_spheres_distance(p4_splat(o), p4_splat(d), centre, packet->radius2, id == (int4)(self));
 }
 
 inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self)
 {
     const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
-    int4 hits;
-    const float4 t = packet_roots(packet, id, o, d, self, &hits);
-    const int4 valid = hits & (t < best->t);
-    best->t = select(best->t, t, valid);
-    best->id = select(best->id, id, valid);
+    const float4 t = packet_distances(packet, id, o, d, self);
+    const int4 closer = t < best->t;
+    best->t = select(best->t, t, closer);
+    best->id = select(best->id, id, closer);
 }
 
 // Whether a sphere of the packet other than `light` is hit before t_max.
@@ -107,9 +132,8 @@ inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, fl
                           float t_max)
 {
     const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
-    int4 hits;
-    const float4 t = packet_roots(packet, id, o, d, self, &hits);
-    return any(hits & (t < (float4)(t_max)) & (id != (int4)(light)));
+    const float4 t = packet_distances(packet, id, o, d, self);
+    return any((t < (float4)(t_max)) & (id != (int4)(light)));
 }
 
 inline float best_distance(const BestHit* best)
@@ -131,7 +155,7 @@ inline Hit best_hit(const BestHit* best)
 #else
 // One sphere per step, for GPUs: a GPU thread executes float4 arithmetic one
 // lane at a time, so packets would only add the padding lanes' work. Reads
-// the same packets lane by lane; same roots and rules as the packet version.
+// the same packets lane by lane, with the scalar form of the same test.
 typedef Hit BestHit;
 
 inline void best_init(BestHit* best)
@@ -144,7 +168,7 @@ inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int
 {
     for (int lane = 0; lane < 4; ++lane) {
         if (packet_lane(&packet->radius2, lane) < 0.0f) break;  // padding lanes come last
-        const float t = lane_distance(packet, lane, first_id + lane, o, d, self);
+        const float t = packet_sphere_distance(packet, lane, first_id + lane, o, d, self);
         if (t < best->t) {
             best->t = t;
             best->id = first_id + lane;
@@ -157,7 +181,8 @@ inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, fl
 {
     for (int lane = 0; lane < 4; ++lane) {
         if (packet_lane(&packet->radius2, lane) < 0.0f) break;  // padding lanes come last
-        if (first_id + lane != light && lane_distance(packet, lane, first_id + lane, o, d, self) < t_max) return true;
+        if (first_id + lane != light && packet_sphere_distance(packet, lane, first_id + lane, o, d, self) < t_max)
+            return true;
     }
     return false;
 }
@@ -378,69 +403,21 @@ inline int pop_deferred(const BestHit* best, const int* children, const float* e
     return *top > 0 ? children[--*top] : ORB_TRAVERSAL_DONE;
 }
 
-#if ORB_WARP_VOTE
-// Speculative traversal (Aila and Laine, "Understanding the Efficiency of
-// Ray Traversal on GPUs", 2009), where a warp vote exists (warp_vote.cl). A
-// lane that reaches a leaf postpones it and goes on through the tree's inner
-// nodes until every converged lane of its warp holds a leaf; then the warp
-// tests leaves together, each lane its postponed one and, if its traversal
-// stands on a leaf too, that one. Nsight Compute showed the ordered
-// traversal testing leaves with 2 to 3 of a warp's 32 lanes at a million
-// spheres; this gives 4% more samples/s on an H100 at 1 k to 1 M spheres
-// (docs/design/speculative-traversal.md). The hits are the same:
-// visits made while a postponed leaf waits only cull less.
-
-inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,
-                          const bool any_hit, int light, float t_light)
-{
-    int stack_child[ORB_BVH_STACK_SIZE + 2];
-    float stack_entry[ORB_BVH_STACK_SIZE + 2];  // closest hits only
-    int top = 0;
-    int current = 0;
-    int leaf = 0;  // the postponed leaf (< 0), or 0 for none
-    ORB_BVH_VISITS_BEGIN
-    for (;;) {
-        while (current >= 0 && current != ORB_TRAVERSAL_DONE) {
-            ORB_BVH_VISIT
-            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)
-            int4 child;
-            float4 entry;
-            const int count =
-                hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light), &child, &entry);
-            if (count > 0) {
-                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_STACK_LIMIT, "stack top", top + count - 1,
-                               ORB_BVH_STACK_LIMIT, return true)
-                top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
-                current = child.x;
-            } else {
-                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-            }
-            if (current < 0 && leaf == 0) {
-                leaf = current;
-                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-            }
-            if (!warp_any(leaf == 0)) break;
-        }
-        if (leaf == 0 && current < 0) {
-            leaf = current;
-            current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-        }
-        while (leaf < 0) {
-            ORB_BVH_VISIT
-            const int packet = -1 - leaf;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)
-            if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
-            leaf = 0;
-            if (current < 0) {
-                leaf = current;
-                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-            }
-        }
-        if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
-    }
-}
-#else
-// Ordered traversal: the nearest hit child next, the others deferred.
+// The traversal: nearest hit child first, the others deferred on a stack.
+// Where a warp vote exists (ORB_WARP_VOTE, warp_vote.cl: NVIDIA), it
+// speculates (Aila and Laine, "Understanding the Efficiency of Ray Traversal
+// on GPUs", 2009): a lane that reaches a leaf postpones it and goes on
+// through the tree's inner nodes until every converged lane of its warp
+// holds a leaf; then the warp tests leaves together, each lane its postponed
+// one and, if its traversal stands on leaves too, those. Nsight Compute
+// showed the ordered traversal testing leaves with 2 to 3 of a warp's 32
+// lanes at a million spheres; speculation gave 4% more samples/s on an H100
+// at 1 k to 1 M spheres (docs/design/speculative-traversal.md). Without a
+// vote nothing is postponed and the same loop is the ordered traversal:
+// each leaf is tested as soon as it is reached. Either way the next deferred
+// child is popped after a leaf's test, so that it is culled by what the
+// test found; visits made while a postponed leaf waits only cull less, so
+// the hits are the same.
 inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,
                           const bool any_hit, int light, float t_light)
 {
@@ -449,14 +426,13 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
     float stack_entry[ORB_BVH_STACK_SIZE + 2];  // closest hits only
     int top = 0;
     int current = 0;
+    int postponed = 0;  // speculation's leaf waiting for the warp (< 0), or 0 for none
     ORB_BVH_VISITS_BEGIN
     for (;;) {
-        ORB_BVH_VISIT
-        if (current < 0) {
-            const int packet = -1 - current;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)
-            if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
-        } else {
+        // Inner nodes, until the ray stands on a leaf (speculating: until
+        // every lane of the warp holds one) or the stack is empty.
+        while (current >= 0 && current != ORB_TRAVERSAL_DONE) {
+            ORB_BVH_VISIT
             ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)
             const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);
             if (run.x >= 0) {
@@ -465,6 +441,7 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
                 for (int k = run.x; k < run.x + run.y; ++k)
                     if (leaf_ends_search(best, scene, k, o, d, self, any_hit, light, t_light))
                         ORB_TRAVERSAL_RETURN(true)
+                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
             } else {
                 int4 child;
                 float4 entry;
@@ -475,15 +452,32 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
                                    ORB_BVH_STACK_LIMIT, return true)
                     top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
                     current = child.x;
-                    continue;
+                } else {
+                    current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
                 }
             }
+#if ORB_WARP_VOTE
+            if (current < 0 && postponed == 0) {
+                postponed = current;
+                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
+            }
+            if (!warp_any(postponed == 0)) break;
+#endif
         }
-        current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
+        // Leaves: the postponed one first, then each the traversal stands on.
+        while (postponed < 0 || current < 0) {
+            const bool was_postponed = postponed < 0;
+            const int leaf = was_postponed ? postponed : current;
+            ORB_BVH_VISIT
+            const int packet = -1 - leaf;
+            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)
+            if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
+            if (was_postponed) postponed = 0;
+            else current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
+        }
         if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
     }
 }
-#endif  // ORB_WARP_VOTE
 
 // Closest hit in the tree, kept in `best`.
 inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
@@ -510,12 +504,12 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
     return best_hit(&best);
 }
 
-// Distance along the ray to sphere slot `id` by the same test as above, or
-// ORB_NO_HIT when the ray misses it.
+// Distance along the ray to sphere slot `id` by the scalar form of the
+// test, or ORB_NO_HIT when the ray misses it.
 inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d, int self)
 {
     ORB_BVH_EXPECT(id >= 0 && id < scene->sphere_count, "light sphere", id, scene->sphere_count, return ORB_NO_HIT)
-    return lane_distance(&scene->packets[id >> 2], id & 3, id, o, d, self);
+    return packet_sphere_distance(&scene->packets[id >> 2], id & 3, id, o, d, self);
 }
 
 // Shadow rays: whether sphere `light` is the first thing along the ray. Any
