@@ -36,8 +36,8 @@
 //    squared distance from the centre to the ray's closest point, not
 //    b^2 - (|oc|^2 - r^2): it keeps its precision for the radius-1e4 "walls"
 //    of the Cornell box (Haines et al., "Precision improvements for
-//    ray/sphere intersection", Ray Tracing Gems, 2019). Below 0: a miss; the
-//    square root is taken of it clamped at 0, so that no lane's NaN matters.
+//    ray/sphere intersection", Ray Tracing Gems, 2019). Not at least 0
+//    (below 0, or NaN): the ray passes the sphere by, a miss.
 //  * Which root: the near one, -b - sqrt(disc), unless it is not ahead
 //    (t <= 0: the origin is inside the sphere or past it); then the far one,
 //    -b + sqrt(disc). A hit is ahead: t > 0.
@@ -53,29 +53,48 @@
 // under lv3_). All are written with select, & and |, which mean the same for
 // a scalar comparison (1) and a vector one (-1 per lane); a scalar ! is 0 or
 // 1 and a vector's 0 or -1, so it is right in both.
+// How a form leaves on a miss (MISS, below): the scalar form returns as
+// soon as the miss is known, as the hand-written copy it replaced did, so
+// that a GPU thread pays no square root and no select for a sphere it
+// misses (without the returns the program ran 17% slower on an H200 at
+// 100 k spheres); its root is then of a discriminant known not negative.
+// The vector forms do not branch: every lane computes everything, the root
+// of the discriminant clamped at 0 (so that no lane's NaN matters), and the
+// misses are masked at the end.
+// After the scalar form's returns the compiler knows the mask's miss terms
+// are 0 (the same values it branched on), so the mask costs it nothing.
 // Rounding: -cl-mad-enable lets the compiler fuse a multiply and an add only
 // within one expression, so each step the text names is one expression in
-// every form (P##_sub_scaled is oc - d b, P##_dot a sum of products), never
+// every form (P##_sub_scaled is oc - b d, P##_dot a sum of products), never
 // a composition of helpers: the three forms then round alike, as the three
 // hand-written copies this text replaced did (images bit for bit the same).
 // Inlined copies may still round differently in different programs, so what
 // must not depend on the program (the centre ray's depth) takes the scalar
 // form of the hit sphere (sphere_distance).
-#define ORB_DEFINE_SPHERE_DISTANCE(Q, F, I, V3, P, name)                                      \
+#define ORB_MISS_RETURNS_IF(miss) \
+    if (miss) return ORB_NO_HIT;
+#define ORB_MISS_RETURNS_ROOT(F, disc) sqrt(disc)
+#define ORB_MISS_MASKED_IF(miss)
+#define ORB_MISS_MASKED_ROOT(F, disc) sqrt(ORB_MAX(disc, (F)(0.0f)))
+#define ORB_DEFINE_SPHERE_DISTANCE(Q, F, I, V3, P, MISS, name)                                \
     Q F name(V3 o, V3 d, V3 centre, F radius2, I is_self)                                      \
     {                                                                                          \
         const V3 oc = P##_sub(o, centre);                                                      \
         const F b = P##_dot(oc, d);                                                            \
         const V3 f = P##_sub_scaled(oc, d, b);                                                 \
         const F disc = radius2 - P##_dot(f, f);                                                \
-        const F s = sqrt(ORB_MAX(disc, (F)(0.0f)));                                            \
+        const I passes_by = !(disc >= (F)(0.0f));                                              \
+        MISS##_IF(passes_by)                                                                   \
+        const F s = MISS##_ROOT(F, disc);                                                      \
+        const I leaves_self = is_self & (b >= (F)(0.0f));                                      \
+        MISS##_IF(leaves_self)                                                                 \
         const F t_near = -b - s;                                                               \
         const F t = select(t_near, -b + s, is_self | (t_near <= (F)(0.0f)));                   \
-        const I hit = (disc >= (F)(0.0f)) & (t > (F)(0.0f)) & !(is_self & (b >= (F)(0.0f)));   \
+        const I hit = !passes_by & (t > (F)(0.0f)) & !leaves_self;                             \
         return select((F)(ORB_NO_HIT), t, hit);                                                \
     }
 
-ORB_DEFINE_SPHERE_DISTANCE(inline, float, int, float3, f3, ray_sphere_distance)
+ORB_DEFINE_SPHERE_DISTANCE(inline, float, int, float3, f3, ORB_MISS_RETURNS, ray_sphere_distance)
 
 typedef struct {
     float t;  // distance along the (unit) ray direction
@@ -98,7 +117,8 @@ inline float packet_sphere_distance(SCENE_MEM const SpherePacket* packet, int la
 // Four spheres per step in SIMD lanes: CPUs execute the float4 arithmetic as
 // one vector instruction each.
 ORB_DEFINE_V3_OF(inline __attribute__((always_inline)), float4, packet_v3, p4)
-ORB_DEFINE_SPHERE_DISTANCE(inline __attribute__((always_inline)), float4, int4, packet_v3, p4, ray_spheres_distance)
+ORB_DEFINE_SPHERE_DISTANCE(inline __attribute__((always_inline)), float4, int4, packet_v3, p4, ORB_MISS_MASKED,
+                           ray_spheres_distance)
 
 typedef struct {
     float4 t;
@@ -413,11 +433,54 @@ inline int pop_deferred(const BestHit* best, const int* children, const float* e
 // showed the ordered traversal testing leaves with 2 to 3 of a warp's 32
 // lanes at a million spheres; speculation gave 4% more samples/s on an H100
 // at 1 k to 1 M spheres (docs/design/speculative-traversal.md). Without a
-// vote nothing is postponed and the same loop is the ordered traversal:
-// each leaf is tested as soon as it is reached. Either way the next deferred
-// child is popped after a leaf's test, so that it is culled by what the
-// test found; visits made while a postponed leaf waits only cull less, so
-// the hits are the same.
+// vote the traversal is ordered: each leaf is tested as soon as it is
+// reached, and the next deferred child popped after its test, so that what
+// the test found culls it. Speculating, the next deferred child is popped as
+// a leaf is taken up, before its test. Visits made while a leaf waits only
+// cull less, so the hits are the same.
+//
+// The inner node's step is one text (ORB_TRAVERSAL_NODE_STEP) in the two
+// walks' loops, which keep the shapes of their hand-written originals: a
+// single loop with one test of the kind of `current` per step (ordered),
+// inner nodes then leaves (speculating). One loop for both, or popping after
+// the test while speculating, gave NVIDIA's compiler more registers and
+// branches (docs/design/one-path-tracer-over-lanes.md).
+//
+// ORB_TRAVERSAL_NODE_STEP(after_push, after_none): visits inner node
+// `current`: a leaf run's packets (CPUs) or the boxes of its children, the
+// hit ones pushed nearest on top and the nearest taken as `current`; then
+// `after_push`, or `after_none` where no child was pushed.
+#define ORB_TRAVERSAL_NODE_STEP(after_push, after_none)                                                          \
+    ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)         \
+    const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);                       \
+    if (run.x >= 0) {                                                                                          \
+        ORB_BVH_EXPECT(run.x + run.y <= scene->packet_count, "leaf run", run.x + run.y - 1, scene->packet_count, \
+                       return true)                                                                            \
+        for (int k = run.x; k < run.x + run.y; ++k)                                                            \
+            if (leaf_ends_search(best, scene, k, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true) \
+        after_none                                                                                             \
+    } else {                                                                                                   \
+        int4 child;                                                                                            \
+        float4 entry;                                                                                          \
+        const int count =                                                                                      \
+            hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light), &child, &entry);  \
+        if (count > 0) {                                                                                       \
+            ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_STACK_LIMIT, "stack top", top + count - 1,               \
+                           ORB_BVH_STACK_LIMIT, return true)                                                   \
+            top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);             \
+            current = child.x;                                                                                 \
+            after_push                                                                                         \
+        } else {                                                                                               \
+            after_none                                                                                         \
+        }                                                                                                      \
+    }
+#define ORB_TRAVERSAL_POP current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
+// Tests leaf `leaf` (< 0: packet -1 - leaf).
+#define ORB_TRAVERSAL_LEAF_STEP(leaf)                                                                          \
+    const int packet = -1 - (leaf);                                                                            \
+    ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)       \
+    if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
+
 inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,
                           const bool any_hit, int light, float t_light)
 {
@@ -426,57 +489,49 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
     float stack_entry[ORB_BVH_STACK_SIZE + 2];  // closest hits only
     int top = 0;
     int current = 0;
-    int postponed = 0;  // speculation's leaf waiting for the warp (< 0), or 0 for none
     ORB_BVH_VISITS_BEGIN
+#if ORB_WARP_VOTE
+    int leaf = 0;  // the leaf to test next (< 0): postponed, or taken up for the leaf phase; 0 for none
     for (;;) {
-        // Inner nodes, until the ray stands on a leaf (speculating: until
-        // every lane of the warp holds one) or the stack is empty.
+        // Inner nodes, until every converged lane of the warp holds a leaf
+        // or the ray's stack is empty.
         while (current >= 0 && current != ORB_TRAVERSAL_DONE) {
             ORB_BVH_VISIT
-            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)
-            const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);
-            if (run.x >= 0) {
-                ORB_BVH_EXPECT(run.x + run.y <= scene->packet_count, "leaf run", run.x + run.y - 1,
-                               scene->packet_count, return true)
-                for (int k = run.x; k < run.x + run.y; ++k)
-                    if (leaf_ends_search(best, scene, k, o, d, self, any_hit, light, t_light))
-                        ORB_TRAVERSAL_RETURN(true)
-                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-            } else {
-                int4 child;
-                float4 entry;
-                const int count = hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light),
-                                               &child, &entry);
-                if (count > 0) {
-                    ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_STACK_LIMIT, "stack top", top + count - 1,
-                                   ORB_BVH_STACK_LIMIT, return true)
-                    top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
-                    current = child.x;
-                } else {
-                    current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-                }
+            ORB_TRAVERSAL_NODE_STEP(, ORB_TRAVERSAL_POP)
+            if (current < 0 && leaf == 0) {
+                leaf = current;
+                ORB_TRAVERSAL_POP
             }
-#if ORB_WARP_VOTE
-            if (current < 0 && postponed == 0) {
-                postponed = current;
-                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-            }
-            if (!warp_any(postponed == 0)) break;
-#endif
+            if (!warp_any(leaf == 0)) break;
         }
-        // Leaves: the postponed one first, then each the traversal stands on.
-        while (postponed < 0 || current < 0) {
-            const bool was_postponed = postponed < 0;
-            const int leaf = was_postponed ? postponed : current;
+        // Leaves: the postponed one, then each the traversal stands on.
+        if (leaf == 0 && current < 0) {
+            leaf = current;
+            ORB_TRAVERSAL_POP
+        }
+        while (leaf < 0) {
             ORB_BVH_VISIT
-            const int packet = -1 - leaf;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)
-            if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
-            if (was_postponed) postponed = 0;
-            else current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
+            ORB_TRAVERSAL_LEAF_STEP(leaf)
+            leaf = 0;
+            if (current < 0) {
+                leaf = current;
+                ORB_TRAVERSAL_POP
+            }
         }
         if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
     }
+#else
+    for (;;) {
+        ORB_BVH_VISIT
+        if (current < 0) {
+            ORB_TRAVERSAL_LEAF_STEP(current)
+        } else {
+            ORB_TRAVERSAL_NODE_STEP(continue;, )
+        }
+        ORB_TRAVERSAL_POP
+        if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
+    }
+#endif
 }
 
 // Closest hit in the tree, kept in `best`.

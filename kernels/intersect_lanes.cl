@@ -22,7 +22,7 @@ LANE_FN lmask lanes_light_visible(const SceneView* scene, lv3 o, lv3 d, lint sel
 
 #else
 
-ORB_DEFINE_SPHERE_DISTANCE(LANE_FN, lfloat, lint, lv3, lv3, lanes_sphere_distance)
+ORB_DEFINE_SPHERE_DISTANCE(LANE_FN, lfloat, lint, lv3, lv3, ORB_MISS_MASKED, lanes_sphere_distance)
 
 // The closest sphere along each lane's ray in `lanes`: *id -1 where nothing is hit.
 LANE_FN void lanes_intersect(const SceneView* scene, lv3 o, lv3 d, lint self, lmask lanes, lfloat* t_out, lint* id_out)
