@@ -56,13 +56,15 @@
 // How a form leaves on a miss (MISS, below): the scalar form returns as
 // soon as the miss is known, as the hand-written copy it replaced did, so
 // that a GPU thread pays no square root and no select for a sphere it
-// misses (without the returns the program ran 17% slower on an H200 at
-// 100 k spheres); its root is then of a discriminant known not negative.
+// misses (a first try without the returns, among other differences, ran
+// up to 17% slower on an H200); its root is then of a discriminant known
+// not negative.
 // The vector forms do not branch: every lane computes everything, the root
 // of the discriminant clamped at 0 (so that no lane's NaN matters), and the
 // misses are masked at the end.
-// After the scalar form's returns the compiler knows the mask's miss terms
-// are 0 (the same values it branched on), so the mask costs it nothing.
+// After the scalar form's returns the compiler knows the mask's terms (the
+// same values it branched on), so the mask costs it nothing; the vector
+// forms' mask is the one the hand-written packet and lane tests had.
 // Rounding: -cl-mad-enable lets the compiler fuse a multiply and an add only
 // within one expression, so each step the text names is one expression in
 // every form (P##_sub_scaled is oc - b d, P##_dot a sum of products), never
@@ -83,14 +85,14 @@
         const F b = P##_dot(oc, d);                                                            \
         const V3 f = P##_sub_scaled(oc, d, b);                                                 \
         const F disc = radius2 - P##_dot(f, f);                                                \
-        const I passes_by = !(disc >= (F)(0.0f));                                              \
-        MISS##_IF(passes_by)                                                                   \
+        const I within_radius = disc >= (F)(0.0f);                                             \
+        MISS##_IF(!within_radius)                                                              \
         const F s = MISS##_ROOT(F, disc);                                                      \
         const I leaves_self = is_self & (b >= (F)(0.0f));                                      \
         MISS##_IF(leaves_self)                                                                 \
         const F t_near = -b - s;                                                               \
         const F t = select(t_near, -b + s, is_self | (t_near <= (F)(0.0f)));                   \
-        const I hit = !passes_by & (t > (F)(0.0f)) & !leaves_self;                             \
+        const I hit = within_radius & (t > (F)(0.0f)) & !leaves_self;                          \
         return select((F)(ORB_NO_HIT), t, hit);                                                \
     }
 

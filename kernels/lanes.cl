@@ -32,9 +32,10 @@
 // add (-cl-mad-enable) only within one expression, so a composition of these
 // (P##_sub of P##_scale) rounds otherwise than P##_sub_scaled, a - s b.
 // The scale comes first in its product, as the hand-written ray-sphere tests
-// had it (oc - b d): the value is the same either way, but NVIDIA's code
-// for a - b s hoisted the negated direction out of the traversal, three
-// more registers live across it (docs/design/one-path-tracer-over-lanes.md).
+// had it (oc - b d): the value is the same either way, but in PTX (clang's,
+// compiled offline) a - b s had the negated ray direction hoisted out of the
+// traversal, three more registers live across it, where a - s b negates the
+// scale inside each fused multiply-add (docs/design/one-path-tracer-over-lanes.md).
 #define ORB_DEFINE_V3_OF(Q, F, V3, P)                                                          \
     typedef struct {                                                                           \
         F x, y, z;                                                                             \
