@@ -1,18 +1,10 @@
 // Ray-sphere intersection: the spheres outside the BVH (huge ones, or all of
 // a small scene) in a linear loop over packets of four, then the 4-wide BVH
-// (librender/src/sphere_bvh.h), whose leaves are one packet each.
-//
-// Robustness without epsilons:
-//  * The discriminant is formed as r^2 - |oc - (oc.d) d|^2 (squared distance
-//    from the centre to the ray's closest point), which keeps its precision
-//    for the radius-1e4 "walls" of the Cornell box (Haines et al., "Precision
-//    improvements for ray/sphere intersection", Ray Tracing Gems, 2019).
-//  * A ray leaving the surface of sphere `self` never re-hits that surface at
-//    its start: for `self` only the far root counts, and only when the ray
-//    heads into the sphere (oc.d < 0). Other spheres need no offset.
-//  * BVH boxes are built to contain each sphere as stored here (float centre,
-//    float radius squared), so the box test never culls a hit the sphere test
-//    would find.
+// (librender/src/sphere_bvh.h), whose leaves are one packet each. The test
+// of a ray against a sphere is one text (ORB_DEFINE_SPHERE_DISTANCE, below)
+// in three forms: one ray and one sphere, one ray and a packet's four
+// spheres (CPUs' traversal), each lane's ray and one sphere (intersect_lanes.cl);
+// the tree is walked by one loop (traverse_tree) for every device.
 
 #define ORB_NO_HIT 1e30f
 // The host builds the program with ORB_BVH 0 for a scene without a tree
@@ -33,6 +25,79 @@
 #define ORB_MAX(a, b) select(b, a, isgreater(a, b))
 #endif
 
+// The ray-sphere test, the one home of its robustness rules. Distance along
+// the ray (o, d) to the sphere (centre, radius2 the radius squared), or
+// ORB_NO_HIT where the ray misses it; is_self: the sphere is the one the ray
+// leaves (the path's `self`), as a comparison's result. Rules, with no
+// epsilon anywhere:
+//  * d is of unit length, so b = oc.d is where along the ray it passes the
+//    centre closest (oc = o - centre).
+//  * The discriminant is r^2 - |oc - b d|^2, the squared radius less the
+//    squared distance from the centre to the ray's closest point, not
+//    b^2 - (|oc|^2 - r^2): it keeps its precision for the radius-1e4 "walls"
+//    of the Cornell box (Haines et al., "Precision improvements for
+//    ray/sphere intersection", Ray Tracing Gems, 2019). Not at least 0
+//    (below 0, or NaN): the ray passes the sphere by, a miss.
+//  * Which root: the near one, -b - sqrt(disc), unless it is not ahead
+//    (t <= 0: the origin is inside the sphere or past it); then the far one,
+//    -b + sqrt(disc). A hit is ahead: t > 0.
+//  * A ray leaving the surface of sphere `self` never re-hits that surface
+//    at its start: for `self` only the far root counts, and only when the
+//    ray heads into the sphere (b < 0); leaving it outwards misses it. Other
+//    spheres need no offset.
+//  * BVH boxes are built to contain each sphere as stored (float centre,
+//    float radius squared), so the box test never culls a hit this test
+//    would find.
+// The forms: scalar (F float, I int, V3 float3 under f3_), a packet of four
+// spheres (float4, int4, packet_v3 under p4_), the lanes (lfloat, lint, lv3
+// under lv3_). All are written with select, & and |, which mean the same for
+// a scalar comparison (1) and a vector one (-1 per lane); a scalar ! is 0 or
+// 1 and a vector's 0 or -1, so it is right in both.
+// How a form leaves on a miss (MISS, below): the scalar form returns as
+// soon as the miss is known, as the hand-written copy it replaced did, so
+// that a GPU thread pays no square root and no select for a sphere it
+// misses (a first try without the returns, among other differences, ran
+// up to 17% slower on an H200); its root is then of a discriminant known
+// not negative.
+// The vector forms do not branch: every lane computes everything, the root
+// of the discriminant clamped at 0 (so that no lane's NaN matters), and the
+// misses are masked at the end.
+// After the scalar form's returns the compiler knows the mask's terms (the
+// same values it branched on), so the mask costs it nothing; the vector
+// forms' mask is the one the hand-written packet and lane tests had.
+// Rounding: -cl-mad-enable lets the compiler fuse a multiply and an add only
+// within one expression, so each step the text names is one expression in
+// every form (P##_sub_scaled is oc - b d, P##_dot a sum of products), never
+// a composition of helpers: the three forms then round alike, as the three
+// hand-written copies this text replaced did (images bit for bit the same).
+// Inlined copies may still round differently in different programs, so what
+// must not depend on the program (the centre ray's depth) takes the scalar
+// form of the hit sphere (sphere_distance).
+#define ORB_MISS_RETURNS_IF(miss) \
+    if (miss) return ORB_NO_HIT;
+#define ORB_MISS_RETURNS_ROOT(F, disc) sqrt(disc)
+#define ORB_MISS_MASKED_IF(miss)
+#define ORB_MISS_MASKED_ROOT(F, disc) sqrt(ORB_MAX(disc, (F)(0.0f)))
+#define ORB_DEFINE_SPHERE_DISTANCE(Q, F, I, V3, P, MISS, name)                                \
+    Q F name(V3 o, V3 d, V3 centre, F radius2, I is_self)                                      \
+    {                                                                                          \
+        const V3 oc = P##_sub(o, centre);                                                      \
+        const F b = P##_dot(oc, d);                                                            \
+        const V3 f = P##_sub_scaled(oc, d, b);                                                 \
+        const F disc = radius2 - P##_dot(f, f);                                                \
+        const I within_radius = disc >= (F)(0.0f);                                             \
+        MISS##_IF(!within_radius)                                                              \
+        const F s = MISS##_ROOT(F, disc);                                                      \
+        const I leaves_self = is_self & (b >= (F)(0.0f));                                      \
+        MISS##_IF(leaves_self)                                                                 \
+        const F t_near = -b - s;                                                               \
+        const F t = select(t_near, -b + s, is_self | (t_near <= (F)(0.0f)));                   \
+        const I hit = within_radius & (t > (F)(0.0f)) & !leaves_self;                          \
+        return select((F)(ORB_NO_HIT), t, hit);                                                \
+    }
+
+ORB_DEFINE_SPHERE_DISTANCE(inline, float, int, float3, f3, ORB_MISS_RETURNS, ray_sphere_distance)
+
 typedef struct {
     float t;  // distance along the (unit) ray direction
     int id;   // sphere slot (index into the spheres table), -1 for a miss
@@ -40,27 +105,23 @@ typedef struct {
 
 inline float packet_lane(SCENE_MEM const float4* v, int lane) { return ((SCENE_MEM const float*)v)[lane]; }
 
-// Distance along the ray to lane `lane` of a packet (sphere slot `id`), by
-// the rules above, or ORB_NO_HIT when the ray misses it (padding lanes too).
-inline float lane_distance(SCENE_MEM const SpherePacket* packet, int lane, int id, float3 o, float3 d, int self)
+// Distance along the ray to lane `lane` of a packet (sphere slot `id`), or
+// ORB_NO_HIT when the ray misses it (padding lanes too).
+inline float packet_sphere_distance(SCENE_MEM const SpherePacket* packet, int lane, int id, float3 o, float3 d,
+                                    int self)
 {
-    const float3 oc = o - (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
+    const float3 centre = (float3)(packet_lane(&packet->centre_x, lane), packet_lane(&packet->centre_y, lane),
                                    packet_lane(&packet->centre_z, lane));
-    const float b = dot(oc, d);
-    const float3 f = oc - b * d;
-    const float disc = packet_lane(&packet->radius2, lane) - dot(f, f);
-    if (disc < 0.0f) return ORB_NO_HIT;
-    const float s = sqrt(disc);
-    const bool is_self = id == self;
-    if (is_self && b >= 0.0f) return ORB_NO_HIT;
-    const float t_near = -b - s;
-    const float t = (is_self || t_near <= 0.0f) ? -b + s : t_near;
-    return t > 0.0f ? t : ORB_NO_HIT;
+    return ray_sphere_distance(o, d, centre, packet_lane(&packet->radius2, lane), id == self);
 }
 
 #if !ORB_SCALAR_TRAVERSAL
 // Four spheres per step in SIMD lanes: CPUs execute the float4 arithmetic as
 // one vector instruction each.
+ORB_DEFINE_V3_OF(inline __attribute__((always_inline)), float4, packet_v3, p4)
+ORB_DEFINE_SPHERE_DISTANCE(inline __attribute__((always_inline)), float4, int4, packet_v3, p4, ORB_MISS_MASKED,
+                           ray_spheres_distance)
+
 typedef struct {
     float4 t;
     int4 id;
@@ -72,34 +133,20 @@ inline void best_init(BestHit* best)
     best->id = (int4)(-1);
 }
 
-// The four lanes' hit distances along the ray (the near root, or the far one
-// from inside or for `self`), and in *hits which lanes are hit at all.
-inline float4 packet_roots(SCENE_MEM const SpherePacket* packet, int4 id, float3 o, float3 d, int self, int4* hits)
+// The four lanes' distances along the ray (spheres id), ORB_NO_HIT where missed.
+inline float4 packet_distances(SCENE_MEM const SpherePacket* packet, int4 id, float3 o, float3 d, int self)
 {
-    const float4 ocx = (float4)(o.x) - packet->centre_x;
-    const float4 ocy = (float4)(o.y) - packet->centre_y;
-    const float4 ocz = (float4)(o.z) - packet->centre_z;
-    const float4 b = ocx * d.x + ocy * d.y + ocz * d.z;
-    const float4 fx = ocx - b * d.x;
-    const float4 fy = ocy - b * d.y;
-    const float4 fz = ocz - b * d.z;
-    const float4 disc = packet->radius2 - (fx * fx + fy * fy + fz * fz);
-    const float4 s = sqrt(ORB_MAX(disc, (float4)(0.0f)));
-    const float4 t_near = -b - s;
-    const int4 is_self = id == (int4)(self);
-    const float4 t = select(t_near, -b + s, is_self | (t_near <= (float4)(0.0f)));
-    *hits = (disc >= (float4)(0.0f)) & (t > (float4)(0.0f)) & ~(is_self & (b >= (float4)(0.0f)));
-    return t;
+    const packet_v3 centre = p4_make(packet->centre_x, packet->centre_y, packet->centre_z);
+    return ray_spheres_distance(p4_splat(o), p4_splat(d), centre, packet->radius2, id == (int4)(self));
 }
 
 inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int first_id, float3 o, float3 d, int self)
 {
     const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
-    int4 hits;
-    const float4 t = packet_roots(packet, id, o, d, self, &hits);
-    const int4 valid = hits & (t < best->t);
-    best->t = select(best->t, t, valid);
-    best->id = select(best->id, id, valid);
+    const float4 t = packet_distances(packet, id, o, d, self);
+    const int4 closer = t < best->t;
+    best->t = select(best->t, t, closer);
+    best->id = select(best->id, id, closer);
 }
 
 // Whether a sphere of the packet other than `light` is hit before t_max.
@@ -107,9 +154,8 @@ inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, fl
                           float t_max)
 {
     const int4 id = (int4)(0, 1, 2, 3) + (int4)(first_id);
-    int4 hits;
-    const float4 t = packet_roots(packet, id, o, d, self, &hits);
-    return any(hits & (t < (float4)(t_max)) & (id != (int4)(light)));
+    const float4 t = packet_distances(packet, id, o, d, self);
+    return any((t < (float4)(t_max)) & (id != (int4)(light)));
 }
 
 inline float best_distance(const BestHit* best)
@@ -131,7 +177,7 @@ inline Hit best_hit(const BestHit* best)
 #else
 // One sphere per step, for GPUs: a GPU thread executes float4 arithmetic one
 // lane at a time, so packets would only add the padding lanes' work. Reads
-// the same packets lane by lane; same roots and rules as the packet version.
+// the same packets lane by lane, with the scalar form of the same test.
 typedef Hit BestHit;
 
 inline void best_init(BestHit* best)
@@ -144,7 +190,7 @@ inline void test_packet(BestHit* best, SCENE_MEM const SpherePacket* packet, int
 {
     for (int lane = 0; lane < 4; ++lane) {
         if (packet_lane(&packet->radius2, lane) < 0.0f) break;  // padding lanes come last
-        const float t = lane_distance(packet, lane, first_id + lane, o, d, self);
+        const float t = packet_sphere_distance(packet, lane, first_id + lane, o, d, self);
         if (t < best->t) {
             best->t = t;
             best->id = first_id + lane;
@@ -157,7 +203,8 @@ inline bool packet_blocks(SCENE_MEM const SpherePacket* packet, int first_id, fl
 {
     for (int lane = 0; lane < 4; ++lane) {
         if (packet_lane(&packet->radius2, lane) < 0.0f) break;  // padding lanes come last
-        if (first_id + lane != light && lane_distance(packet, lane, first_id + lane, o, d, self) < t_max) return true;
+        if (first_id + lane != light && packet_sphere_distance(packet, lane, first_id + lane, o, d, self) < t_max)
+            return true;
     }
     return false;
 }
@@ -378,69 +425,64 @@ inline int pop_deferred(const BestHit* best, const int* children, const float* e
     return *top > 0 ? children[--*top] : ORB_TRAVERSAL_DONE;
 }
 
-#if ORB_WARP_VOTE
-// Speculative traversal (Aila and Laine, "Understanding the Efficiency of
-// Ray Traversal on GPUs", 2009), where a warp vote exists (warp_vote.cl). A
-// lane that reaches a leaf postpones it and goes on through the tree's inner
-// nodes until every converged lane of its warp holds a leaf; then the warp
-// tests leaves together, each lane its postponed one and, if its traversal
-// stands on a leaf too, that one. Nsight Compute showed the ordered
-// traversal testing leaves with 2 to 3 of a warp's 32 lanes at a million
-// spheres; this gives 4% more samples/s on an H100 at 1 k to 1 M spheres
-// (docs/design/speculative-traversal.md). The hits are the same:
-// visits made while a postponed leaf waits only cull less.
-
-inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,
-                          const bool any_hit, int light, float t_light)
-{
-    int stack_child[ORB_BVH_STACK_SIZE + 2];
-    float stack_entry[ORB_BVH_STACK_SIZE + 2];  // closest hits only
-    int top = 0;
-    int current = 0;
-    int leaf = 0;  // the postponed leaf (< 0), or 0 for none
-    ORB_BVH_VISITS_BEGIN
-    for (;;) {
-        while (current >= 0 && current != ORB_TRAVERSAL_DONE) {
-            ORB_BVH_VISIT
-            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)
-            int4 child;
-            float4 entry;
-            const int count =
-                hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light), &child, &entry);
-            if (count > 0) {
-                ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_STACK_LIMIT, "stack top", top + count - 1,
-                               ORB_BVH_STACK_LIMIT, return true)
-                top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
-                current = child.x;
-            } else {
-                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-            }
-            if (current < 0 && leaf == 0) {
-                leaf = current;
-                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-            }
-            if (!warp_any(leaf == 0)) break;
-        }
-        if (leaf == 0 && current < 0) {
-            leaf = current;
-            current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-        }
-        while (leaf < 0) {
-            ORB_BVH_VISIT
-            const int packet = -1 - leaf;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)
-            if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
-            leaf = 0;
-            if (current < 0) {
-                leaf = current;
-                current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
-            }
-        }
-        if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
+// The traversal: nearest hit child first, the others deferred on a stack.
+// Where a warp vote exists (ORB_WARP_VOTE, warp_vote.cl: NVIDIA), it
+// speculates (Aila and Laine, "Understanding the Efficiency of Ray Traversal
+// on GPUs", 2009): a lane that reaches a leaf postpones it and goes on
+// through the tree's inner nodes until every converged lane of its warp
+// holds a leaf; then the warp tests leaves together, each lane its postponed
+// one and, if its traversal stands on leaves too, those. Nsight Compute
+// showed the ordered traversal testing leaves with 2 to 3 of a warp's 32
+// lanes at a million spheres; speculation gave 4% more samples/s on an H100
+// at 1 k to 1 M spheres (docs/design/speculative-traversal.md). Without a
+// vote the traversal is ordered: each leaf is tested as soon as it is
+// reached, and the next deferred child popped after its test, so that what
+// the test found culls it. Speculating, the next deferred child is popped as
+// a leaf is taken up, before its test. Visits made while a leaf waits only
+// cull less, so the hits are the same.
+//
+// The inner node's step is one text (ORB_TRAVERSAL_NODE_STEP) in the two
+// walks' loops, which keep the shapes of their hand-written originals: a
+// single loop with one test of the kind of `current` per step (ordered),
+// inner nodes then leaves (speculating). One loop for both, or popping after
+// the test while speculating, gave NVIDIA's compiler more registers and
+// branches (docs/design/one-path-tracer-over-lanes.md).
+//
+// ORB_TRAVERSAL_NODE_STEP(after_push, after_none): visits inner node
+// `current`: a leaf run's packets (CPUs) or the boxes of its children, the
+// hit ones pushed nearest on top and the nearest taken as `current`; then
+// `after_push`, or `after_none` where no child was pushed.
+#define ORB_TRAVERSAL_NODE_STEP(after_push, after_none)                                                          \
+    ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)         \
+    const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);                       \
+    if (run.x >= 0) {                                                                                          \
+        ORB_BVH_EXPECT(run.x + run.y <= scene->packet_count, "leaf run", run.x + run.y - 1, scene->packet_count, \
+                       return true)                                                                            \
+        for (int k = run.x; k < run.x + run.y; ++k)                                                            \
+            if (leaf_ends_search(best, scene, k, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true) \
+        after_none                                                                                             \
+    } else {                                                                                                   \
+        int4 child;                                                                                            \
+        float4 entry;                                                                                          \
+        const int count =                                                                                      \
+            hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light), &child, &entry);  \
+        if (count > 0) {                                                                                       \
+            ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_STACK_LIMIT, "stack top", top + count - 1,               \
+                           ORB_BVH_STACK_LIMIT, return true)                                                   \
+            top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);             \
+            current = child.x;                                                                                 \
+            after_push                                                                                         \
+        } else {                                                                                               \
+            after_none                                                                                         \
+        }                                                                                                      \
     }
-}
-#else
-// Ordered traversal: the nearest hit child next, the others deferred.
+#define ORB_TRAVERSAL_POP current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
+// Tests leaf `leaf` (< 0: packet -1 - leaf).
+#define ORB_TRAVERSAL_LEAF_STEP(leaf)                                                                          \
+    const int packet = -1 - (leaf);                                                                            \
+    ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)       \
+    if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
+
 inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* ray, float3 o, float3 d, int self,
                           const bool any_hit, int light, float t_light)
 {
@@ -450,40 +492,49 @@ inline bool traverse_tree(BestHit* best, const SceneView* scene, const BoxRay* r
     int top = 0;
     int current = 0;
     ORB_BVH_VISITS_BEGIN
+#if ORB_WARP_VOTE
+    int leaf = 0;  // the leaf to test next (< 0): postponed, or taken up for the leaf phase; 0 for none
+    for (;;) {
+        // Inner nodes, until every converged lane of the warp holds a leaf
+        // or the ray's stack is empty.
+        while (current >= 0 && current != ORB_TRAVERSAL_DONE) {
+            ORB_BVH_VISIT
+            ORB_TRAVERSAL_NODE_STEP(, ORB_TRAVERSAL_POP)
+            if (current < 0 && leaf == 0) {
+                leaf = current;
+                ORB_TRAVERSAL_POP
+            }
+            if (!warp_any(leaf == 0)) break;
+        }
+        // Leaves: the postponed one, then each the traversal stands on.
+        if (leaf == 0 && current < 0) {
+            leaf = current;
+            ORB_TRAVERSAL_POP
+        }
+        while (leaf < 0) {
+            ORB_BVH_VISIT
+            ORB_TRAVERSAL_LEAF_STEP(leaf)
+            leaf = 0;
+            if (current < 0) {
+                leaf = current;
+                ORB_TRAVERSAL_POP
+            }
+        }
+        if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
+    }
+#else
     for (;;) {
         ORB_BVH_VISIT
         if (current < 0) {
-            const int packet = -1 - current;
-            ORB_BVH_EXPECT(packet < scene->packet_count, "leaf packet", packet, scene->packet_count, return true)
-            if (leaf_ends_search(best, scene, packet, o, d, self, any_hit, light, t_light)) ORB_TRAVERSAL_RETURN(true)
+            ORB_TRAVERSAL_LEAF_STEP(current)
         } else {
-            ORB_BVH_EXPECT(current < scene->bvh_node_count, "node", current, scene->bvh_node_count, return true)
-            const int4 run = ORB_BVH_LEAF_RUNS ? scene->bvh_nodes[current].leaf_run : (int4)(-1);
-            if (run.x >= 0) {
-                ORB_BVH_EXPECT(run.x + run.y <= scene->packet_count, "leaf run", run.x + run.y - 1,
-                               scene->packet_count, return true)
-                for (int k = run.x; k < run.x + run.y; ++k)
-                    if (leaf_ends_search(best, scene, k, o, d, self, any_hit, light, t_light))
-                        ORB_TRAVERSAL_RETURN(true)
-            } else {
-                int4 child;
-                float4 entry;
-                const int count = hit_children(&scene->bvh_nodes[current], ray, search_limit(best, any_hit, t_light),
-                                               &child, &entry);
-                if (count > 0) {
-                    ORB_BVH_EXPECT(top + count - 1 <= ORB_BVH_STACK_LIMIT, "stack top", top + count - 1,
-                                   ORB_BVH_STACK_LIMIT, return true)
-                    top = push_deferred(stack_child, any_hit ? 0 : stack_entry, top, child, entry, count);
-                    current = child.x;
-                    continue;
-                }
-            }
+            ORB_TRAVERSAL_NODE_STEP(continue;, )
         }
-        current = pop_deferred(best, stack_child, stack_entry, &top, any_hit);
+        ORB_TRAVERSAL_POP
         if (current == ORB_TRAVERSAL_DONE) ORB_TRAVERSAL_RETURN(false)
     }
+#endif
 }
-#endif  // ORB_WARP_VOTE
 
 // Closest hit in the tree, kept in `best`.
 inline void traverse_bvh(BestHit* best, const SceneView* scene, float3 o, float3 d, int self)
@@ -510,12 +561,12 @@ inline Hit intersect_scene(const SceneView* scene, float3 o, float3 d, int self)
     return best_hit(&best);
 }
 
-// Distance along the ray to sphere slot `id` by the same test as above, or
-// ORB_NO_HIT when the ray misses it.
+// Distance along the ray to sphere slot `id` by the scalar form of the
+// test, or ORB_NO_HIT when the ray misses it.
 inline float sphere_distance(const SceneView* scene, int id, float3 o, float3 d, int self)
 {
     ORB_BVH_EXPECT(id >= 0 && id < scene->sphere_count, "light sphere", id, scene->sphere_count, return ORB_NO_HIT)
-    return lane_distance(&scene->packets[id >> 2], id & 3, id, o, d, self);
+    return packet_sphere_distance(&scene->packets[id >> 2], id & 3, id, o, d, self);
 }
 
 // Shadow rays: whether sphere `light` is the first thing along the ray. Any

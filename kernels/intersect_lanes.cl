@@ -1,9 +1,10 @@
 // Ray casts for the lanes' rays (lanes.cl). Traversal is per ray by nature:
 // at width 1 these are intersect.cl's functions; at width > 1 the spheres
 // outside the tree (all of a small scene) are tested for all lanes at once,
-// one sphere per step (the same test as lane_distance), and the tree is
-// walked lane by lane with intersect.cl's traversal: lanes' rays go through
-// different nodes, and a node's four boxes are one vector test already.
+// one sphere per step (the lanes' form of intersect.cl's ray-sphere test),
+// and the tree is walked lane by lane with intersect.cl's traversal: lanes'
+// rays go through different nodes, and a node's four boxes are one vector
+// test already.
 
 #if ORB_LANES == 1
 
@@ -21,6 +22,8 @@ LANE_FN lmask lanes_light_visible(const SceneView* scene, lv3 o, lv3 d, lint sel
 
 #else
 
+ORB_DEFINE_SPHERE_DISTANCE(LANE_FN, lfloat, lint, lv3, lv3, ORB_MISS_MASKED, lanes_sphere_distance)
+
 // The closest sphere along each lane's ray in `lanes`: *id -1 where nothing is hit.
 LANE_FN void lanes_intersect(const SceneView* scene, lv3 o, lv3 d, lint self, lmask lanes, lfloat* t_out, lint* id_out)
 {
@@ -32,20 +35,13 @@ LANE_FN void lanes_intersect(const SceneView* scene, lv3 o, lv3 d, lint self, lm
             const float radius2 = packet_lane(&packet->radius2, lane);
             if (radius2 < 0.0f) break;  // padding lanes come last
             const int sphere = 4 * p + lane;
-            const lfloat ocx = o.x - packet_lane(&packet->centre_x, lane);
-            const lfloat ocy = o.y - packet_lane(&packet->centre_y, lane);
-            const lfloat ocz = o.z - packet_lane(&packet->centre_z, lane);
-            const lfloat b = ocx * d.x + ocy * d.y + ocz * d.z;
-            const lfloat fx = ocx - b * d.x, fy = ocy - b * d.y, fz = ocz - b * d.z;
-            const lfloat disc = radius2 - (fx * fx + fy * fy + fz * fz);
-            const lfloat s = sqrt(fmax(disc, (lfloat)(0.0f)));
-            const lfloat t_near = -b - s;
-            const lmask is_self = self == sphere;
-            const lfloat t = lselect(t_near, -b + s, mask_or(is_self, t_near <= 0.0f));
-            const lmask hit = mask_and(mask_and(disc >= 0.0f, t > 0.0f),
-                                       mask_and(mask_not(mask_and(is_self, b >= 0.0f)), t < best));
-            best = lselect(best, t, hit);
-            id = lselect(id, (lint)(sphere), hit);
+            const lv3 centre = lv3_make((lfloat)(packet_lane(&packet->centre_x, lane)),
+                                        (lfloat)(packet_lane(&packet->centre_y, lane)),
+                                        (lfloat)(packet_lane(&packet->centre_z, lane)));
+            const lfloat t = lanes_sphere_distance(o, d, centre, (lfloat)(radius2), self == sphere);
+            const lmask closer = t < best;
+            best = lselect(best, t, closer);
+            id = lselect(id, (lint)(sphere), closer);
         }
     }
 #if ORB_BVH

@@ -24,6 +24,39 @@
 // searches, the centre-ray channels) takes scalars, and at width > 1 runs in
 // a loop over the lanes (ORB_FOR_EACH_LANE, lane_f / set_lane_f, ...).
 
+// A 3-vector as three vectors of numbers F (one component each): the type
+// V3 and its arithmetic under the prefix P (P##_make, P##_sub, ...), for text
+// written once over 3-vectors (the lanes' lv3 below; the packets of four
+// spheres in intersect.cl). Q qualifies the functions: everything over
+// vectors is inlined (LANE_FN, below). The compiler fuses a multiply and an
+// add (-cl-mad-enable) only within one expression, so a composition of these
+// (P##_sub of P##_scale) rounds otherwise than P##_sub_scaled, a - s b.
+// The scale comes first in its product, as the hand-written ray-sphere tests
+// had it (oc - b d): the value is the same either way, but in PTX (clang's,
+// compiled offline) a - b s had the negated ray direction hoisted out of the
+// traversal, three more registers live across it, where a - s b negates the
+// scale inside each fused multiply-add (docs/design/one-path-tracer-over-lanes.md).
+#define ORB_DEFINE_V3_OF(Q, F, V3, P)                                                          \
+    typedef struct {                                                                           \
+        F x, y, z;                                                                             \
+    } V3;                                                                                      \
+    Q V3 P##_make(F x, F y, F z)                                                               \
+    {                                                                                          \
+        V3 r;                                                                                  \
+        r.x = x;                                                                               \
+        r.y = y;                                                                               \
+        r.z = z;                                                                               \
+        return r;                                                                              \
+    }                                                                                          \
+    Q V3 P##_splat(float3 v) { return P##_make((F)(v.x), (F)(v.y), (F)(v.z)); }                \
+    Q V3 P##_add(V3 a, V3 b) { return P##_make(a.x + b.x, a.y + b.y, a.z + b.z); }             \
+    Q V3 P##_sub(V3 a, V3 b) { return P##_make(a.x - b.x, a.y - b.y, a.z - b.z); }             \
+    Q V3 P##_mul(V3 a, V3 b) { return P##_make(a.x * b.x, a.y * b.y, a.z * b.z); }             \
+    Q V3 P##_scale(V3 a, F s) { return P##_make(a.x * s, a.y * s, a.z * s); }                  \
+    Q V3 P##_neg(V3 a) { return P##_make(-a.x, -a.y, -a.z); }                                  \
+    Q F P##_dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }                      \
+    Q V3 P##_sub_scaled(V3 a, V3 b, F s) { return P##_make(a.x - s * b.x, a.y - s * b.y, a.z - s * b.z); }
+
 #if ORB_LANES == 1
 
 typedef float lfloat;
@@ -93,9 +126,6 @@ typedef ORB_LANE_TYPE(int, ORB_LANES) lint;
 typedef ORB_LANE_TYPE(uint, ORB_LANES) luint;
 typedef ORB_LANE_TYPE(long, ORB_LANES) llong;
 typedef lint lmask;  // -1 or 0 per lane
-typedef struct {
-    lfloat x, y, z;
-} lv3;
 
 // Everything over lanes is inlined: PoCL passes the vectors of a call that
 // is not through memory, which costs more than the arithmetic.
@@ -152,24 +182,10 @@ ORB_DEFINE_LANES_REDUCE(&, lanes_all)
 #define to_luint(x) ORB_LANE_TYPE(convert_uint, ORB_LANES)(x)
 #define to_llong(x) ORB_LANE_TYPE(convert_long, ORB_LANES)(x)
 
-LANE_FN lv3 lv3_make(lfloat x, lfloat y, lfloat z)
-{
-    lv3 r;
-    r.x = x;
-    r.y = y;
-    r.z = z;
-    return r;
-}
-LANE_FN lv3 lv3_splat(float3 v) { return lv3_make((lfloat)(v.x), (lfloat)(v.y), (lfloat)(v.z)); }
+ORB_DEFINE_V3_OF(LANE_FN, lfloat, lv3, lv3)
 LANE_FN lv3 lv3_zero(void) { return lv3_make((lfloat)(0.0f), (lfloat)(0.0f), (lfloat)(0.0f)); }
 // Every component of every lane x (a float or an lfloat).
 #define lv3_fill(x) lv3_make((lfloat)(x), (lfloat)(x), (lfloat)(x))
-LANE_FN lv3 lv3_add(lv3 a, lv3 b) { return lv3_make(a.x + b.x, a.y + b.y, a.z + b.z); }
-LANE_FN lv3 lv3_sub(lv3 a, lv3 b) { return lv3_make(a.x - b.x, a.y - b.y, a.z - b.z); }
-LANE_FN lv3 lv3_mul(lv3 a, lv3 b) { return lv3_make(a.x * b.x, a.y * b.y, a.z * b.z); }
-LANE_FN lv3 lv3_scale(lv3 a, lfloat s) { return lv3_make(a.x * s, a.y * s, a.z * s); }
-LANE_FN lv3 lv3_neg(lv3 a) { return lv3_make(-a.x, -a.y, -a.z); }
-LANE_FN lfloat lv3_dot(lv3 a, lv3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 LANE_FN lv3 lv3_normalize(lv3 a) { return lv3_scale(a, rsqrt(lv3_dot(a, a))); }
 LANE_FN lv3 lv3_cross(lv3 a, lv3 b)
 {
@@ -235,13 +251,16 @@ ORB_DEFINE_LANES_GATHER(__constant, lanes_gather_)
 #define lanes_step(m) (ORB_LANES > 1 || lanes_any(m))
 
 // The float3 operations under the names of lv3's (f3_ for lv3_), for text
-// written once over either, such as camera_ray (camera.cl): the
-// centre-ray channels cast one scalar ray per pixel at every width.
+// written once over either, such as camera_ray (camera.cl; the centre-ray
+// channels cast one scalar ray per pixel at every width) and the ray-sphere
+// test (intersect.cl).
 #define f3_make(x, y, z) ((float3)((x), (y), (z)))
 #define f3_splat(v) (v)
 #define f3_add(a, b) ((a) + (b))
 #define f3_sub(a, b) ((a) - (b))
 #define f3_scale(a, s) ((a) * (s))
+#define f3_dot(a, b) dot(a, b)
+#define f3_sub_scaled(a, b, s) ((a) - (s) * (b))
 #define f3_normalize(a) normalize(a)
 #define mask_and(a, b) ((a) & (b))
 #define mask_or(a, b) ((a) | (b))
