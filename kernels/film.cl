@@ -43,23 +43,28 @@ LANE_FN llong film_units_SignedFixed(lfloat v)
 // sample count (an int) to a pixel, so the pass's counts stay in 32 bits.
 LANE_FN lint film_units_Count(lfloat v) { return to_lint(v); }
 
-// sum + units for a sum that never goes below 0 (Fixed, Count): units are at
-// most 2^62, so an addition past the largest long wraps below 0, where it
-// stops at the largest long instead, for good (an add_sat that knows the
-// sign: add_sat's general test took about 15% of the Cornell box's
-// samples/s on PoCL at 16 lanes). A SignedFixed sum cannot overflow
-// (film_channels.h) and adds plainly.
-LANE_FN llong film_sum_add_Fixed(llong sum, llong units)
-{
-    const llong added = sum + units;
-#if ORB_LANES == 1
-    return added < 0 ? LONG_MAX : added;
-#else
-    return select(added, (llong)(LONG_MAX), added < (llong)(0));
-#endif
-}
+// A pass's sums add plainly; each component of a Fixed channel keeps,
+// beside its sum, the OR of the sum's high word after every addition. Units
+// are at most 2^62 and a sum starts at 0, so a sum that passes the largest
+// long lands below 0 (its sign bit set) before it could wrap any further,
+// and the OR keeps that bit for good: at the pass's end a component whose
+// OR is below 0 reached 2^63 units and stops at the largest long
+// (film_saturated), as the film's own add_sat then keeps it: the sums a
+// saturating addition of every sample gives. One OR an addition instead of
+// a test and a select (docs/design/exact-film-sums.md). A SignedFixed sum
+// cannot overflow (film_channels.h), nor a Count one.
+#define film_sum_add_Fixed(sum, units) ((sum) + (units))
 #define film_sum_add_SignedFixed(sum, units) ((sum) + (units))
 #define film_sum_add_Count(sum, units) ((sum) + (units))
+#define film_high_word(sum) to_lint((sum) >> 32)
+LANE_FN llong film_saturated(llong sum, lint overflow)
+{
+#if ORB_LANES == 1
+    return overflow < 0 ? LONG_MAX : sum;
+#else
+    return select(sum, (llong)(LONG_MAX), to_llong(overflow) < (llong)(0));
+#endif
+}
 
 // A work-item's own copy of one kind of channel, generated from the table:
 // FilmSums holds the Sum channels of each lane's pixel (lanes.cl), added up
@@ -83,7 +88,18 @@ typedef struct {
 #define ORB_FILM_SUMS_Count_1 lint
 #define ORB_FILM_SUMS(units, components) ORB_FILM_SUMS_##units##_##components
 
-#define ORB_FILM_FIELD_IF_Sum(name, components, units) ORB_FILM_SUMS(units, components) name;
+// A Fixed channel's sums have their overflow words beside them (name_overflow).
+typedef struct {
+    lint x, y, z;
+} FilmOverflow3;
+#define ORB_FILM_OVERFLOW_1 lint
+#define ORB_FILM_OVERFLOW_3 FilmOverflow3
+#define ORB_FILM_OVERFLOW_FIELD_Fixed(name, components) ORB_FILM_OVERFLOW_##components name##_overflow;
+#define ORB_FILM_OVERFLOW_FIELD_SignedFixed(name, components)
+#define ORB_FILM_OVERFLOW_FIELD_Count(name, components)
+#define ORB_FILM_FIELD_IF_Sum(name, components, units) \
+    ORB_FILM_SUMS(units, components) name;               \
+    ORB_FILM_OVERFLOW_FIELD_##units(name, components)
 #define ORB_FILM_FIELD_IF_CentreRay(name, components, units)
 #define ORB_FILM_SUM_FIELD(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names) \
     ORB_FILM_FIELD_IF_##accumulate(name, components, units)
@@ -101,25 +117,35 @@ typedef struct {
 
 #define ORB_FILM_ZERO_1(name) sums->name = 0;
 #define ORB_FILM_ZERO_3(name) sums->name.x = sums->name.y = sums->name.z = 0;
-#define ORB_FILM_ZERO_IF_Sum(name, components) ORB_FILM_ZERO_##components(name)
-#define ORB_FILM_ZERO_IF_CentreRay(name, components)
+#define ORB_FILM_ZERO_OVERFLOW_Fixed(name, components) ORB_FILM_ZERO_##components(name##_overflow)
+#define ORB_FILM_ZERO_OVERFLOW_SignedFixed(name, components)
+#define ORB_FILM_ZERO_OVERFLOW_Count(name, components)
+#define ORB_FILM_ZERO_IF_Sum(name, components, units) \
+    ORB_FILM_ZERO_##components(name) ORB_FILM_ZERO_OVERFLOW_##units(name, components)
+#define ORB_FILM_ZERO_IF_CentreRay(name, components, units)
 #define ORB_FILM_ZERO(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names) \
-    ORB_FILM_ZERO_IF_##accumulate(name, components)
+    ORB_FILM_ZERO_IF_##accumulate(name, components, units)
 LANE_FN void film_sums_clear(FilmSums* sums) { ORB_FILM_CHANNELS(ORB_FILM_ZERO) }
 
 // film_sample_<name>(sums, value): adds one sample's value of channel <name>
 // (an lfloat or an lv3) to its sums, in the channel's units, in every lane:
 // a lane whose sample is not done holds 0 there (film_add_sample selects
 // the values once, with the selection a value needs anyway).
-#define ORB_FILM_ACCUMULATE_1(sum, units, value) (sum) = film_sum_add_##units((sum), film_units_##units(value));
-#define ORB_FILM_ACCUMULATE_3(sum, units, value)       \
-    ORB_FILM_ACCUMULATE_1((sum).x, units, (value).x) \
-    ORB_FILM_ACCUMULATE_1((sum).y, units, (value).y) \
-    ORB_FILM_ACCUMULATE_1((sum).z, units, (value).z)
+#define ORB_FILM_NOTE_Fixed(overflow, sum) (overflow) |= film_high_word(sum);
+#define ORB_FILM_NOTE_SignedFixed(overflow, sum)
+#define ORB_FILM_NOTE_Count(overflow, sum)
+#define ORB_FILM_ACCUMULATE_ONE(sum, overflow, units, value)               \
+    (sum) = film_sum_add_##units((sum), film_units_##units(value)); \
+    ORB_FILM_NOTE_##units(overflow, sum)
+#define ORB_FILM_ACCUMULATE_1(name, units, value) ORB_FILM_ACCUMULATE_ONE(sums->name, sums->name##_overflow, units, value)
+#define ORB_FILM_ACCUMULATE_3(name, units, value)                                             \
+    ORB_FILM_ACCUMULATE_ONE(sums->name.x, sums->name##_overflow.x, units, (value).x) \
+    ORB_FILM_ACCUMULATE_ONE(sums->name.y, sums->name##_overflow.y, units, (value).y) \
+    ORB_FILM_ACCUMULATE_ONE(sums->name.z, sums->name##_overflow.z, units, (value).z)
 #define ORB_FILM_SAMPLE_ADDER_IF_Sum(name, components, units)                             \
     LANE_FN void film_sample_##name(FilmSums* sums, ORB_FILM_VALUES_##components value) \
     {                                                                                     \
-        ORB_FILM_ACCUMULATE_##components(sums->name, units, value)                        \
+        ORB_FILM_ACCUMULATE_##components(name, units, value)                              \
     }
 #define ORB_FILM_SAMPLE_ADDER_IF_CentreRay(name, components, units)
 #define ORB_FILM_SAMPLE_ADDER(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names) \
@@ -138,8 +164,15 @@ ORB_FILM_CHANNELS(ORB_FILM_SAMPLE_ADDER)
 // fields are read, and every channel, built or not, stayed live through the
 // sample loop (on PoCL at 16 lanes, a fifth more spill stores;
 // docs/design/one-path-tracer-over-lanes.md).
+#define ORB_FILM_SATURATED_Fixed_1(name) film_saturated(sums.name, sums.name##_overflow)
+#define ORB_FILM_SATURATED_Fixed_3(name)                                           \
+    {film_saturated(sums.name.x, sums.name##_overflow.x), film_saturated(sums.name.y, sums.name##_overflow.y), \
+     film_saturated(sums.name.z, sums.name##_overflow.z)}
+#define ORB_FILM_SATURATED_SignedFixed_1(name) sums.name
+#define ORB_FILM_SATURATED_SignedFixed_3(name) sums.name
+#define ORB_FILM_SATURATED_Count_1(name) sums.name
 #define ORB_FILM_COPY_IF_Sum(name, components, units) \
-    const ORB_FILM_SUMS(units, components) film_sums_##name = sums.name;
+    const ORB_FILM_SUMS(units, components) film_sums_##name = ORB_FILM_SATURATED_##units##_##components(name);
 #define ORB_FILM_COPY_IF_CentreRay(name, components, units)
 #define ORB_FILM_COPY(name, components, clear, accumulate, units, merge, layer, stored_as, paired, names) \
     ORB_FILM_COPY_IF_##accumulate(name, components, units)

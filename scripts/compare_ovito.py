@@ -122,6 +122,41 @@ def ovito_run(a, atoms: Path, renderer: str, out: Path) -> dict | None:
             "seconds": timing["load_seconds"] + timing["render_seconds"]}
 
 
+# ---------------------------------------------------------------- Orb's Python module (a child process)
+
+def orb_python_worker(atoms: str, width: int, height: int, spp: int, denoise: bool, out: str) -> None:
+    """The same picture through `import orb` in the interpreter that runs
+    OVITO: orb.load with orb-render's options, one render, its pixels as
+    numpy arrays (the denoised layer with --denoise), the image saved."""
+    start = time.perf_counter()
+    import orb
+
+    imported = time.perf_counter()
+    scene = orb.load(atoms, cell=True, camera_position=CAMERA, look_at=TARGET, up=UP, vfov=VFOV_DEG)
+    loaded = time.perf_counter()
+    image = scene.render(width, height, spp, seed=1, denoise=denoise)
+    pixels = image.denoised if denoise else image.beauty
+    rendered = time.perf_counter()
+    image.save(out)
+    Path(out + ".json").write_text(json.dumps({"import_seconds": imported - start, "load_seconds": loaded - imported,
+                                               "render_seconds": rendered - loaded, "shape": list(pixels.shape)}))
+
+
+def orb_python_run(a, atoms: Path, spp: int, denoise: bool, out: Path) -> dict:
+    args = [sys.executable, str(Path(__file__).resolve()), "--worker-orb-python", "--atoms", str(atoms),
+            "--worker-out", str(out), "--width", str(a.width), "--height", str(a.height), "--worker-spp", str(spp)]
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(filter(None, [str(a.orb_python),
+                                                                     os.environ.get("PYTHONPATH")])))
+    launched = time.perf_counter()
+    result = subprocess.run(args + (["--worker-denoise"] if denoise else []), capture_output=True, text=True, env=env)
+    wall = time.perf_counter() - launched
+    if result.returncode != 0:
+        sys.exit(f"compare_ovito: Orb's Python module failed:\n{result.stderr.strip()}")
+    timing = json.loads(Path(str(out) + ".json").read_text())
+    return {"wall": wall, "load": timing["load_seconds"], "render": timing["render_seconds"],
+            "seconds": timing["load_seconds"] + timing["render_seconds"]}
+
+
 # ---------------------------------------------------------------- Orb
 
 def orb_camera() -> list[str]:
@@ -210,9 +245,17 @@ def main() -> None:
     parser.add_argument("--worker-ovito", choices=("tachyon", "ospray"), help=argparse.SUPPRESS)
     parser.add_argument("--worker-out", help=argparse.SUPPRESS)
     parser.add_argument("--atoms", help=argparse.SUPPRESS)
+    parser.add_argument("--orb-python", type=Path, help="also time Orb's Python module (`import orb`) found in this "
+                        "folder (a build's python/ folder, or a site-packages), in OVITO's interpreter")
+    parser.add_argument("--worker-orb-python", action="store_true", help=argparse.SUPPRESS)
+    parser.add_argument("--worker-spp", type=int, help=argparse.SUPPRESS)
+    parser.add_argument("--worker-denoise", action="store_true", help=argparse.SUPPRESS)
     a = parser.parse_args()
     if a.worker_ovito:
         ovito_worker(a.atoms, a.worker_ovito, a.width, a.height, a.worker_out)
+        return
+    if a.worker_orb_python:
+        orb_python_worker(a.atoms, a.width, a.height, a.worker_spp, a.worker_denoise, a.worker_out)
         return
 
     a.cache.mkdir(parents=True, exist_ok=True)
@@ -255,6 +298,8 @@ def main() -> None:
 
         renderers = ["tachyon", "ospray"]
         runs = {"ovito-tachyon": [], "ovito-ospray": [], "orb-1spp": [], f"orb-denoise-{clean}spp": []}
+        if a.orb_python:
+            runs.update({"python-orb-1spp": [], f"python-orb-denoise-{clean}spp": []})
         for r in range(a.rounds):
             for name in renderers[:]:
                 out = work / f"ovito-{name}.png"
@@ -265,6 +310,10 @@ def main() -> None:
                 runs[f"ovito-{name}"].append(timing)
             runs["orb-1spp"].append(orb_run(a, atoms, 1, False, work / "orb-1.exr"))
             runs[f"orb-denoise-{clean}spp"].append(orb_run(a, atoms, clean, True, work / "orb-clean.exr"))
+            if a.orb_python:
+                runs["python-orb-1spp"].append(orb_python_run(a, atoms, 1, False, work / "python-1.exr"))
+                runs[f"python-orb-denoise-{clean}spp"].append(
+                    orb_python_run(a, atoms, clean, True, work / "python-clean.exr"))
             print(f"  round {r + 1}: " + "; ".join(f"{k} {v[-1]['seconds']:.2f} s ({v[-1]['wall']:.2f} s wall)"
                                                   for k, v in runs.items() if v), flush=True)
         print(f"\n{a.atoms_count} random atoms, {a.width}x{a.height}, median of {a.rounds} rounds "
