@@ -140,6 +140,7 @@ FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, Film
 
     FilmOutcome outcome;
     static const std::atomic<bool> never{false};
+    outcome.rendering_began = std::chrono::steady_clock::now();
     outcome.reason = render::render_progressively(renderer, limits, callbacks, run.cancel ? *run.cancel : never,
                                                   &outcome.final_state);
     const render::ProgressState& final_state = outcome.final_state;

@@ -41,6 +41,7 @@ nlohmann::ordered_json to_json(const RunStats& s) {
                              {"output", s.output}};
     if (s.setup_seconds) j["setup_seconds"] = *s.setup_seconds;
     j["kernel_build_seconds"] = s.kernel_build_seconds;
+    if (s.startup_seconds) j["startup_seconds"] = *s.startup_seconds;
     if (s.estimated_relmse) j["estimated_relmse"] = *s.estimated_relmse;
     if (s.active_pixels) j["active_pixels"] = *s.active_pixels;
     if (s.decisions) j["decisions"] = *s.decisions;

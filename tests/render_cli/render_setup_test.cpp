@@ -3,6 +3,9 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 
+#include <unistd.h>
+
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -77,6 +80,23 @@ TEST_F(RenderCli, BuildingKernelsFromSourceIsSaidOnceAndACachedLoadIsNot) {
     ASSERT_EQ(cached.exit_code, 0) << cached.err;
     EXPECT_EQ(cached.err.find("building kernels"), std::string::npos) << cached.err;
     EXPECT_EQ(build_seconds("cached"), 0.0);
+}
+
+// startup_seconds: from the process's start (as the kernel records it, to
+// 10 ms) to its first pass, so it holds the set-up and lies within the
+// process's wall time as the test sees it.
+TEST_F(RenderCli, StartupSecondsSpanTheProcessStartToTheFirstPass) {
+    const std::string scene = write_scene(small_scene());
+    const auto launched = std::chrono::steady_clock::now();
+    const auto run = render({scene, "--width", "8", "--height", "6", "--spp", "2", "-o", path("out.exr"),
+                             "--stats-json", path("stats.json")});
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - launched).count();
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto stats = nlohmann::json::parse(read_text(path("stats.json")));
+    const double startup = stats.at("startup_seconds").get<double>();
+    const double tick = 1.0 / static_cast<double>(::sysconf(_SC_CLK_TCK));
+    EXPECT_GE(startup + tick, stats.at("setup_seconds").get<double>());
+    EXPECT_LE(startup, wall + tick);
 }
 
 TEST_F(RenderCli, TimeAtRendersTheSceneAsItStandsThen) {

@@ -1,11 +1,13 @@
 #include "render_run.h"
 
+#include <chrono>
 #include <cstdio>
 #include <memory>
 
 #include "command_line_plan.h"
 #include "interrupt.h"
 #include "orb/cli/messages.h"
+#include "orb/cli/process_start.h"
 #include "orb/cli/tool_main.h"
 #include "orb/job/benchmarks.h"
 #include "orb/job/output_film.h"
@@ -50,7 +52,12 @@ int run_render(const job::RenderPlan& plan, const RenderOptions& options, Render
         return stopped_exit_code();
     }
     image.write(outcome.image.encode());
-    if (outputs.stats) outputs.stats->write(job::stats_json(job::written_stats(outcome, ready.setup_seconds)));
+    if (outputs.stats) {
+        job::RunStats stats = job::written_stats(outcome, ready.setup_seconds);
+        if (const auto started = cli::process_start())
+            stats.startup_seconds = std::chrono::duration<double>(outcome.rendering_began - *started).count();
+        outputs.stats->write(job::stats_json(stats));
+    }
 
     const std::string written = job::written_line(outcome.reason, film_summary(outcome, renderer, image), true);
     if (outcome.reason == render::StopReason::Interrupted) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -90,6 +91,7 @@ struct FilmOutcome {
     render::StopReason reason = render::StopReason::ReachedSpp;
     bool rendered = false;  // false when stopped before the first pass finished
     render::ProgressState final_state;  // the progress after the last pass
+    std::chrono::steady_clock::time_point rendering_began;  // the first pass's start (a start-up's end)
     RunStats stats;         // stats.output is the caller's to fill in
     FinalImage image;       // when rendered; the caller writes it
 };

@@ -41,6 +41,7 @@ struct RunStats {
     double bvh_seconds = 0;           // building (or, for a frame, refitting) it
     std::optional<double> setup_seconds;  // from starting to read the scene until the devices could render
     double kernel_build_seconds = 0;      // of setup: building kernels from source (0: loaded from the cache)
+    std::optional<double> startup_seconds;  // from the process's start to its first pass (a front end's still)
     std::string stop_reason;         // "spp", "time", "interrupted" or "benchmark"
     std::string output;              // "" for --benchmark
     std::string sample_ranges;       // the sample indices in the image, "0:64"; "" for --benchmark
