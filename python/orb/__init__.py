@@ -79,6 +79,10 @@ def _from_arrays(centers, radii, colors=None, materials=None, properties=None):
             listed.append((str(name), indices.astype(_np.float64), [str(label) for label in labels]))
         else:
             listed.append((str(name), array, []))
+    # One radius for every sphere may come as a numpy number (np.float32(1), or
+    # a 0-d array from a reduction), as it may as a Python one.
+    if isinstance(radii, _np.generic) or (isinstance(radii, _np.ndarray) and radii.ndim == 0):
+        radii = radii.item()
     return Scene._from_arrays(centers, radii, colors, materials, listed)
 
 

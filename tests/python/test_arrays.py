@@ -43,6 +43,13 @@ def test_non_contiguous_arrays_are_read_through_their_strides():
     assert orb.Scene.from_arrays(centers.tolist(), 0.2) == reference
 
 
+@pytest.mark.parametrize("radius", [np.float32(0.25), np.float64(0.25), np.array(0.25), np.int64(1)])
+def test_one_radius_as_a_numpy_number(radius):
+    centers = grid()
+    expected = orb.Scene.from_arrays(centers, np.full(len(centers), float(radius)))
+    assert orb.Scene.from_arrays(centers, radius) == expected
+
+
 def test_colors_are_display_values_decoded_to_linear():
     centers = grid(2)
     colors = np.tile([[0.5, 0.0, 1.0]], (len(centers), 1))
