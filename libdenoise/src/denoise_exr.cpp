@@ -181,7 +181,9 @@ std::string add_denoised_layer(std::string_view exr, const std::string& source, 
     detail::require_layers([&](const char* name) { return find(image.planes, name) != nullptr; }, source);
     Denoiser::Job job = denoiser.begin(image.width, image.height);
     interleave(image.planes, names_of(film::Channel::radiance), image.width, source, "beauty", job.color());
+    job.send(Denoiser::Job::Input::Color);
     interleave(image.planes, names_of(film::Channel::albedo), image.width, source, "albedo", job.albedo());
+    job.send(Denoiser::Job::Input::Albedo);
     interleave(image.planes, names_of(film::Channel::normal), image.width, source, "normal", job.normal());
     const std::span<const float> denoised = job.run();
     try {

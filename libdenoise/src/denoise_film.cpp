@@ -36,7 +36,9 @@ exr::PostLayerPlanes denoised_post_layer(Denoiser& denoiser, const std::string& 
         detail::require_layers([&](const char* name) { return image.find(name) != nullptr; }, source);
         Denoiser::Job job = denoiser.begin(image.width(), image.height());
         interleave(image, film::Channel::radiance, source, "beauty", job.color());
+        job.send(Denoiser::Job::Input::Color);
         interleave(image, film::Channel::albedo, source, "albedo", job.albedo());
+        job.send(Denoiser::Job::Input::Albedo);
         interleave(image, film::Channel::normal, source, "normal", job.normal());
         const std::span<const float> denoised = job.run();
         // Back to the encoder's planes, one per channel, on every core.

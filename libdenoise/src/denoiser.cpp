@@ -91,6 +91,7 @@ struct Denoiser::State {
     oidn::Filter albedo_filter = nullptr, normal_filter = nullptr;  // prefilter_aux only
     std::array<oidn::Buffer, 4> planes{};
     std::array<oidn::Buffer, 4> images{};
+    std::array<bool, 3> sent{};  // the inputs already on their way to `images` this turn
     int width = 0, height = 0;
     std::mutex mutex;
     double setup_seconds = 0, filter_seconds = 0;
@@ -207,12 +208,19 @@ struct Denoiser::State {
         check(device, "setting up " + what);
     }
 
-    // The inputs to the device, the filters, the output back, in one queue;
+    // An input to the device, in the filter's queue, once a turn.
+    void send(std::size_t input) {
+        if (host_is_device || sent[input]) return;
+        api.oidnWriteBufferAsync(images[input], 0, plane_bytes(), plane(input));
+        sent[input] = true;
+    }
+
+    // The inputs not yet sent, the filters, the output back, in one queue;
     // a CPU device filters the planes where they are.
     void run() {
         const std::size_t bytes = plane_bytes();
-        if (!host_is_device)
-            for (std::size_t i = 0; i < 3; ++i) api.oidnWriteBufferAsync(images[i], 0, bytes, plane(i));
+        for (std::size_t i = 0; i < 3; ++i) send(i);
+        sent = {};
         if (albedo_filter) api.oidnExecuteFilterAsync(albedo_filter);
         if (normal_filter) api.oidnExecuteFilterAsync(normal_filter);
         api.oidnExecuteFilterAsync(filter);
@@ -270,6 +278,7 @@ Denoiser::Job Denoiser::begin(int width, int height) {
     std::unique_lock lock(s.mutex);
     s.started.get();  // the device's failure, if it failed
     s.prepare(width, height);
+    s.sent = {};  // a turn that ended before its run (a bad input) left its marks
     s.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return Job(std::make_unique<Job::Turn>(Job::Turn{s, std::move(lock), s.setup_seconds}));
 }
@@ -314,6 +323,7 @@ int Denoiser::Job::height() const { return turn_->state.height; }
 float* Denoiser::Job::color() { return turn_->state.plane(0); }
 float* Denoiser::Job::albedo() { return turn_->state.plane(1); }
 float* Denoiser::Job::normal() { return turn_->state.plane(2); }
+void Denoiser::Job::send(Input input) { turn_->state.send(static_cast<std::size_t>(input)); }
 
 std::span<const float> Denoiser::Job::run() {
     State& s = turn_->state;

@@ -52,7 +52,8 @@ struct DenoiseImages {
 // the wait for the device, the filter, the result back), of which
 // `setup_seconds` waiting for the device's start (where it had not
 // finished) and for the filter and buffers of a new size, and
-// `filter_seconds` the filter with its copies to and from the device.
+// `filter_seconds` the filter with the copies to and from the device that
+// had not run while the inputs were being gathered (Job::send).
 struct DenoiseTimes {
     double seconds = 0;
     double setup_seconds = 0;
@@ -126,6 +127,11 @@ public:
     float* color();
     float* albedo();
     float* normal();
+    // Starts copying an input that is filled to the device now, so that a
+    // GPU's copy runs while the caller fills the next one (a CPU device
+    // reads the planes where they are). run() sends what was not sent.
+    enum class Input { Color, Albedo, Normal };
+    void send(Input input);
     // Runs the filter on the planes; the denoised colour (width * height * 3
     // floats) stays valid until the job ends.
     std::span<const float> run();
