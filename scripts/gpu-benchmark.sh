@@ -26,3 +26,5 @@ run --benchmark "$scenes/cornell.scn" --device Portable --benchmark-seconds 10
 run "$scenes/cornell.scn" --device NVIDIA --spp 1024 --seed 7 -o "$out/cornell-gpu.exr" --passes beauty --stats-json "$out/gpu.json"
 run "$scenes/cornell.scn" --device Portable --spp 1024 --seed 7 -o "$out/cornell-cpu.exr" --passes beauty --stats-json "$out/cpu.json"
 cat "$out/gpu.json" "$out/cpu.json"
+# The GPU end to end: start-up, denoising, adaptive sampling, batches.
+"$(dirname "$0")/gpu-end-to-end.sh" "$bundle" "$out/end-to-end"

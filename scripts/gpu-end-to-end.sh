@@ -3,9 +3,9 @@
 # denoising, adaptive decisions, batches), each figure of docs/performance.md's
 # table "The GPU end to end", measured in one run on the GPU node.
 # Usage on the node: scripts/gpu-end-to-end.sh BUNDLE_DIR OUT_DIR [ROUNDS]
-# BUNDLE_DIR is a folder made by scripts/gpu-bundle-oidn.sh with orb-render
-# copied beside orb-denoise (the two link the same libraries); without OIDN's
-# libraries in BUNDLE_DIR/lib the denoising rows are skipped and say so.
+# BUNDLE_DIR is a folder made by scripts/gpu-bundle-oidn.sh (orb-render,
+# orb-denoise and OIDN's CUDA device); with one of scripts/gpu-bundle.sh (no
+# OIDN) the denoising rows are left out, and the run says so.
 set -uo pipefail
 bundle=$(cd "$1" && pwd)
 out=$2
@@ -20,6 +20,8 @@ have_oidn=0
 if [[ -e $bundle/lib/libOpenImageDenoise.so.2 ]]; then
   export ORB_OIDN_LIBRARY=$bundle/lib
   have_oidn=1
+else
+  echo "no OIDN in $bundle/lib (scripts/gpu-bundle-oidn.sh makes a bundle with it): the denoising rows are left out"
 fi
 hd=(--width 1920 --height 1080)
 # One figure of a --stats-json file (a dotted key: "denoise_seconds").
