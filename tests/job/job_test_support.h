@@ -12,26 +12,16 @@
 #include <vector>
 
 #include "cli_fixture.h"
-#include "orb/cli/output_file.h"
-#include "orb/job/image_output.h"
+#include "orb/cli/output_file_image.h"
 #include "orb/job/render_film.h"
 #include "orb/job/render_plan.h"
 #include "orb/scene/scene.h"
 
 namespace orb::job::test {
 
-// orb-render's kind of output (tools/render/render_outputs.h): an
-// orb::cli::OutputFile, staged beside its target and renamed into place.
-class FileOutput final : public ImageOutput {
-public:
-    explicit FileOutput(const std::string& path) : file_(path, "-o") {}
-    void stage(std::string_view bytes) override { file_.stage(bytes); }
-    void commit(std::string_view bytes) override { file_.commit(bytes); }
-    std::string display_name() const override { return file_.display_name(); }
-    std::string path() const override { return file_.path(); }
-
-private:
-    cli::OutputFile file_;
+// orb-render's kind of output, opened as -o opens it.
+struct FileOutput final : cli::OutputFileImage {
+    explicit FileOutput(const std::string& path) : cli::OutputFileImage(cli::OutputFile(path, "-o")) {}
 };
 
 // The options of `orb-render scene.json --width W --height H --spp SPP --seed SEED`.

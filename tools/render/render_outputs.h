@@ -7,7 +7,7 @@
 #include <string>
 
 #include "orb/cli/output_file.h"
-#include "orb/job/image_output.h"
+#include "orb/cli/output_file_image.h"
 #include "render_options.h"
 
 namespace orb::render_cli {
@@ -27,17 +27,6 @@ RenderOutputs prepare_render_outputs(const RenderOptions& options);
 // device or FIFO.
 cli::OutputFile open_image_output(const std::string& path, const RenderOptions& options);
 
-// An output of orb-render as the render job writes it.
-class OutputFileImage final : public job::ImageOutput {
-public:
-    explicit OutputFileImage(cli::OutputFile file) : file_(std::move(file)) {}
-    void stage(std::string_view bytes) override { file_.stage(bytes); }
-    void commit(std::string_view bytes) override { file_.commit(bytes); }
-    std::string display_name() const override { return file_.display_name(); }
-    std::string path() const override { return file_.path(); }
-
-private:
-    cli::OutputFile file_;
-};
+using cli::OutputFileImage;  // an output of orb-render as the render job writes it
 
 }  // namespace orb::render_cli
