@@ -38,15 +38,15 @@ if [[ -n ${ORB_PYTHON_BUNDLE:-} ]]; then
   python=$ORB_PYTHON_BUNDLE
   version=$("$python" -c 'import sys; print("%d.%d" % sys.version_info[:2])')
   python_build=${ORB_PYTHON_BUILD_DIR:-$root/build-python$version}
-  # pybind11 from that Python's pip where it has one (Debian's 2.10 predates
-  # Python 3.12), else the system's.
+  # pybind11 from that Python's pip where it has one (Debian 12's 2.10 predates
+  # pybind11's support of Python 3.12, which came with 2.11), else the system's.
   pybind11=()
   if pybind11_dir=$("$python" -m pybind11 --cmakedir 2>/dev/null); then pybind11=(-Dpybind11_DIR="$pybind11_dir"); fi
   launcher=()
   if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
   # The test build's flags (-Werror too), so that the compiler cache serves the libraries.
-  cmake -S "$root" -B "$python_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DORB_PYTHON=ON -DORB_BUILD_TESTS=OFF -DORB_WERROR=ON \
-    -DPython_EXECUTABLE="$python" "${pybind11[@]}" "${launcher[@]}" >/dev/null
+  cmake -S "$root" -B "$python_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DORB_PYTHON=ON -DORB_BUILD_TESTS=OFF \
+    -DORB_WERROR=ON -DPython_EXECUTABLE="$python" "${pybind11[@]}" "${launcher[@]}" >/dev/null
   cmake --build "$python_build" --target orb_python -j "${ORB_JOBS:-2}"
   module=$(ls "$python_build"/python/orb/_orb*.so)
   if ldd "$module" | grep -qiE 'OpenImageIO|OpenColorIO'; then
@@ -59,12 +59,12 @@ if [[ -n ${ORB_PYTHON_BUNDLE:-} ]]; then
   copy_libraries_of "$module"
   wheel=${ORB_NUMPY_WHEEL:-}
   if [[ -z $wheel ]]; then
-    wheel=$(ls "$python_build"/wheels/numpy-*.whl 2>/dev/null | head -1 || true)
+    wheel=$(find "$python_build/wheels" -name 'numpy-*.whl' 2>/dev/null | head -1 || true)
   fi
   if [[ -z $wheel ]]; then
     "$python" -m pip download -q numpy --only-binary=:all: --python-version "$version" \
       --platform manylinux2014_x86_64 -d "$python_build/wheels"
-    wheel=$(ls "$python_build"/wheels/numpy-*.whl | head -1)
+    wheel=$(find "$python_build/wheels" -name 'numpy-*.whl' | head -1)
   fi
   rm -f "$out"/numpy-*.whl
   cp "$wheel" "$out/"

@@ -16,7 +16,8 @@ fi
 # default python3) has no numpy, the bundle's numpy wheel unpacked into
 # /tmp/orb-numpy (a wheel is a zip file; nothing is installed).
 if [[ -d $1/python/orb ]]; then
-  export PYTHONPATH=$(cd "$1" && pwd)/python${PYTHONPATH:+:$PYTHONPATH}
+  orb_bundle_python=$(cd "$1" && pwd)/python
+  export PYTHONPATH=$orb_bundle_python${PYTHONPATH:+:$PYTHONPATH}
   if ! "${ORB_NODE_PYTHON:-python3}" -c 'import numpy' 2>/dev/null; then
     for wheel in "$1"/numpy-*.whl; do
       [[ -e $wheel ]] || continue
