@@ -1,6 +1,8 @@
 """Orb from Python: scenes of spheres from files or numpy arrays (docs/python.md).
 
 The module binds Orb's libraries (pybind11, orb._orb); it never runs the tools.
+The display through OpenImageIO and OpenColorIO (Image.to_srgb, to_srgb8, png)
+is orb._image, imported on its first use, so that the rest needs neither.
 Keyword options are orb-import's long options with ``_`` for ``-``
 (``orb.load("cloud.ply", color_by="temperature", radius=0.01)``) and are checked
 by the same code, with the same messages.
@@ -199,6 +201,22 @@ def _ocio_config():
     return os.path.join(os.path.dirname(__file__), "ocio", "config.ocio")
 
 
+def _image_module(function):
+    """orb._image, the display through OpenImageIO and OpenColorIO, imported on
+    the first call that needs it so that ``import orb``, rendering and EXR
+    files need neither; where it cannot load, ``function`` raises ImportError
+    saying what is missing."""
+    try:
+        from . import _image
+    except ImportError as missing:
+        raise ImportError(
+            f"orb.Image.{function} needs orb._image, Orb's display module (OpenImageIO and OpenColorIO), "
+            f"which cannot be imported here: {missing}. Rendering, the layers as arrays and Image.save "
+            "(OpenEXR) work without it; orb-tonemap shows a saved EXR where those libraries are installed."
+        ) from missing
+    return _image
+
+
 def _layer(self, name):
     try:
         return self[name]
@@ -210,12 +228,19 @@ def _to_srgb(self, layer="beauty"):
     """The layer as orb-tonemap shows it by default: opaque, through the default
     display view of Orb's OpenColorIO config ($OCIO wins, as in the tools):
     display-encoded float32 (H, W, 3), not clipped to [0, 1]."""
-    return self._display(layer, _ocio_config())
+    return _display(self, layer, "to_srgb", eight_bit=False)
 
 
 def _to_srgb8(self, layer="beauty"):
     """The same as uint8 (H, W, 3): the values orb-tonemap writes to an 8-bit PNG."""
-    return self._display8(layer, _ocio_config())
+    return _display(self, layer, "to_srgb8", eight_bit=True)
+
+
+def _display(image, layer, function, eight_bit):
+    """The layer through orb._image's display, for the Image method ``function``."""
+    module = _image_module(function)
+    shown = module.display8 if eight_bit else module.display
+    return shown(image[layer], image.channels(layer), layer, _ocio_config())
 
 
 def _png_bytes(rgb8):
@@ -236,7 +261,7 @@ def _png_bytes(rgb8):
 
 def _repr_png(self):
     """The beauty as orb-tonemap's PNG shows it (Jupyter displays an image by this)."""
-    return _png_bytes(self.to_srgb8())
+    return _png_bytes(_display(self, "beauty", "png", eight_bit=True))
 
 
 def _save_image(self, path):

@@ -7,10 +7,6 @@
 #include <memory>
 
 #include "errors.h"
-#include "orb/image/color_config.h"
-#include "orb/image/passes.h"
-#include "orb/image/quantize.h"
-#include "orb/image/tonemap.h"
 #include "orb/job/render_job.h"
 #include "orb/scene/scene.h"
 #include "still_render.h"
@@ -34,44 +30,6 @@ py::array_t<float> layer_array(const py::object& owner, const job::Layer& layer)
     const py::ssize_t f = sizeof(float);
     return py::array_t<float>({static_cast<py::ssize_t>(layer.height), static_cast<py::ssize_t>(layer.width), channels},
                               {layer.width * channels * f, channels * f, f}, layer.pixels.data(), owner);
-}
-
-// A layer as orb-tonemap shows it by default: opaque (what the camera
-// sees, the beauty's alpha left out) through the default display view of
-// Orb's OpenColorIO config at `config_path` ($OCIO wins, as in the tools).
-image::Image display_image(const RenderedLayers& rendered, const std::string& name, const std::string& config_path) {
-    const job::Layer& layer = layer_named(rendered, name);
-    image::Image whole(layer.width, layer.height, layer.channels);
-    whole.pixels = layer.pixels;
-    image::Pass pass = image::extract_pass(whole, name, "image");
-    if (pass.has_alpha) {
-        pass.image = image::select_channels(pass.image, {0, 1, 2}, {"R", "G", "B"});
-        pass.has_alpha = false;
-    }
-    const image::ColorConfig config = image::ColorConfig::load("", config_path);
-    const image::DisplayView view = image::resolve_display_view(config, {});
-    return image::tonemap_pass(pass, config, view);
-}
-
-template <typename T>
-py::array_t<T> image_array(const image::Image& shown, const std::vector<T>& values) {
-    py::array_t<T> out({static_cast<py::ssize_t>(shown.height), static_cast<py::ssize_t>(shown.width),
-                        static_cast<py::ssize_t>(shown.channels())});
-    std::copy(values.begin(), values.end(), out.mutable_data());
-    return out;
-}
-
-py::array_t<float> display_floats(const RenderedLayers& rendered, const std::string& name,
-                                  const std::string& config_path) {
-    const image::Image shown = display_image(rendered, name, config_path);
-    return image_array(shown, shown.pixels);
-}
-
-// The 8-bit values orb-tonemap writes to a PNG (its dither, orb/image/quantize.h).
-py::array_t<std::uint8_t> display_bytes(const RenderedLayers& rendered, const std::string& name,
-                                        const std::string& config_path) {
-    const image::Image shown = display_image(rendered, name, config_path);
-    return image_array(shown, image::quantize_8bit_dithered(shown));
 }
 
 py::dict progress_dict(const job::Progress& p) {
@@ -171,9 +129,7 @@ void bind_rendering(py::module_& module) {
              [](const RenderedLayers& r, const std::string& path) {
                  py::gil_scoped_release released;
                  r.image.save_exr(path);
-             })
-        .def("_display", &display_floats)
-        .def("_display8", &display_bytes);
+             });
     module.def("_render", &render);
 }
 

@@ -10,12 +10,13 @@
 #include "orb/cli/messages.h"
 #include "orb/cli/scene_reading.h"
 #include "orb/cli/sphere_style_options.h"
-#include "orb/image/texture_decoder.h"
+#include "orb/cli/texture_decoder_loader.h"
 #include "orb/import/gltf.h"
 #include "orb/import/importers.h"
 #include "orb/import/molecular.h"
 #include "orb/import/numbered_series.h"
 #include "orb/scene/error.h"
+#include "package_folder.h"
 
 namespace orb::python {
 namespace {
@@ -77,8 +78,9 @@ LoadedScene load_scene(const std::string& path, const KeywordOptions& options, c
     ImportOptions import_options = cli::import_options_for(args.reading);
     import_options.format = args.from;
     import_options.of<GltfImportOptions>().strict = args.strict;
-    // Linked in, not loaded beside an executable as the tools load it.
-    import_options.of<GltfImportOptions>().image_decoder = image::texture_decoder();
+    // The tools' run-time module, from the package's own lib folder (not
+    // linked: the module must import where OpenImageIO is not installed).
+    import_options.of<GltfImportOptions>().image_decoder = cli::texture_decoder_in(runtime_module_folder());
     // Python resolves paths from the current directory.
     std::optional<Environment> environment = cli::chosen_environment(args.reading.environment, ".");
 

@@ -12,9 +12,11 @@ using DecodeEntry = bool (*)(std::string_view, const std::string&, const std::st
 
 }  // namespace
 
-ImageDecoder texture_decoder() {
-    return [](std::string_view bytes, const std::string& mime_type, const std::string& name) {
-        const RuntimeModule& m = runtime_module("orb_texture_decoder.so", "orb_decode_texture_v1");
+ImageDecoder texture_decoder() { return texture_decoder_in(tools_module_folder()); }
+
+ImageDecoder texture_decoder_in(const std::string& module_folder) {
+    return [module_folder](std::string_view bytes, const std::string& mime_type, const std::string& name) {
+        const RuntimeModule& m = runtime_module(module_folder, "orb_texture_decoder.so", "orb_decode_texture_v1");
         if (!m.entry)
             throw InputError(name + ": textures cannot be decoded here: the texture decoder (OpenImageIO) did not load (" +
                              m.why_not + ")");

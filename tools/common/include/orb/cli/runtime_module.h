@@ -15,8 +15,16 @@ struct RuntimeModule {
     std::string why_not;    // set when entry is null
 };
 
-// The module `file_name` under the tools' lib/orb folder and its entry point
-// `entry_point`, loaded on the first call for that file and remembered.
+// The module `file_name` in `folder` and its entry point `entry_point`,
+// loaded on the first call for that file and remembered. The tools' folder is
+// tools_module_folder(); the Python module keeps its own beside itself.
+const RuntimeModule& runtime_module(const std::string& folder, const std::string& file_name,
+                                    const std::string& entry_point);
+
+// The tools' folder of modules: <dir of executable>/../lib/orb.
+std::string tools_module_folder();
+
+// runtime_module in tools_module_folder().
 const RuntimeModule& runtime_module(const std::string& file_name, const std::string& entry_point);
 
 }  // namespace orb::cli

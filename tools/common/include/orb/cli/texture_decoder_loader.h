@@ -5,6 +5,8 @@
 // it still renders every untextured scene (docs/design/texture-decoding.md).
 #pragma once
 
+#include <string>
+
 #include "orb/import/image_decoder.h"
 
 namespace orb::cli {
@@ -13,5 +15,9 @@ namespace orb::cli {
 // loaded, every call throws InputError naming the image, the module's path
 // and why, which the importer reports as a texture it could not read.
 ImageDecoder texture_decoder();
+
+// The same with the module looked for in `module_folder` instead of beside
+// the tools (the Python module carries its own, in orb/lib).
+ImageDecoder texture_decoder_in(const std::string& module_folder);
 
 }  // namespace orb::cli
