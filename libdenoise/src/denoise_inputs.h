@@ -46,7 +46,7 @@ void require_finite(float value, std::size_t i, int width, const std::string& ch
 // GPU's filter takes for the whole image). A value that is not finite
 // throws require_finite's error for the first such pixel, as one core would.
 template <class Value>
-void interleave_into(float* out, std::size_t pixels, int width, const Names& names, const char* layer,
+void interleave_into(float* __restrict out, std::size_t pixels, int width, const Names& names, const char* layer,
                      const std::string& source, const Value& value) {
     constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
     std::atomic<std::size_t> first_bad{kNone};

@@ -307,6 +307,7 @@ const std::string& Denoiser::device_name() const {
     state_->started.get();
     return state_->device_name;
 }
+void Denoiser::wait_until_ready() const { state_->started.wait(); }
 const DenoiseSettings& Denoiser::settings() const { return state_->settings; }
 double Denoiser::start_seconds() const {
     state_->started.get();

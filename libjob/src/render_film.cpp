@@ -109,6 +109,9 @@ std::string written_line(render::StopReason reason, const std::string& summary, 
 }
 
 FilmOutcome render_film(render::Renderer& renderer, const RenderPlan& plan, FilmRun run) {
+    // The denoiser's device, starting beside the kernels' build, warms up
+    // before the first pass rather than during it (denoiser.h).
+    if (plan.denoiser) plan.denoiser->wait_until_ready();
     const std::uint64_t start_spp = renderer.samples_per_pixel();
     const std::uint64_t start_samples = renderer.pixel_samples();
     ImageWriter writer(plan, renderer);
