@@ -24,7 +24,7 @@ else
   echo "no OIDN in $bundle/lib (scripts/gpu-bundle-oidn.sh makes a bundle with it): the denoising rows are left out"
 fi
 hd=(--width 1920 --height 1080)
-# One figure of a --stats-json file (a dotted key: "denoise_seconds").
+# One top-level figure of a --stats-json file ("startup_seconds"), "-" when absent.
 stat() { python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get(sys.argv[2], "-"))' "$1" "$2"; }
 wall() { local s e; s=$(date +%s.%N); "$@" >/dev/null 2>"$out/last.err"; local rc=$?; e=$(date +%s.%N)
          awk "BEGIN{printf \"%.3f\", $e - $s}"; ((rc == 0)) || { echo " (exit $rc: $(tail -1 "$out/last.err"))"; }; }

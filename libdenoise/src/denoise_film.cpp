@@ -19,16 +19,6 @@ void interleave(const exr::StoredImage& image, film::Channel layer_channel, cons
     const std::array<const exr::StoredImage::Channel*, 3> channels{image.find(names[0]), image.find(names[1]),
                                                                    image.find(names[2])};
     const std::size_t pixels = static_cast<std::size_t>(image.width()) * static_cast<std::size_t>(image.height());
-    if (!channels[0]->half && !channels[1]->half && !channels[2]->half) {
-        // Stored as FLOAT (the default): the planes' values as they are,
-        // read straight, which the compiler turns into a copy at the
-        // memory's pace (--half rounds each one on its way).
-        const std::array<const float*, 3> planes{channels[0]->values.data(), channels[1]->values.data(),
-                                                 channels[2]->values.data()};
-        detail::interleave_into(out, pixels, image.width(), names, layer, source,
-                                [planes](int c, std::size_t i) { return planes[static_cast<std::size_t>(c)][i]; });
-        return;
-    }
     detail::interleave_into(out, pixels, image.width(), names, layer, source, [&](int c, std::size_t i) {
         return exr::StoredImage::value(*channels[static_cast<std::size_t>(c)], i);
     });

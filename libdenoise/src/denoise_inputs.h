@@ -8,8 +8,6 @@
 #include <array>
 #include <cmath>
 #include <atomic>
-#include <bit>
-#include <cstdint>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -21,9 +19,6 @@
 namespace orb::denoise::detail {
 
 using Names = std::array<const char*, 3>;
-
-// A float's exponent bits: all set for an infinity or a NaN.
-inline constexpr std::uint32_t kExponent = 0x7f800000u;
 
 // The three shown channels of a film channel's layer, and of the denoised
 // layer, from the table.
@@ -46,31 +41,22 @@ void require_finite(float value, std::size_t i, int width, const std::string& ch
 // GPU's filter takes for the whole image). A value that is not finite
 // throws require_finite's error for the first such pixel, as one core would.
 template <class Value>
-void interleave_into(float* __restrict out, std::size_t pixels, int width, const Names& names, const char* layer,
+void interleave_into(float* out, std::size_t pixels, int width, const Names& names, const char* layer,
                      const std::string& source, const Value& value) {
     constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
     std::atomic<std::size_t> first_bad{kNone};
     film::for_each_block(pixels, [&](std::size_t, std::size_t first, std::size_t end) {
-        // The copy with no branch per value (an infinity or a NaN has every
-        // exponent bit set), so that it runs at the memory's pace; a block
-        // holding a bad value is looked at again for the first one.
-        std::uint32_t bad_bits = 0;
         for (std::size_t i = first; i < end; ++i)
             for (int c = 0; c < 3; ++c) {
                 const float v = value(c, i);
                 out[3 * i + static_cast<std::size_t>(c)] = v;
-                bad_bits |= static_cast<std::uint32_t>((std::bit_cast<std::uint32_t>(v) & kExponent) == kExponent);
-            }
-        if (!bad_bits) return;
-        for (int c = 0; c < 3; ++c)
-            for (std::size_t i = first; i < end; ++i) {
-                if (std::isfinite(out[3 * i + static_cast<std::size_t>(c)])) continue;
-                std::size_t seen = first_bad.load();
-                // Channel by channel, as the layers are checked elsewhere.
-                const std::size_t at = static_cast<std::size_t>(c) * pixels + i;
-                while (at < seen && !first_bad.compare_exchange_weak(seen, at)) {
+                if (!std::isfinite(v)) {
+                    std::size_t seen = first_bad.load();
+                    // Channel by channel, as the layers are checked elsewhere.
+                    const std::size_t at = static_cast<std::size_t>(c) * pixels + i;
+                    while (at < seen && !first_bad.compare_exchange_weak(seen, at)) {
+                    }
                 }
-                break;
             }
     });
     const std::size_t bad = first_bad.load();

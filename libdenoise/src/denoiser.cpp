@@ -220,7 +220,6 @@ struct Denoiser::State {
     void run() {
         const std::size_t bytes = plane_bytes();
         for (std::size_t i = 0; i < 3; ++i) send(i);
-        sent = {};
         if (albedo_filter) api.oidnExecuteFilterAsync(albedo_filter);
         if (normal_filter) api.oidnExecuteFilterAsync(normal_filter);
         api.oidnExecuteFilterAsync(filter);
@@ -278,7 +277,7 @@ Denoiser::Job Denoiser::begin(int width, int height) {
     std::unique_lock lock(s.mutex);
     s.started.get();  // the device's failure, if it failed
     s.prepare(width, height);
-    s.sent = {};  // a turn that ended before its run (a bad input) left its marks
+    s.sent = {};  // a new turn: nothing of it sent yet
     s.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return Job(std::make_unique<Job::Turn>(Job::Turn{s, std::move(lock), s.setup_seconds}));
 }

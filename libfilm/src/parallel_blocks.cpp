@@ -112,10 +112,6 @@ void run_on_new_threads(std::size_t blocks, const std::function<void(std::size_t
 }  // namespace
 
 void run_blocks(std::size_t blocks, const std::function<void(std::size_t)>& body) {
-    if (core_count() == 1) {
-        for (std::size_t b = 0; b < blocks; ++b) body(b);
-        return;
-    }
     if (!workers().try_run(blocks, body)) run_on_new_threads(blocks, body);
 }
 
